@@ -1,0 +1,148 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+
+#include <hemicontact/normal_law.h>
+
+#include <array>
+#include <vector>
+
+namespace hemicontact
+{
+  using namespace dealii;
+
+  /** Normal branch of a contact node (design.md section 3). */
+  enum class NormalBranch : unsigned char
+  {
+    separating = 0, ///< s + c w_nu < 0: s = 0, w_nu free
+    stick      = 1, ///< 0 <= s + c w_nu <= a: w_nu = 0
+    damped     = 2  ///< s + c w_nu > a: s = a plus the remainder p(w_nu)
+  };
+
+  /** Tangential branch of a contact node. */
+  enum class TangentialBranch : unsigned char
+  {
+    stick = 0, ///< |lambda + c w_tau| <= F_b: w_tau = 0
+    slip  = 1  ///< lambda = F_b (lambda + c w_tau)/|lambda + c w_tau|
+  };
+
+  /**
+   * One node x_i of Gamma_3 with everything the node-wise contact
+   * conditions need: its dofs (one per component), the nodal normal and
+   * lumped boundary mass m_i = int phi_i computed from the mesh, the
+   * friction bound, the projection constant c_i, and its current branches.
+   */
+  template <int dim>
+  struct ContactNode
+  {
+    std::array<types::global_dof_index, dim> dofs;
+    Point<dim>                               position;
+    Tensor<1, dim>                           normal;
+    double                                   mass           = 0;
+    double                                   friction_bound = 0;
+    double                                   c              = 1;
+    bool                                     locally_owned  = false;
+    NormalBranch     normal_branch     = NormalBranch::separating;
+    TangentialBranch tangential_branch = TangentialBranch::stick;
+  };
+
+  /**
+   * The node-wise multipliers at an iterate: from the nodal contact force
+   * G = m_i (s nu + lambda + p(w_nu) nu) = -(K w - b)_i, the normal
+   * multiplier s (convex part), the tangential lambda, and the velocity in
+   * normal/tangential components.
+   */
+  template <int dim>
+  struct NodeMultipliers
+  {
+    double         s;
+    Tensor<1, dim> lambda;
+    double         w_normal;
+    Tensor<1, dim> w_tangential;
+  };
+
+  /** The linearised nodal contact force: force + matrix (w - w_k). */
+  template <int dim>
+  struct NodeLinearization
+  {
+    Tensor<2, dim> matrix;
+    Tensor<1, dim> force;
+  };
+
+  /** The pure, node-wise pieces of the active-set method. */
+  namespace NodeContact
+  {
+    /** Split velocity and contact force G into normal/tangential parts. */
+    template <int dim>
+    NodeMultipliers<dim>
+    multipliers(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
+                const Tensor<1, dim> &force, const NormalLaw &law);
+
+    /** Branch from s + c w_nu against [0, a]. */
+    template <int dim>
+    NormalBranch
+    normal_branch(const ContactNode<dim> &node, const NodeMultipliers<dim> &m,
+                  const NormalLaw &law);
+
+    /** Branch from |lambda + c w_tau| against F_b. */
+    template <int dim>
+    TangentialBranch
+    tangential_branch(const ContactNode<dim> &node,
+                      const NodeMultipliers<dim> &m);
+
+    /** Complementarity function s - P_[0,a](s + c w_nu) (a traction). */
+    template <int dim>
+    double
+    normal_complementarity(const ContactNode<dim> &node,
+                           const NodeMultipliers<dim> &m,
+                           const NormalLaw &law);
+
+    /** lambda - P_{|.|<=F_b}(lambda + c w_tau) (a traction). */
+    template <int dim>
+    Tensor<1, dim>
+    tangential_complementarity(const ContactNode<dim> &node,
+                               const NodeMultipliers<dim> &m);
+
+    /**
+     * Linearised nodal force m_i (traction) of the free branches (damped,
+     * slip) about the current iterate; zero for constrained branches.
+     */
+    template <int dim>
+    NodeLinearization<dim>
+    linearize(const ContactNode<dim> &node, const NodeMultipliers<dim> &m,
+              const NormalLaw &law);
+
+    /** The nodal part of J_n: m_i [ j(w_nu) + F_b |w_tau| ]. */
+    template <int dim>
+    double
+    energy(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
+           const NormalLaw &law);
+
+    /**
+     * Unit vectors of the directions on which the node's constrained
+     * branches impose w . e = 0 (normal stick: nu; tangential stick: the
+     * tangent plane).
+     */
+    template <int dim>
+    std::vector<Tensor<1, dim>>
+    constrained_directions(const ContactNode<dim> &node);
+
+    /** An orthonormal basis of the plane orthogonal to @p normal. */
+    template <int dim>
+    std::array<Tensor<1, dim>, dim - 1>
+    tangent_basis(const Tensor<1, dim> &normal);
+
+    /**
+     * Solve the homogeneous constraints e_r . w = 0 for some components:
+     * returns for each eliminated component p the coefficients a_pj with
+     * w_p = sum_j a_pj w_j over the remaining components (Gauss-Jordan with
+     * pivoting). Entries: (p, [(j, a_pj)...]).
+     */
+    template <int dim>
+    std::vector<std::pair<unsigned int,
+                          std::vector<std::pair<unsigned int, double>>>>
+    eliminate(const std::vector<Tensor<1, dim>> &directions);
+  } // namespace NodeContact
+} // namespace hemicontact

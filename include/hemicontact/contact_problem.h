@@ -1,0 +1,263 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi_remote_point_evaluation.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <hemicontact/contact_node.h>
+#include <hemicontact/discretization.h>
+#include <hemicontact/energy_balance.h>
+#include <hemicontact/kelvin_voigt.h>
+#include <hemicontact/linear_solver.h>
+#include <hemicontact/normal_law.h>
+#include <hemicontact/parameters.h>
+#include <hemicontact/problem_data.h>
+#include <hemicontact/step_statistics.h>
+
+#include <fstream>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hemicontact
+{
+  using namespace dealii;
+
+  /**
+   * The dynamic contact problem of Han & Han (2019), Problem 4.4: a
+   * Kelvin-Voigt body, a normal damped response law and Tresca friction on
+   * Gamma_3, backward Euler in the velocity and the left-point rule for the
+   * displacement, P1/Q1 elements, nodal quadrature on Gamma_3.
+   *
+   * Each time step minimises the step energy J_n by a semismooth Newton /
+   * primal-dual active-set method (design.md section 3).
+   *
+   * The member functions are spread over source/problem/: setup.cc (mesh,
+   * dofs, constraints, contact nodes), assembly.cc (matrices and loads),
+   * newton.cc (one step), diagnostics.cc (energies, convexity), output.cc
+   * and run.cc (the time loop).
+   */
+  template <int dim>
+  class ContactProblem
+  {
+  public:
+    /** A problem with data from the expressions of the parameter file. */
+    ContactProblem(const Parameters &parameters, std::unique_ptr<NormalLaw> law,
+                   MPI_Comm comm);
+
+    /** A problem with given data (e.g. derived from a manufactured solution). */
+    ContactProblem(const Parameters &parameters, std::unique_ptr<NormalLaw> law,
+                   ProblemData<dim> data, MPI_Comm comm);
+
+    /** Run the whole simulation: setup, time loop, output, summary. */
+    void
+    run();
+
+    /** @name The pieces of run(), public for tests and other drivers. */
+    /** @{ */
+    /** Mesh, dofs, constraints, contact nodes, matrices, initial state. */
+    void
+    setup();
+
+    /** Advance one time step; throws SolverFailure if Newton fails. */
+    StepStatistics
+    advance();
+
+    /** Whether the final time has been reached. */
+    bool
+    finished() const
+    {
+      return step_number >= n_steps;
+    }
+    /** @} */
+
+    /** @name Read access to the state (after setup()). */
+    /** @{ */
+    const DoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+    const Mapping<dim> &
+    get_mapping() const
+    {
+      return *discretization.mapping;
+    }
+    /** w_n (owned entries). */
+    const TrilinosWrappers::MPI::Vector &
+    get_velocity() const
+    {
+      return velocity;
+    }
+    /** u_n, the displacement that entered step n (approximates u(t_n)). */
+    const TrilinosWrappers::MPI::Vector &
+    get_displacement() const
+    {
+      return displacement;
+    }
+    const std::vector<ContactNode<dim>> &
+    get_contact_nodes() const
+    {
+      return contact_nodes;
+    }
+    const EnergyBalance &
+    get_energy() const
+    {
+      return energy;
+    }
+    double
+    get_time() const
+    {
+      return step_number * time_step;
+    }
+    double
+    get_time_step() const
+    {
+      return time_step;
+    }
+    unsigned int
+    get_step_number() const
+    {
+      return step_number;
+    }
+    /** Nodal traction -(K w - b)_i / m_i at owned contact node dofs. */
+    const TrilinosWrappers::MPI::Vector &
+    get_contact_traction() const
+    {
+      return contact_traction;
+    }
+    /** Estimated smallest eigenvalue of K0 against sum m_i nu nu (0 if not computed). */
+    double
+    get_convexity_bound() const
+    {
+      return convexity_bound;
+    }
+    /** @} */
+
+  private:
+    /** @name setup.cc */
+    void
+    make_mesh();
+    void
+    setup_dofs();
+    void
+    setup_base_constraints();
+    void
+    setup_contact_nodes();
+    void
+    initialize_state();
+
+    /** @name assembly.cc */
+    void
+    assemble_constant_matrices();
+    void
+    assemble_load(const double time);
+    void
+    assemble_step_rhs();
+    void
+    assemble_newton_system(const TrilinosWrappers::MPI::Vector &iterate,
+                           const std::vector<NodeMultipliers<dim>> &mult);
+
+    /** @name newton.cc */
+    StepStatistics
+    solve_step();
+    void
+    compute_residual(const TrilinosWrappers::MPI::Vector &w,
+                     TrilinosWrappers::MPI::Vector &      residual) const;
+    std::vector<NodeMultipliers<dim>>
+    node_multipliers(const TrilinosWrappers::MPI::Vector &w_ghosted,
+                     const TrilinosWrappers::MPI::Vector &residual_ghosted) const;
+    double
+    nonsmooth_residual(const TrilinosWrappers::MPI::Vector &residual,
+                       const std::vector<NodeMultipliers<dim>> &mult) const;
+    void
+    build_newton_constraints();
+    double
+    line_search(TrilinosWrappers::MPI::Vector &      w,
+                const TrilinosWrappers::MPI::Vector &trial,
+                const TrilinosWrappers::MPI::Vector &residual,
+                unsigned int &                       n_reductions);
+    double
+    nodal_energy(const TrilinosWrappers::MPI::Vector &w) const;
+    void
+    count_branches(StepStatistics &stats) const;
+
+    /** @name diagnostics.cc */
+    void
+    update_energy_balance(const bool initial);
+    void
+    check_convexity();
+    TrilinosWrappers::MPI::Vector
+    without_constrained(const TrilinosWrappers::MPI::Vector &v) const;
+
+    /** @name output.cc */
+    void
+    write_vtu();
+    void
+    open_tables();
+    void
+    setup_probes();
+    void
+    write_step_row(const StepStatistics &stats);
+    void
+    write_probes();
+    void
+    print_step(const StepStatistics &stats) const;
+
+    MPI_Comm           mpi_communicator;
+    Parameters         parameters;
+    ConditionalOStream pcout;
+    TimerOutput        timer;
+
+    KelvinVoigtMaterial<dim>   material;
+    std::unique_ptr<NormalLaw> law;
+    ProblemData<dim>           data;
+
+    Discretization<dim> discretization;
+    DoFHandler<dim>     dof_handler;
+    IndexSet            locally_owned_dofs;
+    IndexSet            locally_relevant_dofs;
+
+    /** Hanging nodes and u = 0 on Gamma_1. */
+    AffineConstraints<double> base_constraints;
+    /** Base constraints plus those of the constrained contact branches. */
+    AffineConstraints<double> newton_constraints;
+
+    /** Constant on a fixed mesh, condensed with the base constraints. */
+    TrilinosWrappers::SparseMatrix mass_matrix;    ///< M
+    TrilinosWrappers::SparseMatrix step_matrix;    ///< K0 = rho/k M + A
+    TrilinosWrappers::SparseMatrix elastic_matrix; ///< B
+    /** K0 with the contact linearisation and contact constraints. */
+    TrilinosWrappers::SparseMatrix newton_matrix;
+
+    TrilinosWrappers::MPI::Vector velocity;     ///< w_n
+    TrilinosWrappers::MPI::Vector old_velocity; ///< w_{n-1}
+    TrilinosWrappers::MPI::Vector displacement; ///< u_n
+    TrilinosWrappers::MPI::Vector load;         ///< F_n = (f0, f2, f3) tested
+    TrilinosWrappers::MPI::Vector step_rhs;     ///< b = rho/k M w_{n-1} - B u_n + F_n
+    TrilinosWrappers::MPI::Vector newton_rhs;
+    TrilinosWrappers::MPI::Vector contact_traction;
+
+    std::vector<ContactNode<dim>> contact_nodes; ///< locally relevant nodes
+
+    LinearSolver  linear_solver;
+    EnergyBalance energy;
+    double        convexity_bound = 0;
+
+    double       time_step   = 0;
+    unsigned int n_steps     = 0;
+    unsigned int step_number = 0;
+
+    std::vector<std::pair<double, std::string>> pvd_records;
+    std::vector<Point<dim>>                     probe_points;
+    Utilities::MPI::RemotePointEvaluation<dim>  probe_cache;
+    std::ofstream                               steps_file;
+    std::ofstream                               probes_file;
+  };
+} // namespace hemicontact

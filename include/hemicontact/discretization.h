@@ -1,0 +1,70 @@
+#pragma once
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/fe.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/grid/tria.h>
+
+#include <hemicontact/parameters.h>
+
+#include <memory>
+
+namespace hemicontact
+{
+  using namespace dealii;
+
+  /**
+   * The spatial discretisation: the mesh, the P1/Q1 vector element, its
+   * mapping and quadratures. 'hypercube' gives FE_Q(1)^d on a p4est
+   * parallel::distributed::Triangulation; 'simplex' gives FE_SimplexP(1)^d
+   * on a parallel::shared::Triangulation. The rest of the program sees
+   * only the base classes, so it is not tied to either.
+   */
+  template <int dim>
+  class Discretization
+  {
+  public:
+    Discretization(const GeometryParameters &geometry, MPI_Comm comm);
+
+    /** Build the coarse mesh and refine it globally. */
+    void
+    make_mesh(const GeometryParameters &geometry);
+
+    /**
+     * Check that every boundary id named in @p boundary exists on the mesh
+     * (InputError otherwise).
+     */
+    void
+    check_boundary_ids(const BoundaryParameters &boundary) const;
+
+    bool
+    is_simplex() const
+    {
+      return simplex;
+    }
+
+    /** Whether the mesh can be adapted (p4est). */
+    bool
+    is_distributed() const
+    {
+      return !simplex;
+    }
+
+    /** A quadrature of @p n_points per direction (Gauss / Gauss simplex). */
+    Quadrature<dim>
+    cell_quadrature(const unsigned int n_points) const;
+
+    /** The same on faces. */
+    Quadrature<dim - 1>
+    face_quadrature(const unsigned int n_points) const;
+
+    MPI_Comm                            mpi_communicator;
+    std::unique_ptr<Triangulation<dim>> triangulation;
+    std::unique_ptr<FiniteElement<dim>> fe;
+    std::unique_ptr<Mapping<dim>>       mapping;
+
+  private:
+    bool simplex;
+  };
+} // namespace hemicontact

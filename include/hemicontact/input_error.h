@@ -1,0 +1,41 @@
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace hemicontact
+{
+  /**
+   * A mistake in the user's input (parameter file, mesh, expression): the
+   * message names the parameter and the cause in one paragraph. main()
+   * prints it without a stack trace and exits with code 2.
+   */
+  class InputError : public std::runtime_error
+  {
+  public:
+    explicit InputError(const std::string &message)
+      : std::runtime_error(message)
+    {}
+  };
+
+  /**
+   * A failure of the numerical method (Newton not converged, NaN, linear
+   * solver breakdown). main() exits with code 3 after the last converged
+   * state was written.
+   */
+  class SolverFailure : public std::runtime_error
+  {
+  public:
+    explicit SolverFailure(const std::string &message)
+      : std::runtime_error(message)
+    {}
+  };
+
+  /** Throw an InputError with @p message unless @p condition holds. */
+  inline void
+  require(const bool condition, const std::string &message)
+  {
+    if (!condition)
+      throw InputError(message);
+  }
+} // namespace hemicontact

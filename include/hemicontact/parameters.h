@@ -1,0 +1,160 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace hemicontact
+{
+  using namespace dealii;
+
+  /** Mesh: built-in rectangle/box or a Gmsh file, and the element type. */
+  struct GeometryParameters
+  {
+    std::string         mesh_type;  ///< "rectangle" or "gmsh"
+    std::string         cell_type;  ///< "hypercube" (FE_Q, p4est) or "simplex"
+    std::vector<double> lower_left; ///< corner of the rectangle/box
+    std::vector<double> upper_right;
+    std::vector<unsigned int> subdivisions;
+    std::string               mesh_file;
+    unsigned int              global_refinements;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** The three boundary parts, each a set of boundary ids. */
+  struct BoundaryParameters
+  {
+    std::vector<unsigned int> clamped_ids;  ///< Gamma_1: u = 0
+    std::vector<unsigned int> traction_ids; ///< Gamma_2: sigma nu = f2
+    std::vector<unsigned int> contact_ids;  ///< Gamma_3: contact
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** An isotropic Lame pair, given either as (mu, lambda) or as (E, nu). */
+  struct LamePair
+  {
+    double mu;
+    double lambda;
+
+    static void declare(ParameterHandler &prm);
+    /** Parse; @p name ("elasticity"/"viscosity") is used in error messages. */
+    void parse(ParameterHandler &prm, const std::string &name);
+  };
+
+  /** Kelvin-Voigt material: density, viscosity A and elasticity B. */
+  struct MaterialParameters
+  {
+    double   density;
+    LamePair viscosity;
+    LamePair elasticity;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** Uniform time stepping t_n = n k on [0, T]. */
+  struct TimeParameters
+  {
+    double end_time;
+    double time_step;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** Data of the problem as muparser expressions in x, y, z, t. */
+  struct DataParameters
+  {
+    std::string constants;
+    std::string body_force;          ///< f0(x,t)
+    std::string surface_traction;    ///< f2(x,t) on Gamma_2
+    std::string contact_traction;    ///< f3(x,t) on Gamma_3 (manufactured data)
+    std::string friction_bound;      ///< F_b(x) >= 0
+    std::string initial_displacement;///< u0(x)
+    std::string initial_velocity;    ///< w0(x)
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** Settings of the semismooth Newton / active-set iteration of one step. */
+  struct NonlinearSolverParameters
+  {
+    double       tolerance;          ///< relative nonsmooth residual
+    double       absolute_tolerance; ///< absolute floor of the residual
+    unsigned int max_iterations;
+    double       complementarity_factor; ///< c_i = factor * K_ii / m_i
+    bool         line_search;
+    double       min_step_length;
+    bool         strict_convexity_check;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** Linear solver of each Newton step. */
+  struct LinearSolverParameters
+  {
+    std::string  type; ///< "cg amg" or "direct"
+    double       relative_tolerance;
+    unsigned int max_iterations;
+    double       aggregation_threshold;
+    unsigned int smoother_sweeps;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** What is written, where and how often. */
+  struct OutputParameters
+  {
+    std::string  directory;
+    unsigned int vtu_interval; ///< every this many steps, 0 = never
+    std::string  probe_points; ///< "x,y; x,y" (empty: none)
+    std::string  terminal;     ///< "progress", "quiet" or "test"
+    bool         timing_summary;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** All parameters of a run, one struct per subsection. */
+  struct Parameters
+  {
+    unsigned int               dimension;
+    GeometryParameters         geometry;
+    BoundaryParameters         boundary;
+    MaterialParameters         material;
+    TimeParameters             time;
+    DataParameters             data;
+    NonlinearSolverParameters  nonlinear_solver;
+    LinearSolverParameters     linear_solver;
+    OutputParameters           output;
+    /** The normal law is parsed by its own factory (see normal_law.h). */
+    std::string normal_law_name;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** Declare every parameter of the program (including the normal laws). */
+  void
+  declare_all_parameters(ParameterHandler &prm);
+
+  /**
+   * Read @p filename into @p prm and return the parsed parameters. Any
+   * problem (missing file, syntax, unknown key, wrong type, non-physical
+   * value) throws an InputError that names the cause.
+   */
+  Parameters
+  read_parameters(ParameterHandler &prm, const std::string &filename);
+
+  /** Same, from a string holding a parameter file (used by tests). */
+  Parameters
+  read_parameters_from_string(ParameterHandler &prm, const std::string &text);
+} // namespace hemicontact

@@ -1,0 +1,54 @@
+#pragma once
+
+#include <deal.II/base/function.h>
+
+#include <hemicontact/parameters.h>
+
+#include <memory>
+#include <string>
+
+namespace hemicontact
+{
+  using namespace dealii;
+
+  /**
+   * The data of the contact problem as Function objects: f0, f2, f3 and
+   * the initial fields (dim components each) and the friction bound F_b
+   * (one component). Built from the muparser expressions of the parameter
+   * file; a manufactured solution replaces them with derived functions.
+   */
+  template <int dim>
+  struct ProblemData
+  {
+    std::unique_ptr<Function<dim>> body_force;
+    std::unique_ptr<Function<dim>> surface_traction;
+    std::unique_ptr<Function<dim>> contact_traction;
+    std::unique_ptr<Function<dim>> friction_bound;
+    std::unique_ptr<Function<dim>> initial_displacement;
+    std::unique_ptr<Function<dim>> initial_velocity;
+
+    /** Set the time of every time-dependent function. */
+    void
+    set_time(const double t);
+  };
+
+  /**
+   * Build ProblemData from the expressions in @p data. A malformed
+   * expression or a wrong number of components throws an InputError that
+   * names the parameter.
+   */
+  template <int dim>
+  ProblemData<dim>
+  make_problem_data(const DataParameters &data);
+
+  /**
+   * A FunctionParser for one parameter, with the variables x, y[, z], t and
+   * the user constants (plus pi). @p n_components expressions are expected;
+   * a single number is broadcast to every component. @p parameter_name is
+   * used in error messages.
+   */
+  template <int dim>
+  std::unique_ptr<Function<dim>>
+  parse_function(const std::string &expression, const unsigned int n_components,
+                 const std::string &constants, const std::string &parameter_name);
+} // namespace hemicontact

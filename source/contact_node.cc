@@ -1,0 +1,230 @@
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <hemicontact/contact_node.h>
+#include <hemicontact/tresca_friction.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hemicontact
+{
+  namespace NodeContact
+  {
+    template <int dim>
+    NodeMultipliers<dim>
+    multipliers(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
+                const Tensor<1, dim> &force, const NormalLaw &law)
+    {
+      NodeMultipliers<dim> m;
+      const Tensor<1, dim> &nu = node.normal;
+      m.w_normal               = velocity * nu;
+      m.w_tangential           = velocity - m.w_normal * nu;
+      const Tensor<1, dim> traction = force / node.mass;
+      m.s      = traction * nu - law.remainder(m.w_normal);
+      m.lambda = traction - (traction * nu) * nu;
+      return m;
+    }
+
+    template <int dim>
+    NormalBranch
+    normal_branch(const ContactNode<dim> &node, const NodeMultipliers<dim> &m,
+                  const NormalLaw &law)
+    {
+      const double q = m.s + node.c * m.w_normal;
+      if (q < 0)
+        return NormalBranch::separating;
+      if (q > law.jump())
+        return NormalBranch::damped;
+      return NormalBranch::stick;
+    }
+
+    template <int dim>
+    TangentialBranch
+    tangential_branch(const ContactNode<dim> &node,
+                      const NodeMultipliers<dim> &m)
+    {
+      return TrescaFriction::sticks(m.lambda + node.c * m.w_tangential,
+                                    node.friction_bound) ?
+               TangentialBranch::stick :
+               TangentialBranch::slip;
+    }
+
+    template <int dim>
+    double
+    normal_complementarity(const ContactNode<dim> &node,
+                           const NodeMultipliers<dim> &m, const NormalLaw &law)
+    {
+      const double q = m.s + node.c * m.w_normal;
+      return m.s - std::clamp(q, 0., law.jump());
+    }
+
+    template <int dim>
+    Tensor<1, dim>
+    tangential_complementarity(const ContactNode<dim> &node,
+                               const NodeMultipliers<dim> &m)
+    {
+      return m.lambda -
+             TrescaFriction::project(m.lambda + node.c * m.w_tangential,
+                                     node.friction_bound);
+    }
+
+    template <int dim>
+    NodeLinearization<dim>
+    linearize(const ContactNode<dim> &node, const NodeMultipliers<dim> &m,
+              const NormalLaw &law)
+    {
+      NodeLinearization<dim> lin;
+      const Tensor<1, dim> &nu = node.normal;
+      if (node.normal_branch == NormalBranch::damped)
+        {
+          lin.force += node.mass * (law.jump() + law.remainder(m.w_normal)) * nu;
+          lin.matrix += node.mass * law.remainder_derivative(m.w_normal) *
+                        outer_product(nu, nu);
+        }
+      if (node.tangential_branch == TangentialBranch::slip)
+        {
+          const Tensor<1, dim> q    = m.lambda + node.c * m.w_tangential;
+          const double         qn   = q.norm();
+          const Tensor<1, dim> d    = q / qn;
+          lin.force += node.mass * node.friction_bound * d;
+          // derivative of F_b q/|q| in w_tau with lambda frozen: symmetric,
+          // positive semidefinite, bounded by m_i c (Hueber-Stadler-Wohlmuth)
+          Tensor<2, dim> tangent_projector = unit_symmetric_tensor<dim>();
+          tangent_projector -= outer_product(nu, nu) + outer_product(d, d);
+          lin.matrix += node.mass * node.friction_bound * node.c / qn *
+                        tangent_projector;
+        }
+      return lin;
+    }
+
+    template <int dim>
+    double
+    energy(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
+           const NormalLaw &law)
+    {
+      const double         wn = velocity * node.normal;
+      const Tensor<1, dim> wt = velocity - wn * node.normal;
+      return node.mass * (law.potential(wn) +
+                          TrescaFriction::potential(node.friction_bound, wt));
+    }
+
+    template <int dim>
+    std::array<Tensor<1, dim>, dim - 1>
+    tangent_basis(const Tensor<1, dim> &normal)
+    {
+      std::array<Tensor<1, dim>, dim - 1> t;
+      if constexpr (dim == 2)
+        {
+          t[0][0] = -normal[1];
+          t[0][1] = normal[0];
+        }
+      else
+        {
+          // the coordinate axis least aligned with the normal
+          unsigned int axis = 0;
+          for (unsigned int d = 1; d < dim; ++d)
+            if (std::abs(normal[d]) < std::abs(normal[axis]))
+              axis = d;
+          Tensor<1, dim> e;
+          e[axis] = 1;
+          t[0]    = e - (e * normal) * normal;
+          t[0] /= t[0].norm();
+          t[1] = cross_product_3d(normal, t[0]);
+        }
+      return t;
+    }
+
+    template <int dim>
+    std::vector<Tensor<1, dim>>
+    constrained_directions(const ContactNode<dim> &node)
+    {
+      std::vector<Tensor<1, dim>> directions;
+      if (node.normal_branch == NormalBranch::stick)
+        directions.push_back(node.normal);
+      if (node.tangential_branch == TangentialBranch::stick)
+        for (const Tensor<1, dim> &t : tangent_basis(node.normal))
+          directions.push_back(t);
+      return directions;
+    }
+
+    template <int dim>
+    std::vector<
+      std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>>
+    eliminate(const std::vector<Tensor<1, dim>> &directions)
+    {
+      const unsigned int n_rows = directions.size();
+      std::vector<std::array<double, dim>> a(n_rows);
+      for (unsigned int r = 0; r < n_rows; ++r)
+        for (unsigned int j = 0; j < dim; ++j)
+          a[r][j] = directions[r][j];
+
+      std::array<bool, dim>     is_pivot{};
+      std::vector<unsigned int> pivot(n_rows);
+      for (unsigned int r = 0; r < n_rows; ++r)
+        {
+          unsigned int best = dim;
+          for (unsigned int j = 0; j < dim; ++j)
+            if (!is_pivot[j] &&
+                (best == dim || std::abs(a[r][j]) > std::abs(a[r][best])))
+              best = j;
+          pivot[r]       = best;
+          is_pivot[best] = true;
+          const double p = a[r][best];
+          for (unsigned int j = 0; j < dim; ++j)
+            a[r][j] /= p;
+          for (unsigned int o = 0; o < n_rows; ++o)
+            if (o != r)
+              {
+                const double f = a[o][best];
+                for (unsigned int j = 0; j < dim; ++j)
+                  a[o][j] -= f * a[r][j];
+              }
+        }
+
+      std::vector<
+        std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>>
+        result;
+      for (unsigned int r = 0; r < n_rows; ++r)
+        {
+          std::vector<std::pair<unsigned int, double>> entries;
+          for (unsigned int j = 0; j < dim; ++j)
+            if (!is_pivot[j] && std::abs(a[r][j]) > 1e-14)
+              entries.emplace_back(j, -a[r][j]);
+          result.emplace_back(pivot[r], entries);
+        }
+      return result;
+    }
+
+#define HEMICONTACT_INSTANTIATE(dim)                                           \
+  template NodeMultipliers<dim> multipliers(const ContactNode<dim> &,         \
+                                            const Tensor<1, dim> &,            \
+                                            const Tensor<1, dim> &,            \
+                                            const NormalLaw &);                \
+  template NormalBranch         normal_branch(const ContactNode<dim> &,       \
+                                      const NodeMultipliers<dim> &,            \
+                                      const NormalLaw &);                      \
+  template TangentialBranch     tangential_branch(const ContactNode<dim> &,   \
+                                              const NodeMultipliers<dim> &);   \
+  template double normal_complementarity(const ContactNode<dim> &,            \
+                                         const NodeMultipliers<dim> &,         \
+                                         const NormalLaw &);                   \
+  template Tensor<1, dim> tangential_complementarity(                         \
+    const ContactNode<dim> &, const NodeMultipliers<dim> &);                   \
+  template NodeLinearization<dim> linearize(const ContactNode<dim> &,         \
+                                            const NodeMultipliers<dim> &,      \
+                                            const NormalLaw &);                \
+  template double energy(const ContactNode<dim> &, const Tensor<1, dim> &,    \
+                         const NormalLaw &);                                   \
+  template std::array<Tensor<1, dim>, dim - 1> tangent_basis(                 \
+    const Tensor<1, dim> &);                                                   \
+  template std::vector<Tensor<1, dim>> constrained_directions(                \
+    const ContactNode<dim> &);                                                 \
+  template std::vector<                                                        \
+    std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>>     \
+  eliminate(const std::vector<Tensor<1, dim>> &);
+
+    HEMICONTACT_INSTANTIATE(2)
+    HEMICONTACT_INSTANTIATE(3)
+#undef HEMICONTACT_INSTANTIATE
+  } // namespace NodeContact
+} // namespace hemicontact

@@ -1,0 +1,150 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_fe.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+
+#include <hemicontact/discretization.h>
+#include <hemicontact/input_error.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace hemicontact
+{
+  template <int dim>
+  Discretization<dim>::Discretization(const GeometryParameters &geometry,
+                                      MPI_Comm                  comm)
+    : mpi_communicator(comm)
+    , simplex(geometry.cell_type == "simplex")
+  {
+    if (simplex)
+      {
+        triangulation =
+          std::make_unique<parallel::shared::Triangulation<dim>>(comm);
+        fe = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(1), dim);
+        mapping = std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
+      }
+    else
+      {
+        triangulation =
+          std::make_unique<parallel::distributed::Triangulation<dim>>(
+            comm,
+            typename Triangulation<dim>::MeshSmoothing(
+              Triangulation<dim>::smoothing_on_refinement |
+              Triangulation<dim>::smoothing_on_coarsening));
+        fe      = std::make_unique<FESystem<dim>>(FE_Q<dim>(1), dim);
+        mapping = std::make_unique<MappingQ<dim>>(1);
+      }
+  }
+
+  template <int dim>
+  void
+  Discretization<dim>::make_mesh(const GeometryParameters &geometry)
+  {
+    if (geometry.mesh_type == "rectangle")
+      {
+        Point<dim>                p0, p1;
+        std::vector<unsigned int> repetitions(dim);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            p0[d]          = geometry.lower_left[d];
+            p1[d]          = geometry.upper_right[d];
+            repetitions[d] = geometry.subdivisions[d];
+          }
+        if (simplex)
+          {
+            GridGenerator::subdivided_hyper_rectangle_with_simplices(
+              *triangulation, repetitions, p0, p1, /*colorize=*/true);
+          }
+        else
+          GridGenerator::subdivided_hyper_rectangle(*triangulation,
+                                                    repetitions, p0, p1,
+                                                    /*colorize=*/true);
+      }
+    else
+      {
+        std::ifstream file(geometry.mesh_file);
+        require(static_cast<bool>(file),
+                "geometry: cannot open the mesh file '" + geometry.mesh_file +
+                  "' (no such file or not readable).");
+        GridIn<dim> grid_in;
+        grid_in.attach_triangulation(*triangulation);
+        try
+          {
+            grid_in.read_msh(file);
+          }
+        catch (const ExceptionBase &e)
+          {
+            std::ostringstream s;
+            e.print_info(s);
+            throw InputError("geometry: cannot read the Gmsh file '" +
+                             geometry.mesh_file + "': " + s.str());
+          }
+        const bool all_hypercubes =
+          triangulation->all_reference_cells_are_hyper_cube();
+        require(all_hypercubes != simplex,
+                "geometry: the mesh file '" + geometry.mesh_file +
+                  "' holds " +
+                  (all_hypercubes ? std::string("quadrilaterals/hexahedra") :
+                                    std::string("triangles/tetrahedra")) +
+                  " but 'cell type' = " + geometry.cell_type + ".");
+      }
+    triangulation->refine_global(geometry.global_refinements);
+  }
+
+  template <int dim>
+  void
+  Discretization<dim>::check_boundary_ids(
+    const BoundaryParameters &boundary) const
+  {
+    const std::vector<types::boundary_id> present_ids =
+      Utilities::MPI::compute_set_union(triangulation->get_boundary_ids(),
+                                        mpi_communicator);
+    const std::set<types::boundary_id> present(present_ids.begin(),
+                                               present_ids.end());
+    std::string present_list;
+    for (const auto id : present)
+      present_list += (present_list.empty() ? "" : ", ") + std::to_string(id);
+
+    const auto check = [&](const std::vector<unsigned int> &ids,
+                           const std::string &           name) {
+      for (const unsigned int id : ids)
+        require(present.count(id) == 1,
+                "boundary: '" + name + "' names boundary id " +
+                  std::to_string(id) +
+                  ", which the mesh does not have (its boundary ids are " +
+                  present_list + ").");
+    };
+    check(boundary.clamped_ids, "clamped boundary ids");
+    check(boundary.traction_ids, "traction boundary ids");
+    check(boundary.contact_ids, "contact boundary ids");
+  }
+
+  template <int dim>
+  Quadrature<dim>
+  Discretization<dim>::cell_quadrature(const unsigned int n_points) const
+  {
+    if (simplex)
+      return QGaussSimplex<dim>(n_points);
+    return QGauss<dim>(n_points);
+  }
+
+  template <int dim>
+  Quadrature<dim - 1>
+  Discretization<dim>::face_quadrature(const unsigned int n_points) const
+  {
+    if (simplex)
+      return QGaussSimplex<dim - 1>(n_points);
+    return QGauss<dim - 1>(n_points);
+  }
+
+  template class Discretization<2>;
+  template class Discretization<3>;
+} // namespace hemicontact

@@ -1,0 +1,113 @@
+/**
+ * hemicontact: dynamic frictional contact with hemivariational laws.
+ *
+ *   hemicontact file.prm           run
+ *   hemicontact --print-parameters print the documented default file
+ *   hemicontact --help
+ */
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <hemicontact/contact_problem.h>
+#include <hemicontact/input_error.h>
+#include <hemicontact/normal_law.h>
+#include <hemicontact/parameters.h>
+
+#include <iostream>
+#include <sstream>
+#include <string>
+
+using namespace hemicontact;
+
+namespace
+{
+  void
+  print_help()
+  {
+    std::cout
+      << "hemicontact - dynamic viscoelastic contact with a nonmonotone normal\n"
+         "damped response and Tresca friction (Han & Han 2019, Problem 4.4).\n\n"
+         "Usage:\n"
+         "  hemicontact FILE.prm            run the problem described in FILE\n"
+         "  mpirun -np N hemicontact FILE   the same on N MPI ranks\n"
+         "  hemicontact --print-parameters  print every parameter with its\n"
+         "                                  default value and documentation\n"
+         "  hemicontact --help              this text\n\n"
+         "Exit codes: 0 success, 1 usage, 2 input error, 3 solver failure,\n"
+         "4 internal error.\n";
+  }
+
+  int
+  run_program(int argc, char **argv)
+  {
+    const std::string argument = argc > 1 ? argv[1] : "";
+    if (argument == "--help" || argument == "-h")
+      {
+        print_help();
+        return 0;
+      }
+    if (argument == "--print-parameters")
+      {
+        ParameterHandler prm;
+        declare_all_parameters(prm);
+        prm.print_parameters(std::cout, ParameterHandler::PRM |
+                                          ParameterHandler::KeepDeclarationOrder);
+        return 0;
+      }
+    if (argc != 2 || argument.empty() || argument[0] == '-')
+      {
+        std::cerr << "hemicontact: expected exactly one parameter file "
+                     "(or --help / --print-parameters).\n";
+        return 1;
+      }
+
+    ParameterHandler prm;
+    const Parameters parameters = read_parameters(prm, argument);
+    std::unique_ptr<NormalLaw> law = create_normal_law(prm);
+    if (parameters.dimension == 2)
+      ContactProblem<2>(parameters, std::move(law), MPI_COMM_WORLD).run();
+    else
+      ContactProblem<3>(parameters, std::move(law), MPI_COMM_WORLD).run();
+    return 0;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  try
+    {
+      return run_program(argc, argv);
+    }
+  catch (const InputError &e)
+    {
+      if (root)
+        std::cerr << "hemicontact: input error: " << e.what() << std::endl;
+      return 2;
+    }
+  catch (const SolverFailure &e)
+    {
+      if (root)
+        std::cerr << "hemicontact: solver failure: " << e.what()
+                  << " The last converged state was written." << std::endl;
+      return 3;
+    }
+  catch (const dealii::ExceptionBase &e)
+    {
+      if (root)
+        {
+          std::cerr << "hemicontact: internal error: ";
+          e.print_info(std::cerr);
+          std::cerr << std::endl;
+        }
+      return 4;
+    }
+  catch (const std::exception &e)
+    {
+      if (root)
+        std::cerr << "hemicontact: error: " << e.what() << std::endl;
+      return 4;
+    }
+}

@@ -1,0 +1,106 @@
+#include <hemicontact/input_error.h>
+#include <hemicontact/normal_law.h>
+#include <hemicontact/normal_laws/exponential_law.h>
+#include <hemicontact/normal_laws/linear_damping_law.h>
+#include <hemicontact/normal_laws/piecewise_linear_law.h>
+
+#include <algorithm>
+
+namespace hemicontact
+{
+  double
+  NormalLaw::potential(const double r) const
+  {
+    return jump() * std::max(r, 0.) + remainder_primitive(r);
+  }
+
+  std::pair<double, double>
+  NormalLaw::subdifferential(const double r) const
+  {
+    if (r < 0)
+      return {0., 0.};
+    if (r == 0)
+      return {0., jump()};
+    const double xi = jump() + remainder(r);
+    return {xi, xi};
+  }
+
+  double
+  NormalLaw::subgradient(const double r) const
+  {
+    return r > 0 ? jump() + remainder(r) : 0.;
+  }
+
+  double
+  get_law_double(ParameterHandler &prm, const std::string &law,
+                 const std::string &key)
+  {
+    prm.enter_subsection(law);
+    const double value = prm.get_double(key);
+    prm.leave_subsection();
+    return value;
+  }
+
+  namespace
+  {
+    template <class Law>
+    NormalLawEntry
+    entry()
+    {
+      return {Law::law_name, &Law::declare_parameters,
+              [](ParameterHandler &prm) -> std::unique_ptr<NormalLaw> {
+                return std::make_unique<Law>(prm);
+              }};
+    }
+  } // namespace
+
+  const std::vector<NormalLawEntry> &
+  normal_law_registry()
+  {
+    static const std::vector<NormalLawEntry> registry = {
+      entry<ExponentialLaw>(),
+      entry<PiecewiseLinearLaw>(),
+      entry<LinearDampingLaw>(),
+      entry<NoNormalResistance>(),
+    };
+    return registry;
+  }
+
+  void
+  declare_normal_law_parameters(ParameterHandler &prm)
+  {
+    std::string names;
+    for (const NormalLawEntry &e : normal_law_registry())
+      names += (names.empty() ? "" : "|") + e.name;
+    prm.enter_subsection("normal law");
+    prm.declare_entry("law", "exponential", Patterns::Selection(names),
+                      "Normal damped response law -sigma_nu in dj(w_nu) on "
+                      "the contact boundary. Each law has its own "
+                      "subsection below.");
+    for (const NormalLawEntry &e : normal_law_registry())
+      e.declare(prm);
+    prm.leave_subsection();
+  }
+
+  std::unique_ptr<NormalLaw>
+  create_normal_law(ParameterHandler &prm)
+  {
+    prm.enter_subsection("normal law");
+    const std::string name = prm.get("law");
+    std::unique_ptr<NormalLaw> law;
+    try
+      {
+        for (const NormalLawEntry &e : normal_law_registry())
+          if (e.name == name)
+            law = e.create(prm);
+      }
+    catch (...)
+      {
+        prm.leave_subsection();
+        throw;
+      }
+    prm.leave_subsection();
+    require(law != nullptr, "normal law: unknown law '" + name + "'.");
+    return law;
+  }
+} // namespace hemicontact

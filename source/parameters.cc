@@ -1,0 +1,499 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <hemicontact/input_error.h>
+#include <hemicontact/normal_law.h>
+#include <hemicontact/parameters.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace hemicontact
+{
+  namespace
+  {
+    std::vector<unsigned int>
+    get_id_list(ParameterHandler &prm, const std::string &key)
+    {
+      std::vector<unsigned int> ids;
+      for (const int i : Utilities::string_to_int(
+             Utilities::split_string_list(prm.get(key), ',')))
+        ids.push_back(static_cast<unsigned int>(i));
+      return ids;
+    }
+  } // namespace
+
+  void
+  GeometryParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("geometry");
+    prm.declare_entry("mesh", "rectangle", Patterns::Selection("rectangle|gmsh"),
+                      "'rectangle' builds a rectangle (2D) or box (3D) from the "
+                      "corners below, with boundary ids 0 (x = x0), 1 (x = x1), "
+                      "2 (y = y0), 3 (y = y1), 4 (z = z0), 5 (z = z1). 'gmsh' "
+                      "reads 'mesh file' (physical tags become boundary ids).");
+    prm.declare_entry("cell type", "hypercube",
+                      Patterns::Selection("hypercube|simplex"),
+                      "'hypercube': quadrilaterals/hexahedra, FE_Q(1)^d on a "
+                      "p4est distributed mesh. 'simplex': triangles/tetrahedra, "
+                      "FE_SimplexP(1)^d on a shared mesh (uniform refinement "
+                      "only).");
+    prm.declare_entry("lower left corner", "0, 0, 0",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "Corner (x0, y0[, z0]) of the rectangle/box; only the "
+                      "first 'dimension' entries are used.");
+    prm.declare_entry("upper right corner", "4, 1, 1",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "Opposite corner (x1, y1[, z1]).");
+    prm.declare_entry("subdivisions", "4, 1, 1",
+                      Patterns::List(Patterns::Integer(1), 2, 3),
+                      "Number of coarse cells in each direction.");
+    prm.declare_entry("mesh file", "", Patterns::Anything(),
+                      "Gmsh .msh file (relative to the working directory) for "
+                      "mesh = gmsh.");
+    prm.declare_entry("global refinements", "3", Patterns::Integer(0, 20),
+                      "Number of uniform refinements of the coarse mesh.");
+    prm.leave_subsection();
+  }
+
+  void
+  GeometryParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("geometry");
+    mesh_type  = prm.get("mesh");
+    cell_type  = prm.get("cell type");
+    lower_left = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("lower left corner")));
+    upper_right = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("upper right corner")));
+    for (const int s : Utilities::string_to_int(
+           Utilities::split_string_list(prm.get("subdivisions"))))
+      subdivisions.push_back(s);
+    mesh_file          = prm.get("mesh file");
+    global_refinements = prm.get_integer("global refinements");
+    prm.leave_subsection();
+    if (mesh_type == "gmsh")
+      require(!mesh_file.empty(),
+              "geometry: 'mesh = gmsh' needs a 'mesh file', but none is set.");
+  }
+
+  void
+  BoundaryParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("boundary");
+    prm.declare_entry("clamped boundary ids", "0",
+                      Patterns::List(Patterns::Integer(0, 255)),
+                      "Boundary ids of Gamma_1 (u = 0). Must not be empty.");
+    prm.declare_entry("traction boundary ids", "1, 3",
+                      Patterns::List(Patterns::Integer(0, 255)),
+                      "Boundary ids of Gamma_2 (sigma nu = f2); may be empty. "
+                      "Boundary parts in no list are traction free.");
+    prm.declare_entry("contact boundary ids", "2",
+                      Patterns::List(Patterns::Integer(0, 255)),
+                      "Boundary ids of Gamma_3 (contact). Must not be empty.");
+    prm.leave_subsection();
+  }
+
+  void
+  BoundaryParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("boundary");
+    clamped_ids  = get_id_list(prm, "clamped boundary ids");
+    traction_ids = get_id_list(prm, "traction boundary ids");
+    contact_ids  = get_id_list(prm, "contact boundary ids");
+    prm.leave_subsection();
+    require(!clamped_ids.empty(),
+            "boundary: 'clamped boundary ids' is empty; the clamped part "
+            "Gamma_1 must have positive measure (Korn's inequality).");
+    require(!contact_ids.empty(),
+            "boundary: 'contact boundary ids' is empty; the contact part "
+            "Gamma_3 must have positive measure.");
+    for (const unsigned int c : contact_ids)
+      for (const unsigned int d : clamped_ids)
+        require(c != d, "boundary: id " + std::to_string(c) +
+                          " is listed both as clamped and as contact.");
+  }
+
+  void
+  LamePair::declare(ParameterHandler &prm)
+  {
+    prm.declare_entry("parametrisation", "lame",
+                      Patterns::Selection("lame|young"),
+                      "'lame': use 'mu' and 'lambda'; 'young': use 'young "
+                      "modulus' and 'poisson ratio'.");
+    prm.declare_entry("mu", "1", Patterns::Double(), "Lame parameter mu.");
+    prm.declare_entry("lambda", "1", Patterns::Double(),
+                      "Lame parameter lambda.");
+    prm.declare_entry("young modulus", "1", Patterns::Double(),
+                      "Young's modulus E > 0.");
+    prm.declare_entry("poisson ratio", "0.3", Patterns::Double(),
+                      "Poisson's ratio, -1 < nu < 0.5.");
+  }
+
+  void
+  LamePair::parse(ParameterHandler &prm, const std::string &name)
+  {
+    if (prm.get("parametrisation") == "lame")
+      {
+        mu     = prm.get_double("mu");
+        lambda = prm.get_double("lambda");
+      }
+    else
+      {
+        const double E  = prm.get_double("young modulus");
+        const double nu = prm.get_double("poisson ratio");
+        require(E > 0, "material/" + name + ": 'young modulus' = " +
+                         std::to_string(E) + " must be positive.");
+        require(nu > -1 && nu < 0.5,
+                "material/" + name + ": 'poisson ratio' = " +
+                  std::to_string(nu) + " must lie in (-1, 0.5).");
+        mu     = E / (2 * (1 + nu));
+        lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+      }
+  }
+
+  void
+  MaterialParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("material");
+    prm.declare_entry("density", "1", Patterns::Double(), "Mass density rho > 0.");
+    prm.enter_subsection("viscosity");
+    LamePair::declare(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("elasticity");
+    LamePair::declare(prm);
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  void
+  MaterialParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("material");
+    density = prm.get_double("density");
+    prm.enter_subsection("viscosity");
+    viscosity.parse(prm, "viscosity");
+    prm.leave_subsection();
+    prm.enter_subsection("elasticity");
+    elasticity.parse(prm, "elasticity");
+    prm.leave_subsection();
+    prm.leave_subsection();
+
+    require(density > 0, "material: 'density' = " + std::to_string(density) +
+                           " must be positive.");
+    require(viscosity.mu > 0,
+            "material/viscosity: 'mu' = " + std::to_string(viscosity.mu) +
+              " must be positive (the viscosity A must be coercive, m_A > 0).");
+    require(viscosity.lambda + 2. / 3. * viscosity.mu > 0,
+            "material/viscosity: 'lambda' = " +
+              std::to_string(viscosity.lambda) +
+              " makes the bulk viscosity lambda + 2 mu / 3 non-positive.");
+    require(elasticity.mu >= 0,
+            "material/elasticity: 'mu' = " + std::to_string(elasticity.mu) +
+              " must be non-negative.");
+    require(elasticity.lambda + 2. / 3. * elasticity.mu >= 0,
+            "material/elasticity: 'lambda' = " +
+              std::to_string(elasticity.lambda) +
+              " makes the bulk modulus lambda + 2 mu / 3 negative.");
+  }
+
+  void
+  TimeParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("time");
+    prm.declare_entry("end time", "1", Patterns::Double(), "Final time T > 0.");
+    prm.declare_entry("time step", "0.01", Patterns::Double(),
+                      "Time step k > 0; the number of steps is round(T/k) and "
+                      "k is adjusted to T/N.");
+    prm.leave_subsection();
+  }
+
+  void
+  TimeParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("time");
+    end_time  = prm.get_double("end time");
+    time_step = prm.get_double("time step");
+    prm.leave_subsection();
+    require(end_time > 0, "time: 'end time' = " + std::to_string(end_time) +
+                            " must be positive.");
+    require(time_step > 0, "time: 'time step' = " + std::to_string(time_step) +
+                             " must be positive.");
+    require(time_step <= end_time,
+            "time: 'time step' = " + std::to_string(time_step) +
+              " is larger than 'end time' = " + std::to_string(end_time) + ".");
+  }
+
+  void
+  DataParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("data");
+    prm.declare_entry("constants", "", Patterns::Anything(),
+                      "User constants for the expressions below, e.g. "
+                      "'g=9.81, v=0.1'. 'pi' is predefined.");
+    const std::string vec_help =
+      " Vector-valued: 'dimension' expressions separated by ';' in x, y, z "
+      "and t. A single number (e.g. 0) means that value in every component.";
+    prm.declare_entry("body force", "0", Patterns::Anything(),
+                      "Body force density f0(x,t)." + vec_help);
+    prm.declare_entry("surface traction", "0", Patterns::Anything(),
+                      "Traction f2(x,t) on Gamma_2." + vec_help);
+    prm.declare_entry("contact traction", "0", Patterns::Anything(),
+                      "An additional given traction f3(x,t) on Gamma_3 "
+                      "(zero in physical runs; used by manufactured "
+                      "solutions)." + vec_help);
+    prm.declare_entry("friction bound", "0", Patterns::Anything(),
+                      "Tresca friction bound F_b(x) >= 0 on Gamma_3 (scalar "
+                      "expression in x, y, z).");
+    prm.declare_entry("initial displacement", "0", Patterns::Anything(),
+                      "u0(x); must vanish on Gamma_1." + vec_help);
+    prm.declare_entry("initial velocity", "0", Patterns::Anything(),
+                      "w0(x); must vanish on Gamma_1." + vec_help);
+    prm.leave_subsection();
+  }
+
+  void
+  DataParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("data");
+    constants            = prm.get("constants");
+    body_force           = prm.get("body force");
+    surface_traction     = prm.get("surface traction");
+    contact_traction     = prm.get("contact traction");
+    friction_bound       = prm.get("friction bound");
+    initial_displacement = prm.get("initial displacement");
+    initial_velocity     = prm.get("initial velocity");
+    prm.leave_subsection();
+  }
+
+  void
+  NonlinearSolverParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("nonlinear solver");
+    prm.declare_entry("tolerance", "1e-9", Patterns::Double(0),
+                      "Converged when no node changes branch and the "
+                      "nonsmooth residual (equilibrium + complementarity) is "
+                      "below this times the norm of the step's load.");
+    prm.declare_entry("absolute tolerance", "1e-14", Patterns::Double(0),
+                      "Absolute floor of the residual test (for unloaded "
+                      "steps).");
+    prm.declare_entry("max iterations", "50", Patterns::Integer(1),
+                      "Iteration limit of one step; exceeding it stops the run "
+                      "after writing the last converged state.");
+    prm.declare_entry("complementarity constant factor", "1",
+                      Patterns::Double(0),
+                      "The constant c of the node-wise projections is this "
+                      "factor times diag(step matrix)_i / m_i.");
+    prm.declare_entry("line search", "true", Patterns::Bool(),
+                      "Backtracking on the step energy J_n.");
+    prm.declare_entry("minimum step length", "1e-3", Patterns::Double(0, 1),
+                      "Smallest damping factor tried by the line search.");
+    prm.declare_entry("strict convexity check", "false", Patterns::Bool(),
+                      "If the per-step convexity condition fails for the "
+                      "chosen time step: stop with an error (true) or warn "
+                      "(false).");
+    prm.leave_subsection();
+  }
+
+  void
+  NonlinearSolverParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("nonlinear solver");
+    tolerance              = prm.get_double("tolerance");
+    absolute_tolerance     = prm.get_double("absolute tolerance");
+    max_iterations         = prm.get_integer("max iterations");
+    complementarity_factor = prm.get_double("complementarity constant factor");
+    line_search            = prm.get_bool("line search");
+    min_step_length        = prm.get_double("minimum step length");
+    strict_convexity_check = prm.get_bool("strict convexity check");
+    prm.leave_subsection();
+    require(complementarity_factor > 0,
+            "nonlinear solver: 'complementarity constant factor' must be "
+            "positive.");
+  }
+
+  void
+  LinearSolverParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("linear solver");
+    prm.declare_entry("type", "cg amg", Patterns::Selection("cg amg|direct"),
+                      "'cg amg': conjugate gradients with Trilinos ML AMG "
+                      "(rigid-body near-null space); 'direct': sparse direct "
+                      "solver (Amesos KLU; small problems).");
+    prm.declare_entry("relative tolerance", "1e-10", Patterns::Double(0),
+                      "Krylov tolerance relative to the right-hand side.");
+    prm.declare_entry("max iterations", "1000", Patterns::Integer(1),
+                      "Krylov iteration limit.");
+    prm.declare_entry("aggregation threshold", "1e-4", Patterns::Double(0),
+                      "ML aggregation threshold.");
+    prm.declare_entry("smoother sweeps", "2", Patterns::Integer(1),
+                      "ML smoother sweeps.");
+    prm.leave_subsection();
+  }
+
+  void
+  LinearSolverParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("linear solver");
+    type                  = prm.get("type");
+    relative_tolerance    = prm.get_double("relative tolerance");
+    max_iterations        = prm.get_integer("max iterations");
+    aggregation_threshold = prm.get_double("aggregation threshold");
+    smoother_sweeps       = prm.get_integer("smoother sweeps");
+    prm.leave_subsection();
+  }
+
+  void
+  OutputParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("output");
+    prm.declare_entry("directory", "output", Patterns::Anything(),
+                      "Directory for all output (created if missing).");
+    prm.declare_entry("vtu interval", "10", Patterns::Integer(0),
+                      "Write VTU/PVTU (and the .pvd series) every this many "
+                      "steps; 0 writes none.");
+    prm.declare_entry("probe points", "", Patterns::Anything(),
+                      "Points whose w and u are written to probes.csv each "
+                      "step, separated by ';', coordinates by ',' (e.g. "
+                      "'1, 0.5; 2, 1').");
+    prm.declare_entry("terminal", "progress",
+                      Patterns::Selection("progress|quiet|test"),
+                      "'progress': one line per step; 'quiet': start and end "
+                      "only; 'test': rounded, machine-independent lines for "
+                      "the test suite.");
+    prm.declare_entry("timing summary", "true", Patterns::Bool(),
+                      "Print the TimerOutput summary at the end.");
+    prm.leave_subsection();
+  }
+
+  void
+  OutputParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("output");
+    directory      = prm.get("directory");
+    vtu_interval   = prm.get_integer("vtu interval");
+    probe_points   = prm.get("probe points");
+    terminal       = prm.get("terminal");
+    timing_summary = prm.get_bool("timing summary");
+    prm.leave_subsection();
+    require(!directory.empty(), "output: 'directory' must not be empty.");
+  }
+
+  void
+  Parameters::declare(ParameterHandler &prm)
+  {
+    prm.declare_entry("dimension", "2", Patterns::Integer(2, 3),
+                      "Space dimension, 2 or 3.");
+    GeometryParameters::declare(prm);
+    BoundaryParameters::declare(prm);
+    MaterialParameters::declare(prm);
+    TimeParameters::declare(prm);
+    DataParameters::declare(prm);
+    NonlinearSolverParameters::declare(prm);
+    LinearSolverParameters::declare(prm);
+    OutputParameters::declare(prm);
+  }
+
+  void
+  Parameters::parse(ParameterHandler &prm)
+  {
+    dimension = prm.get_integer("dimension");
+    geometry.parse(prm);
+    boundary.parse(prm);
+    material.parse(prm);
+    time.parse(prm);
+    data.parse(prm);
+    nonlinear_solver.parse(prm);
+    linear_solver.parse(prm);
+    output.parse(prm);
+    prm.enter_subsection("normal law");
+    normal_law_name = prm.get("law");
+    prm.leave_subsection();
+
+    require(geometry.mesh_type != "rectangle" ||
+              (geometry.lower_left.size() >= dimension &&
+               geometry.upper_right.size() >= dimension &&
+               geometry.subdivisions.size() >= dimension),
+            "geometry: the corners and subdivisions need at least " +
+              std::to_string(dimension) + " entries for dimension " +
+              std::to_string(dimension) + ".");
+    if (geometry.mesh_type == "rectangle")
+      for (unsigned int d = 0; d < dimension; ++d)
+        require(geometry.upper_right[d] > geometry.lower_left[d],
+                "geometry: 'upper right corner' must exceed 'lower left "
+                "corner' in every coordinate (coordinate " +
+                  std::to_string(d) + ").");
+  }
+
+  void
+  declare_all_parameters(ParameterHandler &prm)
+  {
+    Parameters::declare(prm);
+    declare_normal_law_parameters(prm);
+  }
+
+  namespace
+  {
+    /** The message of a deal.II exception without its stack trace. */
+    std::string
+    message_of(const ExceptionBase &e)
+    {
+      std::ostringstream s;
+      e.print_info(s);
+      std::string m = s.str();
+      while (!m.empty() && (m.back() == '\n' || m.back() == ' '))
+        m.pop_back();
+      while (!m.empty() && (m.front() == '\n' || m.front() == ' '))
+        m.erase(0, 1);
+      return m;
+    }
+
+    template <typename ParseFunction>
+    Parameters
+    read_with(ParameterHandler &prm, const std::string &source,
+              const ParseFunction &parse)
+    {
+      declare_all_parameters(prm);
+      try
+        {
+          parse();
+        }
+      catch (const ExceptionBase &e)
+        {
+          throw InputError("cannot read the parameter file " + source + ": " +
+                           message_of(e));
+        }
+      Parameters parameters;
+      try
+        {
+          parameters.parse(prm);
+        }
+      catch (const ExceptionBase &e)
+        {
+          throw InputError("invalid value in the parameter file " + source +
+                           ": " + message_of(e));
+        }
+      return parameters;
+    }
+  } // namespace
+
+  Parameters
+  read_parameters(ParameterHandler &prm, const std::string &filename)
+  {
+    {
+      std::ifstream probe(filename);
+      require(static_cast<bool>(probe),
+              "cannot open the parameter file '" + filename +
+                "': no such file or not readable.");
+    }
+    return read_with(prm, "'" + filename + "'",
+                     [&]() { prm.parse_input(filename); });
+  }
+
+  Parameters
+  read_parameters_from_string(ParameterHandler &prm, const std::string &text)
+  {
+    return read_with(prm, "(string)",
+                     [&]() { prm.parse_input_from_string(text); });
+  }
+} // namespace hemicontact

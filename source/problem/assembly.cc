@@ -1,0 +1,270 @@
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <hemicontact/contact_problem.h>
+
+#include <set>
+
+namespace hemicontact
+{
+  template <int dim>
+  void
+  ContactProblem<dim>::assemble_constant_matrices()
+  {
+    TimerOutput::Scope t(timer, "assembly: constant matrices");
+    mass_matrix    = 0;
+    step_matrix    = 0;
+    elastic_matrix = 0;
+
+    const FiniteElement<dim> &fe = *discretization.fe;
+    FEValues<dim> fe_values(*discretization.mapping, fe,
+                            discretization.cell_quadrature(2),
+                            update_values | update_gradients |
+                              update_JxW_values);
+    const FEValuesExtractors::Vector v(0);
+    const unsigned int               n = fe.n_dofs_per_cell();
+    FullMatrix<double> cell_mass(n, n), cell_viscous(n, n), cell_elastic(n, n),
+      cell_step(n, n);
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<SymmetricTensor<2, dim>> eps(n);
+    std::vector<double>                  div(n);
+    std::vector<Tensor<1, dim>>          phi(n);
+    const double rho = material.density();
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          cell_mass    = 0;
+          cell_viscous = 0;
+          cell_elastic = 0;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  eps[i] = fe_values[v].symmetric_gradient(i, q);
+                  div[i] = fe_values[v].divergence(i, q);
+                  phi[i] = fe_values[v].value(i, q);
+                }
+              const double JxW = fe_values.JxW(q);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const SymmetricTensor<2, dim> a_i =
+                    material.viscous_stress(eps[i]);
+                  const SymmetricTensor<2, dim> b_i =
+                    material.elastic_stress(eps[i]);
+                  for (unsigned int j = 0; j < n; ++j)
+                    {
+                      cell_mass(i, j) += rho * (phi[i] * phi[j]) * JxW;
+                      cell_viscous(i, j) += (a_i * eps[j]) * JxW;
+                      cell_elastic(i, j) += (b_i * eps[j]) * JxW;
+                    }
+                }
+            }
+          cell_step = cell_viscous;
+          cell_step.add(1. / time_step, cell_mass);
+          cell->get_dof_indices(dofs);
+          base_constraints.distribute_local_to_global(cell_mass, dofs,
+                                                      mass_matrix);
+          base_constraints.distribute_local_to_global(cell_step, dofs,
+                                                      step_matrix);
+          base_constraints.distribute_local_to_global(cell_elastic, dofs,
+                                                      elastic_matrix);
+        }
+    mass_matrix.compress(VectorOperation::add);
+    step_matrix.compress(VectorOperation::add);
+    elastic_matrix.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::assemble_load(const double time)
+  {
+    TimerOutput::Scope t(timer, "assembly: load");
+    data.set_time(time);
+    load = 0;
+
+    const FiniteElement<dim> &fe = *discretization.fe;
+    FEValues<dim>     fe_values(*discretization.mapping, fe,
+                            discretization.cell_quadrature(3),
+                            update_values | update_quadrature_points |
+                              update_JxW_values);
+    FEFaceValues<dim> fe_face(*discretization.mapping, fe,
+                              discretization.face_quadrature(3),
+                              update_values | update_quadrature_points |
+                                update_JxW_values);
+    const unsigned int n = fe.n_dofs_per_cell();
+    Vector<double>     cell_load(n);
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<Vector<double>> values(fe_values.n_quadrature_points,
+                                       Vector<double>(dim));
+    std::vector<Vector<double>> face_values(fe_face.n_quadrature_points,
+                                            Vector<double>(dim));
+
+    const std::set<types::boundary_id> traction_ids(
+      parameters.boundary.traction_ids.begin(),
+      parameters.boundary.traction_ids.end());
+    const std::set<types::boundary_id> contact_ids(
+      parameters.boundary.contact_ids.begin(),
+      parameters.boundary.contact_ids.end());
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          cell_load = 0;
+          data.body_force->vector_value_list(fe_values.get_quadrature_points(),
+                                             values);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const unsigned int c = fe.system_to_component_index(i).first;
+                cell_load(i) += values[q](c) *
+                                fe_values.shape_value_component(i, q, c) *
+                                fe_values.JxW(q);
+              }
+
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                const types::boundary_id id = cell->face(f)->boundary_id();
+                const Function<dim> *traction =
+                  traction_ids.count(id) ? data.surface_traction.get() :
+                  contact_ids.count(id)  ? data.contact_traction.get() :
+                                           nullptr;
+                if (traction == nullptr)
+                  continue;
+                fe_face.reinit(cell, f);
+                traction->vector_value_list(fe_face.get_quadrature_points(),
+                                            face_values);
+                for (const unsigned int q : fe_face.quadrature_point_indices())
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      const unsigned int c =
+                        fe.system_to_component_index(i).first;
+                      cell_load(i) += face_values[q](c) *
+                                      fe_face.shape_value_component(i, q, c) *
+                                      fe_face.JxW(q);
+                    }
+              }
+          cell->get_dof_indices(dofs);
+          base_constraints.distribute_local_to_global(cell_load, dofs, load);
+        }
+    load.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::assemble_step_rhs()
+  {
+    // b = rho/k M w_{n-1} - B u_n + F_n
+    TrilinosWrappers::MPI::Vector tmp(locally_owned_dofs, mpi_communicator);
+    mass_matrix.vmult(step_rhs, old_velocity);
+    step_rhs /= time_step;
+    elastic_matrix.vmult(tmp, displacement);
+    step_rhs -= tmp;
+    step_rhs += load;
+    base_constraints.set_zero(step_rhs);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::assemble_newton_system(
+    const TrilinosWrappers::MPI::Vector &    iterate,
+    const std::vector<NodeMultipliers<dim>> &mult)
+  {
+    TimerOutput::Scope t(timer, "assembly: Newton system");
+    newton_matrix = 0;
+
+    const FiniteElement<dim> &fe = *discretization.fe;
+    FEValues<dim> fe_values(*discretization.mapping, fe,
+                            discretization.cell_quadrature(2),
+                            update_values | update_gradients |
+                              update_JxW_values);
+    const FEValuesExtractors::Vector v(0);
+    const unsigned int               n = fe.n_dofs_per_cell();
+    FullMatrix<double>               cell_matrix(n, n);
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<SymmetricTensor<2, dim>> eps(n);
+    std::vector<Tensor<1, dim>>          phi(n);
+    const double                         rho_over_k =
+      material.density() / time_step;
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          cell_matrix = 0;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  eps[i] = fe_values[v].symmetric_gradient(i, q);
+                  phi[i] = fe_values[v].value(i, q);
+                }
+              const double JxW = fe_values.JxW(q);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const SymmetricTensor<2, dim> a_i =
+                    material.viscous_stress(eps[i]);
+                  for (unsigned int j = 0; j < n; ++j)
+                    cell_matrix(i, j) +=
+                      (rho_over_k * (phi[i] * phi[j]) + a_i * eps[j]) * JxW;
+                }
+            }
+          cell->get_dof_indices(dofs);
+          newton_constraints.distribute_local_to_global(cell_matrix, dofs,
+                                                        newton_matrix);
+        }
+
+    // right-hand side: b with the linearised contact forces, condensed
+    // node by node (the contact constraints couple only a node's own dofs)
+    newton_rhs = step_rhs;
+    for (const ContactNode<dim> &node : contact_nodes)
+      if (node.locally_owned)
+        for (unsigned int c = 0; c < dim; ++c)
+          newton_rhs[node.dofs[c]] = 0;
+    newton_rhs.compress(VectorOperation::insert);
+
+    FullMatrix<double>                   node_matrix(dim, dim);
+    Vector<double>                       node_rhs(dim);
+    std::vector<types::global_dof_index> node_dofs(dim);
+    for (unsigned int k = 0; k < contact_nodes.size(); ++k)
+      if (contact_nodes[k].locally_owned)
+        {
+          const ContactNode<dim> &node = contact_nodes[k];
+          const NodeLinearization<dim> lin =
+            NodeContact::linearize(node, mult[k], *law);
+          for (unsigned int a = 0; a < dim; ++a)
+            {
+              node_dofs[a] = node.dofs[a];
+              node_rhs(a)  = step_rhs[node.dofs[a]] - lin.force[a];
+              for (unsigned int b = 0; b < dim; ++b)
+                {
+                  node_matrix(a, b) = lin.matrix[a][b];
+                  node_rhs(a) += lin.matrix[a][b] * iterate[node.dofs[b]];
+                }
+            }
+          newton_constraints.distribute_local_to_global(node_matrix, node_rhs,
+                                                        node_dofs,
+                                                        newton_matrix,
+                                                        newton_rhs);
+        }
+    newton_matrix.compress(VectorOperation::add);
+    newton_rhs.compress(VectorOperation::add);
+  }
+
+#define HEMICONTACT_INSTANTIATE(dim)                                           \
+  template void ContactProblem<dim>::assemble_constant_matrices();            \
+  template void ContactProblem<dim>::assemble_load(const double);             \
+  template void ContactProblem<dim>::assemble_step_rhs();                     \
+  template void ContactProblem<dim>::assemble_newton_system(                  \
+    const TrilinosWrappers::MPI::Vector &,                                     \
+    const std::vector<NodeMultipliers<dim>> &);
+
+  HEMICONTACT_INSTANTIATE(2)
+  HEMICONTACT_INSTANTIATE(3)
+#undef HEMICONTACT_INSTANTIATE
+} // namespace hemicontact

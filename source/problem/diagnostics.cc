@@ -1,0 +1,163 @@
+#include <deal.II/base/mpi.h>
+
+#include <hemicontact/contact_problem.h>
+#include <hemicontact/input_error.h>
+#include <hemicontact/tresca_friction.h>
+
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+namespace hemicontact
+{
+  template <int dim>
+  TrilinosWrappers::MPI::Vector
+  ContactProblem<dim>::without_constrained(
+    const TrilinosWrappers::MPI::Vector &v) const
+  {
+    TrilinosWrappers::MPI::Vector result(v);
+    base_constraints.set_zero(result);
+    return result;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::update_energy_balance(const bool initial)
+  {
+    const double                        k = time_step;
+    const TrilinosWrappers::MPI::Vector w = without_constrained(velocity);
+    TrilinosWrappers::MPI::Vector       u_next(displacement);
+    u_next.add(k, velocity);
+    u_next = without_constrained(u_next);
+
+    TrilinosWrappers::MPI::Vector tmp(locally_owned_dofs, mpi_communicator);
+    mass_matrix.vmult(tmp, w);
+    const double w_M_w = w * tmp;
+    elastic_matrix.vmult(tmp, u_next);
+    energy.kinetic = 0.5 * w_M_w;
+    energy.elastic = 0.5 * (u_next * tmp);
+    if (initial)
+      {
+        energy.initial_energy = energy.total_energy();
+        return;
+      }
+
+    step_matrix.vmult(tmp, w);
+    energy.viscous_dissipation += k * (w * tmp) - w_M_w; // k a_A(w, w)
+
+    TrilinosWrappers::MPI::Vector dw(velocity);
+    dw -= old_velocity;
+    dw = without_constrained(dw);
+    mass_matrix.vmult(tmp, dw);
+    const double dw_M_dw = dw * tmp;
+    elastic_matrix.vmult(tmp, w);
+    energy.numerical_dissipation += 0.5 * dw_M_dw - 0.5 * k * k * (w * tmp);
+    energy.external_work += k * (load * w);
+
+    double friction = 0, damping = 0;
+    for (const ContactNode<dim> &node : contact_nodes)
+      if (node.locally_owned)
+        {
+          Tensor<1, dim> v;
+          for (unsigned int c = 0; c < dim; ++c)
+            v[c] = velocity[node.dofs[c]];
+          const double         wn = v * node.normal;
+          const Tensor<1, dim> wt = v - wn * node.normal;
+          friction += node.mass * TrescaFriction::potential(node.friction_bound, wt);
+          damping += node.mass * law->subgradient(wn) * wn;
+        }
+    energy.friction_dissipation +=
+      k * Utilities::MPI::sum(friction, mpi_communicator);
+    energy.damping_dissipation +=
+      k * Utilities::MPI::sum(damping, mpi_communicator);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_convexity()
+  {
+    const double alpha = law->relaxed_monotonicity_constant();
+    if (alpha == 0)
+      {
+        convexity_bound = std::numeric_limits<double>::infinity();
+        return;
+      }
+    TimerOutput::Scope t(timer, "convexity check");
+
+    // power iteration for the largest mu of N x = mu K0 x, with the normal
+    // boundary mass N = sum_i m_i nu_i nu_i^T; J_n is strongly convex iff
+    // alpha < 1/mu_max
+    TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator),
+      y(x), z(x), tmp(x);
+    const auto apply_n = [&](const TrilinosWrappers::MPI::Vector &in,
+                             TrilinosWrappers::MPI::Vector &      out) {
+      out = 0;
+      for (const ContactNode<dim> &node : contact_nodes)
+        if (node.locally_owned)
+          {
+            double vn = 0;
+            for (unsigned int c = 0; c < dim; ++c)
+              vn += in[node.dofs[c]] * node.normal[c];
+            for (unsigned int c = 0; c < dim; ++c)
+              out[node.dofs[c]] = node.mass * vn * node.normal[c];
+          }
+      out.compress(VectorOperation::insert);
+    };
+    for (const ContactNode<dim> &node : contact_nodes)
+      if (node.locally_owned)
+        for (unsigned int c = 0; c < dim; ++c)
+          x[node.dofs[c]] = node.normal[c];
+    x.compress(VectorOperation::insert);
+
+    double mu = 0;
+    for (unsigned int it = 0; it < 30; ++it)
+      {
+        apply_n(x, y);
+        z = 0;
+        linear_solver.solve(step_matrix, z, y);
+        apply_n(z, tmp);
+        const double znz = z * tmp;
+        step_matrix.vmult(tmp, z);
+        const double zkz    = z * tmp;
+        const double mu_new = znz / zkz;
+        x                   = z;
+        x /= x.l2_norm();
+        const bool settled = std::abs(mu_new - mu) <= 1e-4 * mu_new;
+        mu                 = mu_new;
+        if (settled)
+          break;
+      }
+    convexity_bound = 1. / mu;
+
+    if (alpha >= convexity_bound)
+      {
+        std::ostringstream message;
+        message << "the step energy J_n is not convex for this time step: the "
+                   "normal law's relaxed-monotonicity constant alpha = "
+                << alpha
+                << " is not below the estimated smallest eigenvalue "
+                << convexity_bound
+                << " of (rho/k M + A) against the normal boundary mass "
+                   "(design.md section 2, condition (4.26)). Newton may fail "
+                   "or the step may have several solutions; reduce the time "
+                   "step k = "
+                << time_step << " or the law's nonmonotonicity.";
+        if (parameters.nonlinear_solver.strict_convexity_check)
+          throw InputError("nonlinear solver: " + message.str());
+        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+          std::cerr << "hemicontact: warning: " << message.str() << std::endl;
+      }
+  }
+
+#define HEMICONTACT_INSTANTIATE(dim)                                           \
+  template TrilinosWrappers::MPI::Vector                                       \
+  ContactProblem<dim>::without_constrained(                                    \
+    const TrilinosWrappers::MPI::Vector &) const;                              \
+  template void ContactProblem<dim>::update_energy_balance(const bool);       \
+  template void ContactProblem<dim>::check_convexity();
+
+  HEMICONTACT_INSTANTIATE(2)
+  HEMICONTACT_INSTANTIATE(3)
+#undef HEMICONTACT_INSTANTIATE
+} // namespace hemicontact

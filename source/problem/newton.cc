@@ -1,0 +1,312 @@
+#include <deal.II/base/mpi.h>
+
+#include <hemicontact/contact_problem.h>
+#include <hemicontact/input_error.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace hemicontact
+{
+  namespace
+  {
+    std::string
+    format_number(const double x)
+    {
+      std::ostringstream s;
+      s.precision(3);
+      s << std::scientific << x;
+      return s.str();
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ContactProblem<dim>::compute_residual(const TrilinosWrappers::MPI::Vector &w,
+                                        TrilinosWrappers::MPI::Vector &residual) const
+  {
+    // R = K0 w - b; K0 and b are condensed with the base constraints, so R
+    // vanishes on constrained rows once constrained entries of w are zero
+    step_matrix.vmult(residual, without_constrained(w));
+    residual -= step_rhs;
+  }
+
+  template <int dim>
+  std::vector<NodeMultipliers<dim>>
+  ContactProblem<dim>::node_multipliers(
+    const TrilinosWrappers::MPI::Vector &w_ghosted,
+    const TrilinosWrappers::MPI::Vector &residual_ghosted) const
+  {
+    std::vector<NodeMultipliers<dim>> result(contact_nodes.size());
+    for (unsigned int k = 0; k < contact_nodes.size(); ++k)
+      {
+        Tensor<1, dim> w, force;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            w[c]     = w_ghosted[contact_nodes[k].dofs[c]];
+            force[c] = -residual_ghosted[contact_nodes[k].dofs[c]];
+          }
+        result[k] = NodeContact::multipliers(contact_nodes[k], w, force, *law);
+      }
+    return result;
+  }
+
+  template <int dim>
+  double
+  ContactProblem<dim>::nonsmooth_residual(
+    const TrilinosWrappers::MPI::Vector &    residual,
+    const std::vector<NodeMultipliers<dim>> &mult) const
+  {
+    // equilibrium on every free dof that is not at a contact node ...
+    TrilinosWrappers::MPI::Vector free_part(residual);
+    for (const ContactNode<dim> &node : contact_nodes)
+      if (node.locally_owned)
+        for (unsigned int c = 0; c < dim; ++c)
+          free_part[node.dofs[c]] = 0;
+    free_part.compress(VectorOperation::insert);
+    double sum = free_part.norm_sqr();
+
+    // ... plus the node-wise complementarity functions, as nodal forces
+    double local = 0;
+    for (unsigned int k = 0; k < contact_nodes.size(); ++k)
+      if (contact_nodes[k].locally_owned)
+        {
+          const ContactNode<dim> &node = contact_nodes[k];
+          const double cn =
+            NodeContact::normal_complementarity(node, mult[k], *law);
+          const Tensor<1, dim> ct =
+            NodeContact::tangential_complementarity(node, mult[k]);
+          local += node.mass * node.mass * (cn * cn + ct.norm_square());
+        }
+    sum += Utilities::MPI::sum(local, mpi_communicator);
+    return std::sqrt(sum);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::build_newton_constraints()
+  {
+    newton_constraints.clear();
+    newton_constraints.reinit(locally_relevant_dofs);
+    for (const ContactNode<dim> &node : contact_nodes)
+      for (const auto &line :
+           NodeContact::eliminate(NodeContact::constrained_directions(node)))
+        {
+          newton_constraints.add_line(node.dofs[line.first]);
+          for (const auto &entry : line.second)
+            newton_constraints.add_entry(node.dofs[line.first],
+                                         node.dofs[entry.first],
+                                         entry.second);
+        }
+    newton_constraints.merge(
+      base_constraints,
+      AffineConstraints<double>::MergeConflictBehavior::no_conflicts_allowed);
+    newton_constraints.close();
+  }
+
+  template <int dim>
+  double
+  ContactProblem<dim>::nodal_energy(const TrilinosWrappers::MPI::Vector &w) const
+  {
+    double local = 0;
+    for (const ContactNode<dim> &node : contact_nodes)
+      if (node.locally_owned)
+        {
+          Tensor<1, dim> v;
+          for (unsigned int c = 0; c < dim; ++c)
+            v[c] = w[node.dofs[c]];
+          local += NodeContact::energy(node, v, *law);
+        }
+    return Utilities::MPI::sum(local, mpi_communicator);
+  }
+
+  template <int dim>
+  double
+  ContactProblem<dim>::line_search(TrilinosWrappers::MPI::Vector &      w,
+                                   const TrilinosWrappers::MPI::Vector &trial,
+                                   const TrilinosWrappers::MPI::Vector &residual,
+                                   unsigned int &n_reductions)
+  {
+    TrilinosWrappers::MPI::Vector direction(trial);
+    direction -= w;
+    if (!parameters.nonlinear_solver.line_search)
+      {
+        w = trial;
+        return 1.;
+      }
+
+    // J_n(w + theta d) - J_n(w) = theta d.R + theta^2/2 d.K0 d + (nodal part)
+    const TrilinosWrappers::MPI::Vector d = without_constrained(direction);
+    TrilinosWrappers::MPI::Vector        k_d(d);
+    step_matrix.vmult(k_d, d);
+    const double slope     = d * residual;
+    const double curvature = d * k_d;
+    const double nodal_0   = nodal_energy(w);
+    const double scale =
+      std::abs(slope) + std::abs(curvature) + std::abs(nodal_0) + 1e-300;
+
+    TrilinosWrappers::MPI::Vector candidate(w);
+    double                        theta = 1;
+    for (; theta >= parameters.nonlinear_solver.min_step_length; theta /= 2)
+      {
+        candidate = w;
+        candidate.add(theta, direction);
+        const double change = theta * slope + 0.5 * theta * theta * curvature +
+                              nodal_energy(candidate) - nodal_0;
+        if (change <= 1e-12 * scale)
+          break;
+        ++n_reductions;
+      }
+    if (theta < parameters.nonlinear_solver.min_step_length)
+      theta = 1; // no decrease found: take the full active-set step
+    w.add(theta, direction);
+    return theta;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::count_branches(StepStatistics &stats) const
+  {
+    unsigned int counts[5] = {0, 0, 0, 0, 0};
+    for (const ContactNode<dim> &node : contact_nodes)
+      if (node.locally_owned)
+        {
+          ++counts[static_cast<unsigned int>(node.normal_branch)];
+          ++counts[3 + static_cast<unsigned int>(node.tangential_branch)];
+        }
+    for (unsigned int &c : counts)
+      c = Utilities::MPI::sum(c, mpi_communicator);
+    stats.n_separating   = counts[0];
+    stats.n_normal_stick = counts[1];
+    stats.n_damped       = counts[2];
+    stats.n_stick        = counts[3];
+    stats.n_slip         = counts[4];
+  }
+
+  template <int dim>
+  StepStatistics
+  ContactProblem<dim>::solve_step()
+  {
+    StepStatistics stats;
+    const NonlinearSolverParameters &settings = parameters.nonlinear_solver;
+
+    TrilinosWrappers::MPI::Vector w(velocity), residual(locally_owned_dofs,
+                                                        mpi_communicator);
+    TrilinosWrappers::MPI::Vector w_ghosted(locally_owned_dofs,
+                                            locally_relevant_dofs,
+                                            mpi_communicator);
+    TrilinosWrappers::MPI::Vector residual_ghosted(w_ghosted);
+    TrilinosWrappers::MPI::Vector trial(w);
+
+    const double load_norm = step_rhs.l2_norm();
+    const double target =
+      settings.tolerance * load_norm + settings.absolute_tolerance;
+
+    for (unsigned int iteration = 0;; ++iteration)
+      {
+        {
+          TimerOutput::Scope t(timer, "active set update");
+          compute_residual(w, residual);
+          w_ghosted        = w;
+          residual_ghosted = residual;
+        }
+        const std::vector<NodeMultipliers<dim>> mult =
+          node_multipliers(w_ghosted, residual_ghosted);
+
+        unsigned int n_changed = 0;
+        for (unsigned int k = 0; k < contact_nodes.size(); ++k)
+          {
+            ContactNode<dim> &node = contact_nodes[k];
+            const NormalBranch nb =
+              NodeContact::normal_branch(node, mult[k], *law);
+            const TangentialBranch tb =
+              NodeContact::tangential_branch(node, mult[k]);
+            if (node.locally_owned &&
+                (nb != node.normal_branch || tb != node.tangential_branch))
+              ++n_changed;
+            node.normal_branch     = nb;
+            node.tangential_branch = tb;
+          }
+        n_changed = Utilities::MPI::sum(n_changed, mpi_communicator);
+
+        const double res = nonsmooth_residual(residual, mult);
+        stats.residual   = res / std::max(load_norm, 1e-300);
+        if (!std::isfinite(res))
+          throw SolverFailure("the nonsmooth residual is not a finite number "
+                              "(NaN or Inf) in Newton iteration " +
+                              std::to_string(iteration) + ".");
+
+        // converged: no branch changed and the real residual is small; a
+        // residual far below the tolerance is accepted even if a node at a
+        // branch boundary flipped its label
+        if ((n_changed == 0 && res <= target) || res <= 1e-2 * target)
+          {
+            velocity = w;
+            for (unsigned int k = 0; k < contact_nodes.size(); ++k)
+              if (contact_nodes[k].locally_owned)
+                for (unsigned int c = 0; c < dim; ++c)
+                  contact_traction[contact_nodes[k].dofs[c]] =
+                    -residual[contact_nodes[k].dofs[c]] /
+                    contact_nodes[k].mass;
+            contact_traction.compress(VectorOperation::insert);
+            count_branches(stats);
+            return stats;
+          }
+        if (iteration == settings.max_iterations)
+          throw SolverFailure(
+            "Newton did not converge in " +
+            std::to_string(settings.max_iterations) +
+            " iterations: relative nonsmooth residual " +
+            format_number(stats.residual) + " (tolerance " +
+            format_number(settings.tolerance) + "), " +
+            std::to_string(n_changed) +
+            " nodes still changing branch. Reduce the time step, raise "
+            "'nonlinear solver/max iterations', or check the convexity "
+            "warning at start-up.");
+
+        {
+          TimerOutput::Scope t(timer, "active set update");
+          build_newton_constraints();
+        }
+        assemble_newton_system(w_ghosted, mult);
+        {
+          TimerOutput::Scope t(timer, "linear solve");
+          trial = w;
+          newton_constraints.set_zero(trial);
+          stats.linear_iterations +=
+            linear_solver.solve(newton_matrix, trial, newton_rhs);
+          newton_constraints.distribute(trial);
+        }
+        {
+          TimerOutput::Scope t(timer, "line search");
+          line_search(w, trial, residual, stats.n_damped_steps);
+        }
+        ++stats.newton_iterations;
+      }
+  }
+
+#define HEMICONTACT_INSTANTIATE(dim)                                           \
+  template void ContactProblem<dim>::compute_residual(                        \
+    const TrilinosWrappers::MPI::Vector &, TrilinosWrappers::MPI::Vector &)    \
+    const;                                                                     \
+  template std::vector<NodeMultipliers<dim>>                                   \
+  ContactProblem<dim>::node_multipliers(const TrilinosWrappers::MPI::Vector &, \
+                                        const TrilinosWrappers::MPI::Vector &) \
+    const;                                                                     \
+  template double ContactProblem<dim>::nonsmooth_residual(                    \
+    const TrilinosWrappers::MPI::Vector &,                                     \
+    const std::vector<NodeMultipliers<dim>> &) const;                          \
+  template void   ContactProblem<dim>::build_newton_constraints();            \
+  template double ContactProblem<dim>::nodal_energy(                          \
+    const TrilinosWrappers::MPI::Vector &) const;                              \
+  template double ContactProblem<dim>::line_search(                           \
+    TrilinosWrappers::MPI::Vector &, const TrilinosWrappers::MPI::Vector &,    \
+    const TrilinosWrappers::MPI::Vector &, unsigned int &);                    \
+  template void           ContactProblem<dim>::count_branches(StepStatistics &) \
+    const;                                                                     \
+  template StepStatistics ContactProblem<dim>::solve_step();
+
+  HEMICONTACT_INSTANTIATE(2)
+  HEMICONTACT_INSTANTIATE(3)
+#undef HEMICONTACT_INSTANTIATE
+} // namespace hemicontact

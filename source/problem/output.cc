@@ -1,0 +1,318 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/vector_tools_evaluate.h>
+
+#include <hemicontact/contact_problem.h>
+#include <hemicontact/input_error.h>
+
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace hemicontact
+{
+  namespace
+  {
+    /** Stress components (cell averages) and von Mises, for DataOut. */
+    template <int dim>
+    std::vector<Vector<float>>
+    cell_stresses(const DoFHandler<dim> &dof_handler, const Mapping<dim> &mapping,
+                  const Quadrature<dim> &                quadrature,
+                  const KelvinVoigtMaterial<dim> &       material,
+                  const TrilinosWrappers::MPI::Vector &  w,
+                  const TrilinosWrappers::MPI::Vector &  u)
+    {
+      const unsigned int n_components = dim * (dim + 1) / 2 + 1;
+      std::vector<Vector<float>> result(
+        n_components,
+        Vector<float>(dof_handler.get_triangulation().n_active_cells()));
+      FEValues<dim> fe_values(mapping, dof_handler.get_fe(), quadrature,
+                              update_gradients | update_JxW_values);
+      const FEValuesExtractors::Vector     v(0);
+      std::vector<SymmetricTensor<2, dim>> eps_w(quadrature.size()),
+        eps_u(quadrature.size());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            fe_values[v].get_function_symmetric_gradients(w, eps_w);
+            fe_values[v].get_function_symmetric_gradients(u, eps_u);
+            SymmetricTensor<2, dim> sigma;
+            double                  volume = 0;
+            for (const unsigned int q : fe_values.quadrature_point_indices())
+              {
+                sigma += material.stress(eps_w[q], eps_u[q]) * fe_values.JxW(q);
+                volume += fe_values.JxW(q);
+              }
+            sigma /= volume;
+            const unsigned int index = cell->active_cell_index();
+            unsigned int       c     = 0;
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = i; j < dim; ++j)
+                result[c++][index] = sigma[i][j];
+            result[c][index] = KelvinVoigtMaterial<dim>::von_mises(sigma);
+          }
+      return result;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ContactProblem<dim>::open_tables()
+  {
+    const std::string &dir  = parameters.output.directory;
+    std::string        error;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        std::error_code ec;
+        std::filesystem::create_directories(dir, ec);
+        if (ec)
+          error = "cannot create the output directory '" + dir +
+                  "': " + ec.message() + ".";
+        else
+          {
+            steps_file.open(dir + "/steps.csv");
+            if (!steps_file)
+              error = "cannot write to the output directory '" + dir +
+                      "' (steps.csv could not be opened).";
+          }
+      }
+    error = Utilities::MPI::broadcast(mpi_communicator, error, 0);
+    require(error.empty(), "output: " + error);
+
+    if (steps_file.is_open())
+      steps_file
+        << "step,time,n_cells,n_dofs,newton_iterations,linear_iterations,"
+           "n_separating,n_normal_stick,n_damped,n_stick,n_slip,residual,"
+           "kinetic_energy,elastic_energy,viscous_dissipation,"
+           "friction_dissipation,normal_damping_dissipation,external_work,"
+           "numerical_dissipation,energy_defect,relative_energy_defect,"
+           "wall_seconds\n";
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::setup_probes()
+  {
+    probe_points.clear();
+    for (const std::string &text :
+         Utilities::split_string_list(parameters.output.probe_points, ';'))
+      {
+        std::vector<double> coordinates;
+        try
+          {
+            coordinates =
+              Utilities::string_to_double(Utilities::split_string_list(text, ','));
+          }
+        catch (...)
+          {
+            throw InputError("output: 'probe points' entry '" + text +
+                             "' is not a list of numbers.");
+          }
+        require(coordinates.size() == dim,
+                "output: 'probe points' entry '" + text + "' needs " +
+                  std::to_string(dim) + " coordinates.");
+        Point<dim> p;
+        for (unsigned int d = 0; d < dim; ++d)
+          p[d] = coordinates[d];
+        probe_points.push_back(p);
+      }
+    if (probe_points.empty())
+      return;
+    probe_cache.reinit(probe_points, *discretization.triangulation,
+                       *discretization.mapping);
+    require(probe_cache.all_points_found(),
+            "output: a probe point lies outside the mesh.");
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        probes_file.open(parameters.output.directory + "/probes.csv");
+        probes_file << "step,time,point";
+        const char *xyz[] = {"x", "y", "z"};
+        for (unsigned int d = 0; d < dim; ++d)
+          probes_file << "," << xyz[d];
+        for (unsigned int d = 0; d < dim; ++d)
+          probes_file << ",w_" << xyz[d];
+        for (unsigned int d = 0; d < dim; ++d)
+          probes_file << ",u_" << xyz[d];
+        probes_file << "\n";
+      }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::write_probes()
+  {
+    if (probe_points.empty())
+      return;
+    TrilinosWrappers::MPI::Vector w(locally_owned_dofs, locally_relevant_dofs,
+                                   mpi_communicator);
+    TrilinosWrappers::MPI::Vector u(w);
+    w = velocity;
+    u = displacement;
+    const auto w_values =
+      VectorTools::point_values<dim>(probe_cache, dof_handler, w);
+    const auto u_values =
+      VectorTools::point_values<dim>(probe_cache, dof_handler, u);
+    if (probes_file.is_open())
+      {
+        probes_file << std::setprecision(10);
+        for (unsigned int p = 0; p < probe_points.size(); ++p)
+          {
+            probes_file << step_number << "," << get_time() << "," << p;
+            for (unsigned int d = 0; d < dim; ++d)
+              probes_file << "," << probe_points[p][d];
+            for (unsigned int d = 0; d < dim; ++d)
+              probes_file << "," << w_values[p][d];
+            for (unsigned int d = 0; d < dim; ++d)
+              probes_file << "," << u_values[p][d];
+            probes_file << "\n";
+          }
+        probes_file.flush();
+      }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::write_vtu()
+  {
+    TimerOutput::Scope t(timer, "output");
+    TrilinosWrappers::MPI::Vector w(locally_owned_dofs, locally_relevant_dofs,
+                                   mpi_communicator);
+    TrilinosWrappers::MPI::Vector u(w), traction(w), branch(w);
+    w        = velocity;
+    u        = displacement;
+    traction = contact_traction;
+
+    TrilinosWrappers::MPI::Vector branch_owned(locally_owned_dofs,
+                                               mpi_communicator);
+    for (const auto i : locally_owned_dofs)
+      branch_owned[i] = -1;
+    for (const ContactNode<dim> &node : contact_nodes)
+      if (node.locally_owned)
+        {
+          branch_owned[node.dofs[0]] = static_cast<int>(node.normal_branch);
+          branch_owned[node.dofs[1]] = static_cast<int>(node.tangential_branch);
+          if (dim == 3)
+            branch_owned[node.dofs[dim - 1]] = 1;
+        }
+    branch_owned.compress(VectorOperation::insert);
+    branch = branch_owned;
+
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      vector_field(dim, DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(w, std::vector<std::string>(dim, "velocity"),
+                             DataOut<dim>::type_dof_data, vector_field);
+    data_out.add_data_vector(u, std::vector<std::string>(dim, "displacement"),
+                             DataOut<dim>::type_dof_data, vector_field);
+    data_out.add_data_vector(traction,
+                             std::vector<std::string>(dim, "contact_traction"),
+                             DataOut<dim>::type_dof_data, vector_field);
+    std::vector<std::string> branch_names = {"normal_branch",
+                                             "tangential_branch"};
+    if (dim == 3)
+      branch_names.push_back("contact_node");
+    data_out.add_data_vector(
+      branch, branch_names, DataOut<dim>::type_dof_data,
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+        dim, DataComponentInterpretation::component_is_scalar));
+
+    const std::vector<Vector<float>> stresses =
+      cell_stresses(dof_handler, *discretization.mapping,
+                    discretization.cell_quadrature(2), material, w, u);
+    const char *xyz[] = {"x", "y", "z"};
+    unsigned int c     = 0;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        data_out.add_data_vector(stresses[c++],
+                                 std::string("stress_") + xyz[i] + xyz[j],
+                                 DataOut<dim>::type_cell_data);
+    data_out.add_data_vector(stresses[c], "von_mises",
+                             DataOut<dim>::type_cell_data);
+
+    Vector<float> subdomain(discretization.triangulation->n_active_cells());
+    for (auto &s : subdomain)
+      s = discretization.triangulation->locally_owned_subdomain();
+    data_out.add_data_vector(subdomain, "subdomain",
+                             DataOut<dim>::type_cell_data);
+
+    data_out.build_patches(*discretization.mapping);
+    const std::string pvtu = data_out.write_vtu_with_pvtu_record(
+      parameters.output.directory + "/", "solution", step_number,
+      mpi_communicator, 5);
+    pvd_records.emplace_back(get_time(), pvtu);
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        std::ofstream pvd(parameters.output.directory + "/solution.pvd");
+        DataOutBase::write_pvd_record(pvd, pvd_records);
+      }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::write_step_row(const StepStatistics &s)
+  {
+    if (!steps_file.is_open())
+      return;
+    const EnergyBalance &e = energy;
+    steps_file << std::setprecision(12) << s.step << "," << s.time << ","
+               << discretization.triangulation->n_global_active_cells() << ","
+               << dof_handler.n_dofs() << "," << s.newton_iterations << ","
+               << s.linear_iterations << "," << s.n_separating << ","
+               << s.n_normal_stick << "," << s.n_damped << "," << s.n_stick
+               << "," << s.n_slip << "," << s.residual << "," << e.kinetic
+               << "," << e.elastic << "," << e.viscous_dissipation << ","
+               << e.friction_dissipation << "," << e.damping_dissipation << ","
+               << e.external_work << "," << e.numerical_dissipation << ","
+               << e.defect() << "," << e.relative_defect() << ","
+               << s.wall_seconds << "\n";
+    steps_file.flush();
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::print_step(const StepStatistics &s) const
+  {
+    std::ostringstream line;
+    if (parameters.output.terminal == "test")
+      {
+        line << "step " << s.step << ": newton " << s.newton_iterations
+             << ", normal sep/stick/damped " << s.n_separating << "/"
+             << s.n_normal_stick << "/" << s.n_damped << ", tangential "
+             << "stick/slip " << s.n_stick << "/" << s.n_slip
+             << std::setprecision(5) << std::scientific << ", kinetic "
+             << energy.kinetic << ", elastic " << energy.elastic
+             << ", energy defect < 1e-7: "
+             << (energy.relative_defect() < 1e-7 ? "yes" : "no");
+      }
+    else
+      {
+        line << "step " << std::setw(5) << s.step << "  t = " << std::fixed
+             << std::setprecision(4) << s.time << "  newton " << std::setw(2)
+             << s.newton_iterations << "  krylov " << std::setw(4)
+             << s.linear_iterations << "  sep/stick/damped " << s.n_separating
+             << "/" << s.n_normal_stick << "/" << s.n_damped
+             << "  stick/slip " << s.n_stick << "/" << s.n_slip
+             << std::scientific << std::setprecision(2) << "  residual "
+             << s.residual << "  energy " << energy.total_energy()
+             << "  defect " << energy.relative_defect();
+      }
+    if (parameters.output.terminal != "quiet")
+      pcout << line.str() << std::endl;
+  }
+
+#define HEMICONTACT_INSTANTIATE(dim)                                           \
+  template void ContactProblem<dim>::open_tables();                           \
+  template void ContactProblem<dim>::setup_probes();                          \
+  template void ContactProblem<dim>::write_probes();                          \
+  template void ContactProblem<dim>::write_vtu();                             \
+  template void ContactProblem<dim>::write_step_row(const StepStatistics &);  \
+  template void ContactProblem<dim>::print_step(const StepStatistics &) const;
+
+  HEMICONTACT_INSTANTIATE(2)
+  HEMICONTACT_INSTANTIATE(3)
+#undef HEMICONTACT_INSTANTIATE
+} // namespace hemicontact

@@ -1,0 +1,125 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <hemicontact/contact_problem.h>
+#include <hemicontact/input_error.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+
+namespace hemicontact
+{
+  template <int dim>
+  StepStatistics
+  ContactProblem<dim>::advance()
+  {
+    Timer wall;
+    ++step_number;
+    const double time = get_time();
+
+    // u_n = u_{n-1} + k w_{n-1} (left-point rule), then solve for w_n
+    old_velocity = velocity;
+    displacement.add(time_step, old_velocity);
+    assemble_load(time);
+    assemble_step_rhs();
+
+    StepStatistics stats;
+    try
+      {
+        stats = solve_step();
+      }
+    catch (const SolverFailure &failure)
+      {
+        // restore the last converged state (w_{n-1}, u_{n-1})
+        displacement.add(-time_step, old_velocity);
+        velocity = old_velocity;
+        --step_number;
+        std::ostringstream message;
+        message << "step " << step_number + 1 << " (t = " << time
+                << ") failed: " << failure.what();
+        throw SolverFailure(message.str());
+      }
+    update_energy_balance(/*initial=*/false);
+    stats.step         = step_number;
+    stats.time         = time;
+    stats.wall_seconds = wall.wall_time();
+    return stats;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::run()
+  {
+    open_tables();
+    setup();
+    setup_probes();
+
+    const unsigned int n_nodes = Utilities::MPI::sum(
+      static_cast<unsigned int>(std::count_if(
+        contact_nodes.begin(), contact_nodes.end(),
+        [](const ContactNode<dim> &n) { return n.locally_owned; })),
+      mpi_communicator);
+    pcout << "hemicontact: " << dim << "D, "
+          << discretization.triangulation->n_global_active_cells()
+          << " cells, " << dof_handler.n_dofs() << " dofs, " << n_nodes
+          << " contact nodes, " << n_steps << " steps of k = " << time_step
+          << ", normal law '" << law->name() << "'";
+    if (parameters.output.terminal != "test")
+      pcout << ", " << Utilities::MPI::n_mpi_processes(mpi_communicator)
+            << " MPI rank(s)";
+    pcout << std::endl;
+    if (law->relaxed_monotonicity_constant() > 0)
+      pcout << "convexity: alpha = " << law->relaxed_monotonicity_constant()
+            << ", bound (estimated) = " << std::setprecision(3)
+            << convexity_bound << " -> "
+            << (law->relaxed_monotonicity_constant() < convexity_bound ?
+                  "each step is strongly convex" :
+                  "NOT guaranteed convex")
+            << std::endl;
+
+    const unsigned int interval = parameters.output.vtu_interval;
+    if (interval > 0)
+      write_vtu();
+    write_probes();
+
+    unsigned int total_newton = 0, max_newton = 0;
+    while (!finished())
+      {
+        StepStatistics stats;
+        try
+          {
+            stats = advance();
+          }
+        catch (const SolverFailure &)
+          {
+            if (interval > 0)
+              write_vtu();
+            throw;
+          }
+        total_newton += stats.newton_iterations;
+        max_newton = std::max(max_newton, stats.newton_iterations);
+        write_step_row(stats);
+        write_probes();
+        if (interval > 0 && (step_number % interval == 0 || finished()))
+          write_vtu();
+        print_step(stats);
+      }
+
+    pcout << "done: " << n_steps << " steps, Newton iterations per step mean "
+          << std::fixed << std::setprecision(2)
+          << double(total_newton) / n_steps << " max " << max_newton
+          << ", energy defect < 1e-7 relative: "
+          << (energy.relative_defect() < 1e-7 ? "yes" : "no") << std::endl;
+    if (parameters.output.timing_summary && parameters.output.terminal != "test")
+      timer.print_wall_time_statistics(mpi_communicator);
+  }
+
+#define HEMICONTACT_INSTANTIATE(dim)                                           \
+  template StepStatistics ContactProblem<dim>::advance();                     \
+  template void           ContactProblem<dim>::run();
+
+  HEMICONTACT_INSTANTIATE(2)
+  HEMICONTACT_INSTANTIATE(3)
+#undef HEMICONTACT_INSTANTIATE
+} // namespace hemicontact

@@ -1,0 +1,273 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <hemicontact/contact_problem.h>
+#include <hemicontact/input_error.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace hemicontact
+{
+  template <int dim>
+  ContactProblem<dim>::ContactProblem(const Parameters &         parameters,
+                                      std::unique_ptr<NormalLaw> law,
+                                      MPI_Comm                   comm)
+    : ContactProblem(parameters, std::move(law),
+                     make_problem_data<dim>(parameters.data), comm)
+  {}
+
+  template <int dim>
+  ContactProblem<dim>::ContactProblem(const Parameters &         parameters,
+                                      std::unique_ptr<NormalLaw> law,
+                                      ProblemData<dim>           data,
+                                      MPI_Comm                   comm)
+    : mpi_communicator(comm)
+    , parameters(parameters)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0 &&
+                         parameters.output.terminal != "quiet")
+    , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , material(parameters.material)
+    , law(std::move(law))
+    , data(std::move(data))
+    , discretization(parameters.geometry, comm)
+    , dof_handler(*discretization.triangulation)
+    , linear_solver(parameters.linear_solver, comm)
+  {
+    AssertThrow(dim == parameters.dimension,
+                ExcMessage("ContactProblem<dim> built for another dimension."));
+    n_steps = std::max<unsigned int>(
+      1, std::lround(parameters.time.end_time / parameters.time.time_step));
+    time_step = parameters.time.end_time / n_steps;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::setup()
+  {
+    TimerOutput::Scope t(timer, "setup");
+    make_mesh();
+    setup_dofs();
+    assemble_constant_matrices();
+    setup_contact_nodes();
+    linear_solver.set_rigid_body_modes(dof_handler, *discretization.mapping);
+    initialize_state();
+    check_convexity();
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::make_mesh()
+  {
+    discretization.make_mesh(parameters.geometry);
+    discretization.check_boundary_ids(parameters.boundary);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::setup_dofs()
+  {
+    dof_handler.distribute_dofs(*discretization.fe);
+    locally_owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+
+    setup_base_constraints();
+
+    TrilinosWrappers::SparsityPattern sparsity(locally_owned_dofs,
+                                               locally_owned_dofs,
+                                               locally_relevant_dofs,
+                                               mpi_communicator);
+    DoFTools::make_sparsity_pattern(dof_handler, sparsity, base_constraints,
+                                    /*keep_constrained_dofs=*/true,
+                                    Utilities::MPI::this_mpi_process(
+                                      mpi_communicator));
+    sparsity.compress();
+    for (TrilinosWrappers::SparseMatrix *m :
+         {&mass_matrix, &step_matrix, &elastic_matrix, &newton_matrix})
+      m->reinit(sparsity);
+
+    for (TrilinosWrappers::MPI::Vector *v :
+         {&velocity, &old_velocity, &displacement, &load, &step_rhs,
+          &newton_rhs, &contact_traction})
+      v->reinit(locally_owned_dofs, mpi_communicator);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::setup_base_constraints()
+  {
+    base_constraints.clear();
+    base_constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, base_constraints);
+    const Functions::ZeroFunction<dim> zero(dim);
+    std::map<types::boundary_id, const Function<dim> *> clamped;
+    for (const unsigned int id : parameters.boundary.clamped_ids)
+      clamped[id] = &zero;
+    VectorTools::interpolate_boundary_values(*discretization.mapping,
+                                             dof_handler, clamped,
+                                             base_constraints);
+    base_constraints.close();
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::setup_contact_nodes()
+  {
+    const std::set<types::boundary_id> contact_ids(
+      parameters.boundary.contact_ids.begin(),
+      parameters.boundary.contact_ids.end());
+
+    // lumped boundary mass m_j = int_{Gamma_3} phi_j and the nodal normal
+    // n_j = int_{Gamma_3} phi_j nu_{c(j)}, condensed onto the free nodes
+    TrilinosWrappers::MPI::Vector mass(locally_owned_dofs, mpi_communicator);
+    TrilinosWrappers::MPI::Vector normal(locally_owned_dofs, mpi_communicator);
+    const FiniteElement<dim> &fe = *discretization.fe;
+    FEFaceValues<dim> fe_face(*discretization.mapping, fe,
+                              discretization.face_quadrature(2),
+                              update_values | update_normal_vectors |
+                                update_JxW_values);
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    Vector<double>     local_mass(dofs_per_cell), local_normal(dofs_per_cell);
+    std::vector<types::global_dof_index> dofs(dofs_per_cell);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              contact_ids.count(cell->face(f)->boundary_id()))
+            {
+              fe_face.reinit(cell, f);
+              local_mass   = 0;
+              local_normal = 0;
+              for (const unsigned int q : fe_face.quadrature_point_indices())
+                for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                  {
+                    const unsigned int c = fe.system_to_component_index(i).first;
+                    const double phi = fe_face.shape_value_component(i, q, c) *
+                                       fe_face.JxW(q);
+                    local_mass(i) += phi;
+                    local_normal(i) += phi * fe_face.normal_vector(q)[c];
+                  }
+              cell->get_dof_indices(dofs);
+              base_constraints.distribute_local_to_global(local_mass, dofs, mass);
+              base_constraints.distribute_local_to_global(local_normal, dofs,
+                                                          normal);
+            }
+    mass.compress(VectorOperation::add);
+    normal.compress(VectorOperation::add);
+
+    TrilinosWrappers::MPI::Vector diagonal(locally_owned_dofs, mpi_communicator);
+    for (const auto i : locally_owned_dofs)
+      diagonal[i] = step_matrix.diag_element(i);
+    diagonal.compress(VectorOperation::insert);
+
+    TrilinosWrappers::MPI::Vector ghosted(locally_owned_dofs,
+                                          locally_relevant_dofs,
+                                          mpi_communicator);
+    TrilinosWrappers::MPI::Vector mass_g(ghosted), normal_g(ghosted),
+      diagonal_g(ghosted);
+    mass_g     = mass;
+    normal_g   = normal;
+    diagonal_g = diagonal;
+
+    contact_nodes.clear();
+    std::map<types::global_dof_index, unsigned int> seen;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              contact_ids.count(cell->face(f)->boundary_id()))
+            for (const unsigned int v : cell->face(f)->vertex_indices())
+              {
+                ContactNode<dim> node;
+                for (unsigned int c = 0; c < dim; ++c)
+                  node.dofs[c] = cell->face(f)->vertex_dof_index(v, c);
+                if (seen.count(node.dofs[0]) ||
+                    base_constraints.is_constrained(node.dofs[0]) ||
+                    mass_g[node.dofs[0]] <= 0)
+                  continue;
+                seen[node.dofs[0]] = contact_nodes.size();
+                node.position      = cell->face(f)->vertex(v);
+                node.mass          = mass_g[node.dofs[0]];
+                double diag        = 0;
+                for (unsigned int c = 0; c < dim; ++c)
+                  {
+                    node.normal[c] = normal_g[node.dofs[c]];
+                    diag += diagonal_g[node.dofs[c]] / dim;
+                  }
+                node.normal /= node.normal.norm();
+                node.c = parameters.nonlinear_solver.complementarity_factor *
+                         diag / node.mass;
+                node.friction_bound = data.friction_bound->value(node.position);
+                require(node.friction_bound >= 0,
+                        "data: 'friction bound' is negative (" +
+                          std::to_string(node.friction_bound) +
+                          ") at a contact node; F_b must be >= 0.");
+                node.locally_owned = locally_owned_dofs.is_element(node.dofs[0]);
+                contact_nodes.push_back(node);
+              }
+
+    unsigned int n_owned = 0;
+    for (const auto &node : contact_nodes)
+      n_owned += node.locally_owned;
+    require(Utilities::MPI::sum(n_owned, mpi_communicator) > 0,
+            "boundary: the contact boundary Gamma_3 has no free node (every "
+            "node is clamped); check 'contact boundary ids'.");
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::initialize_state()
+  {
+    data.set_time(0);
+    const auto interpolate_checked = [&](const Function<dim> &      f,
+                                         TrilinosWrappers::MPI::Vector &v,
+                                         const std::string &          name) {
+      VectorTools::interpolate(*discretization.mapping, dof_handler, f, v);
+      double on_clamped = 0, largest = 0;
+      for (const auto i : locally_owned_dofs)
+        {
+          largest = std::max(largest, std::abs(v[i]));
+          if (base_constraints.is_constrained(i) &&
+              base_constraints.get_constraint_entries(i)->empty())
+            on_clamped = std::max(on_clamped, std::abs(v[i]));
+        }
+      on_clamped = Utilities::MPI::max(on_clamped, mpi_communicator);
+      largest    = Utilities::MPI::max(largest, mpi_communicator);
+      require(on_clamped <= 1e-12 * std::max(largest, 1.),
+              "data: the " + name + " does not vanish on the clamped boundary "
+              "Gamma_1 (value " + std::to_string(on_clamped) +
+              " there); it must satisfy u = 0 on Gamma_1.");
+      base_constraints.distribute(v);
+    };
+    interpolate_checked(*data.initial_velocity, velocity, "initial velocity");
+    interpolate_checked(*data.initial_displacement, displacement,
+                        "initial displacement");
+    old_velocity = velocity;
+    step_number  = 0;
+    energy       = EnergyBalance();
+    update_energy_balance(/*initial=*/true);
+  }
+
+#define HEMICONTACT_INSTANTIATE(dim)                                           \
+  template ContactProblem<dim>::ContactProblem(const Parameters &,            \
+                                               std::unique_ptr<NormalLaw>,    \
+                                               MPI_Comm);                     \
+  template ContactProblem<dim>::ContactProblem(const Parameters &,            \
+                                               std::unique_ptr<NormalLaw>,    \
+                                               ProblemData<dim>, MPI_Comm);   \
+  template void ContactProblem<dim>::setup();                                 \
+  template void ContactProblem<dim>::make_mesh();                             \
+  template void ContactProblem<dim>::setup_dofs();                            \
+  template void ContactProblem<dim>::setup_base_constraints();                \
+  template void ContactProblem<dim>::setup_contact_nodes();                   \
+  template void ContactProblem<dim>::initialize_state();
+
+  HEMICONTACT_INSTANTIATE(2)
+  HEMICONTACT_INSTANTIATE(3)
+#undef HEMICONTACT_INSTANTIATE
+} // namespace hemicontact

@@ -1,0 +1,159 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/numbers.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/lac/vector.h>
+
+#include <hemicontact/input_error.h>
+#include <hemicontact/problem_data.h>
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace hemicontact
+{
+  namespace
+  {
+    std::map<std::string, double>
+    parse_constants(const std::string &text)
+    {
+      std::map<std::string, double> constants;
+      constants["pi"] = numbers::PI;
+      for (const std::string &item : Utilities::split_string_list(text, ','))
+        {
+          const std::vector<std::string> kv =
+            Utilities::split_string_list(item, '=');
+          require(kv.size() == 2 && !kv[0].empty(),
+                  "data: 'constants' entry '" + item +
+                    "' is not of the form name=value.");
+          try
+            {
+              constants[kv[0]] = Utilities::string_to_double(kv[1]);
+            }
+          catch (...)
+            {
+              throw InputError("data: 'constants' entry '" + item +
+                               "' does not give a number.");
+            }
+        }
+      return constants;
+    }
+
+    bool
+    is_number(const std::string &s)
+    {
+      try
+        {
+          Utilities::string_to_double(s);
+          return true;
+        }
+      catch (...)
+        {
+          return false;
+        }
+    }
+  } // namespace
+
+  template <int dim>
+  std::unique_ptr<Function<dim>>
+  parse_function(const std::string &expression, const unsigned int n_components,
+                 const std::string &constants_text,
+                 const std::string &parameter_name)
+  {
+    std::vector<std::string> expressions =
+      Utilities::split_string_list(expression, ';');
+    if (expressions.size() == 1 && n_components > 1 &&
+        is_number(expressions[0]))
+      expressions.assign(n_components, expressions[0]);
+    require(expressions.size() == n_components,
+            "data: '" + parameter_name + "' = '" + expression + "' has " +
+              std::to_string(expressions.size()) +
+              " components separated by ';' but needs " +
+              std::to_string(n_components) + ".");
+    for (const std::string &e : expressions)
+      require(!e.empty(), "data: '" + parameter_name +
+                            "' has an empty component in '" + expression +
+                            "'.");
+
+    const std::string variables =
+      dim == 2 ? std::string("x,y,t") : std::string("x,y,z,t");
+    auto function = std::make_unique<FunctionParser<dim>>(n_components);
+    try
+      {
+        function->initialize(variables, expressions,
+                             parse_constants(constants_text),
+                             /*time_dependent=*/true);
+        // muparser reports some errors only on evaluation: try once
+        Vector<double> values(n_components);
+        function->vector_value(Point<dim>(), values);
+      }
+    catch (const InputError &)
+      {
+        throw;
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream s;
+        e.print_info(s);
+        throw InputError("data: cannot parse '" + parameter_name + "' = '" +
+                         expression + "' (variables " + variables +
+                         " and the constants): " + s.str());
+      }
+    catch (const std::exception &e)
+      {
+        throw InputError("data: cannot parse '" + parameter_name + "' = '" +
+                         expression + "': " + e.what());
+      }
+    catch (...)
+      {
+        throw InputError("data: cannot parse '" + parameter_name + "' = '" +
+                         expression + "' (variables " + variables + ").");
+      }
+    return function;
+  }
+
+  template <int dim>
+  void
+  ProblemData<dim>::set_time(const double t)
+  {
+    for (Function<dim> *f :
+         {body_force.get(), surface_traction.get(), contact_traction.get(),
+          friction_bound.get(), initial_displacement.get(),
+          initial_velocity.get()})
+      if (f != nullptr)
+        f->set_time(t);
+  }
+
+  template <int dim>
+  ProblemData<dim>
+  make_problem_data(const DataParameters &data)
+  {
+    ProblemData<dim> result;
+    const std::string &c = data.constants;
+    result.body_force = parse_function<dim>(data.body_force, dim, c, "body force");
+    result.surface_traction =
+      parse_function<dim>(data.surface_traction, dim, c, "surface traction");
+    result.contact_traction =
+      parse_function<dim>(data.contact_traction, dim, c, "contact traction");
+    result.friction_bound =
+      parse_function<dim>(data.friction_bound, 1, c, "friction bound");
+    result.initial_displacement = parse_function<dim>(
+      data.initial_displacement, dim, c, "initial displacement");
+    result.initial_velocity =
+      parse_function<dim>(data.initial_velocity, dim, c, "initial velocity");
+    return result;
+  }
+
+  template struct ProblemData<2>;
+  template struct ProblemData<3>;
+  template ProblemData<2>
+  make_problem_data<2>(const DataParameters &);
+  template ProblemData<3>
+  make_problem_data<3>(const DataParameters &);
+  template std::unique_ptr<Function<2>>
+  parse_function<2>(const std::string &, const unsigned int,
+                    const std::string &, const std::string &);
+  template std::unique_ptr<Function<3>>
+  parse_function<3>(const std::string &, const unsigned int,
+                    const std::string &, const std::string &);
+} // namespace hemicontact
