@@ -1,0 +1,224 @@
+// Unit test of the node-wise pieces of the active-set method: branch
+// decisions and complementarity functions at and around the kinks
+// (s + c w_nu = 0 and = a, |lambda + c w_tau| = F_b), the Tresca projection
+// onto the friction disk, the elimination of constrained directions, the
+// tangent basis, and the slip linearisation against a difference quotient.
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <hemicontact/contact_node.h>
+#include <hemicontact/normal_laws/exponential_law.h>
+#include <hemicontact/tresca_friction.h>
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+
+using namespace hemicontact;
+
+namespace
+{
+  const char *
+  name(const NormalBranch b)
+  {
+    return b == NormalBranch::separating ? "separating" :
+           b == NormalBranch::stick      ? "stick" :
+                                           "damped";
+  }
+  const char *
+  name(const TangentialBranch b)
+  {
+    return b == TangentialBranch::stick ? "stick" : "slip";
+  }
+
+  /** min of v.Mv over a grid of directions on the unit sphere */
+  double
+  min_quadratic_form(const Tensor<2, 3> &m)
+  {
+    double result = 1e300;
+    for (double theta = 0; theta < M_PI; theta += M_PI / 40)
+      for (double phi = 0; phi < 2 * M_PI; phi += M_PI / 40)
+        {
+          const Tensor<1, 3> v({std::sin(theta) * std::cos(phi),
+                                std::sin(theta) * std::sin(phi),
+                                std::cos(theta)});
+          result = std::min(result, v * (m * v));
+        }
+    return result;
+  }
+
+  template <int dim>
+  ContactNode<dim>
+  make_node()
+  {
+    ContactNode<dim> node;
+    node.normal         = Tensor<1, dim>();
+    node.normal[dim - 1] = -1; // bottom face
+    if (dim == 2)
+      { // a tilted normal exercises the general case
+        node.normal[0] = 0.6;
+        node.normal[1] = -0.8;
+      }
+    node.mass           = 0.5;
+    node.friction_bound = 0.3;
+    node.c              = 10;
+    return node;
+  }
+} // namespace
+
+int
+main()
+{
+  std::cout << std::setprecision(6);
+  const ExponentialLaw law(1., 0.4, 3.); // a = 1
+  ContactNode<2>       node = make_node<2>();
+
+  // normal branches around q = s + c w_nu = 0 and q = a
+  std::cout << "normal branches (a = 1, c = 10):\n";
+  for (const double s : {-0.2, 0., 0.5, 1., 1.2})
+    for (const double wn : {-0.01, 0., 0.01})
+      {
+        NodeMultipliers<2> m;
+        m.s        = s;
+        m.w_normal = wn;
+        std::cout << "  s = " << s << ", w_nu = " << wn << ": "
+                  << name(NodeContact::normal_branch(node, m, law))
+                  << ", C_nu = "
+                  << NodeContact::normal_complementarity(node, m, law) << "\n";
+      }
+
+  // tangential branches around |lambda + c w_tau| = F_b = 0.3
+  std::cout << "tangential branches (F_b = 0.3, c = 10):\n";
+  const Tensor<1, 2> tau({0.8, 0.6}); // orthogonal to the tilted normal
+  for (const double l : {0., 0.29, 0.3, 0.31})
+    for (const double wt : {0., 0.001})
+      {
+        NodeMultipliers<2> m;
+        m.lambda       = l * tau;
+        m.w_tangential = wt * tau;
+        const Tensor<1, 2> ct = NodeContact::tangential_complementarity(node, m);
+        std::cout << "  |lambda| = " << l << ", |w_tau| = " << wt << ": "
+                  << name(NodeContact::tangential_branch(node, m))
+                  << ", |C_tau| = " << std::abs(ct * tau) << "\n";
+      }
+
+  // the split of velocity and force into normal and tangential parts
+  {
+    const Tensor<1, 2>       w({0.3, 0.1}), force({0.2, -0.5});
+    const NodeMultipliers<2> m = NodeContact::multipliers(node, w, force, law);
+    const double recombined =
+      (node.mass * ((m.s + law.remainder(m.w_normal)) * node.normal + m.lambda) -
+       force)
+        .norm();
+    std::cout << "split of force and velocity consistent: "
+              << (recombined < 1e-14 &&
+                      std::abs((m.w_normal * node.normal + m.w_tangential - w)
+                                 .norm()) < 1e-14 &&
+                      std::abs(m.lambda * node.normal) < 1e-14 ?
+                    "yes" :
+                    "no")
+              << "\n";
+  }
+
+  // Tresca projection in 3D
+  {
+    const Tensor<1, 3> inside({0.1, 0.1, 0}), outside({0.3, 0.4, 0});
+    std::cout << "projection keeps points of the disk: "
+              << ((TrescaFriction::project(inside, 0.3) - inside).norm() == 0 ?
+                    "yes" :
+                    "no")
+              << "\nprojection of (0.3, 0.4) onto radius 0.3: "
+              << TrescaFriction::project(outside, 0.3) << "\n";
+  }
+
+  // elimination: every allowed velocity satisfies the constraints
+  for (const auto &branches :
+       {std::make_pair(NormalBranch::stick, TangentialBranch::slip),
+        std::make_pair(NormalBranch::separating, TangentialBranch::stick),
+        std::make_pair(NormalBranch::stick, TangentialBranch::stick)})
+    {
+      ContactNode<3> n3 = make_node<3>();
+      n3.normal         = Tensor<1, 3>({0.36, 0.48, -0.8});
+      n3.normal_branch     = branches.first;
+      n3.tangential_branch = branches.second;
+      const auto directions = NodeContact::constrained_directions(n3);
+      const auto lines      = NodeContact::eliminate(directions);
+      // build w from arbitrary free components, fill eliminated ones
+      Tensor<1, 3> w({0.7, -1.3, 0.4});
+      for (const auto &line : lines)
+        {
+          w[line.first] = 0;
+          for (const auto &e : line.second)
+            w[line.first] += e.second * w[e.first];
+        }
+      double violation = 0;
+      for (const auto &d : directions)
+        violation = std::max(violation, std::abs(d * w));
+      std::cout << "3D " << name(branches.first) << "/" << name(branches.second)
+                << ": " << directions.size() << " constraints, satisfied: "
+                << (violation < 1e-14 ? "yes" : "no") << "\n";
+    }
+
+  // tangent basis is orthonormal and orthogonal to the normal
+  {
+    const Tensor<1, 3> nu({0.36, 0.48, -0.8});
+    const auto         t = NodeContact::tangent_basis(nu);
+    const double err = std::abs(t[0] * t[0] - 1) + std::abs(t[1] * t[1] - 1) +
+                       std::abs(t[0] * t[1]) + std::abs(t[0] * nu) +
+                       std::abs(t[1] * nu);
+    std::cout << "3D tangent basis orthonormal: " << (err < 1e-14 ? "yes" : "no")
+              << "\n";
+  }
+
+  // slip linearisation in 3D: the matrix is the derivative of
+  // m F_b q/|q| with q = lambda + c w_tau (lambda frozen), symmetric, PSD
+  {
+    ContactNode<3> n3 = make_node<3>();
+    n3.tangential_branch = TangentialBranch::slip;
+    NodeMultipliers<3> m;
+    m.lambda       = Tensor<1, 3>({0.2, -0.1, 0});
+    m.w_tangential = Tensor<1, 3>({0.05, 0.02, 0});
+    const NodeLinearization<3> lin = NodeContact::linearize(n3, m, law);
+    const auto force = [&](const Tensor<1, 3> &wt) {
+      const Tensor<1, 3> q = m.lambda + n3.c * wt;
+      return n3.mass * n3.friction_bound * q / q.norm();
+    };
+    double fd_error = 0, asym = 0;
+    for (unsigned int j = 0; j < 2; ++j) // tangential directions
+      {
+        Tensor<1, 3> dw;
+        dw[j]                   = 1e-7;
+        const Tensor<1, 3> diff = (force(m.w_tangential + dw) -
+                                   force(m.w_tangential)) / 1e-7;
+        for (unsigned int i = 0; i < 3; ++i)
+          fd_error = std::max(fd_error, std::abs(diff[i] - lin.matrix[i][j]));
+      }
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = 0; j < 3; ++j)
+        asym = std::max(asym, std::abs(lin.matrix[i][j] - lin.matrix[j][i]));
+    std::cout << "3D slip force = " << lin.force
+              << "\n3D slip tangent matches difference quotient: "
+              << (fd_error < 1e-5 ? "yes" : "no")
+              << ", symmetric: " << (asym < 1e-14 ? "yes" : "no")
+              << ", positive semidefinite: "
+              << (min_quadratic_form(lin.matrix) > -1e-14 ? "yes" : "no")
+              << "\n";
+  }
+
+  // damped linearisation: force m (a + p(w)) nu, matrix m p'(w) nu nu
+  {
+    ContactNode<2> n2 = make_node<2>();
+    n2.normal_branch  = NormalBranch::damped;
+    NodeMultipliers<2> m;
+    m.w_normal                       = 0.1;
+    const NodeLinearization<2> lin   = NodeContact::linearize(n2, m, law);
+    const double               expect = n2.mass * (law.jump() + law.remainder(0.1));
+    std::cout << "damped force along the normal: "
+              << (std::abs(lin.force * n2.normal - expect) < 1e-14 ? "yes" : "no")
+              << ", matrix = m p' nu nu: "
+              << (std::abs(n2.normal * (lin.matrix * n2.normal) -
+                           n2.mass * law.remainder_derivative(0.1)) < 1e-14 ?
+                    "yes" :
+                    "no")
+              << "\n";
+  }
+}
