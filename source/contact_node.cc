@@ -86,13 +86,21 @@ namespace hemicontact
           const Tensor<1, dim> q    = m.lambda + node.c * m.w_tangential;
           const double         qn   = q.norm();
           const Tensor<1, dim> d    = q / qn;
-          lin.force += node.mass * node.friction_bound * d;
-          // derivative of F_b q/|q| in w_tau with lambda frozen: symmetric,
-          // positive semidefinite, bounded by m_i c (Hueber-Stadler-Wohlmuth)
+          // Newton for lambda = F_b q/|q| (q = lambda + c w_tau), with lambda
+          // condensed out: lambda_new = F_b d + T/m_i w_tau, where
+          // T = m_i F_b c/(|q| - F_b) (I - nu nu - d d). At a solution
+          // |q| - F_b = c|w_tau| and w_tau || d, so T is the Hessian
+          // F_b/|w_tau| (I - t t) of F_b |w_tau| and the force is F_b t.
+          // T is symmetric positive semidefinite; the floor on |q| - F_b
+          // bounds it by 100 m_i c for nodes that barely slip.
+          const double excess = std::max(qn - node.friction_bound, 1e-2 * qn);
           Tensor<2, dim> tangent_projector = unit_symmetric_tensor<dim>();
           tangent_projector -= outer_product(nu, nu) + outer_product(d, d);
-          lin.matrix += node.mass * node.friction_bound * node.c / qn *
-                        tangent_projector;
+          const Tensor<2, dim> tangent = node.mass * node.friction_bound *
+                                         node.c / excess * tangent_projector;
+          lin.matrix += tangent;
+          lin.force += node.mass * node.friction_bound * d +
+                       tangent * m.w_tangential;
         }
       return lin;
     }

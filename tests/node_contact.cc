@@ -169,39 +169,42 @@ main()
               << "\n";
   }
 
-  // slip linearisation in 3D: the matrix is the derivative of
-  // m F_b q/|q| with q = lambda + c w_tau (lambda frozen), symmetric, PSD
+  // slip linearisation in 3D at a consistent slip state (lambda = F_b t,
+  // w_tau = |w_tau| t): the force is m F_b t and the matrix is the Hessian
+  // m F_b/|w_tau| (I - nu nu - t t) of m F_b |w_tau| (difference quotient
+  // of its gradient m F_b w/|w|); symmetric positive semidefinite
   {
     ContactNode<3> n3 = make_node<3>();
     n3.tangential_branch = TangentialBranch::slip;
+    const Tensor<1, 3> t({0.8, 0.6, 0});
     NodeMultipliers<3> m;
-    m.lambda       = Tensor<1, 3>({0.2, -0.1, 0});
-    m.w_tangential = Tensor<1, 3>({0.05, 0.02, 0});
+    m.lambda       = n3.friction_bound * t;
+    m.w_tangential = 0.05 * t;
     const NodeLinearization<3> lin = NodeContact::linearize(n3, m, law);
-    const auto force = [&](const Tensor<1, 3> &wt) {
-      const Tensor<1, 3> q = m.lambda + n3.c * wt;
-      return n3.mass * n3.friction_bound * q / q.norm();
+    const auto gradient = [&](const Tensor<1, 3> &wt) {
+      return n3.mass * n3.friction_bound * wt / wt.norm();
     };
     double fd_error = 0, asym = 0;
     for (unsigned int j = 0; j < 2; ++j) // tangential directions
       {
         Tensor<1, 3> dw;
         dw[j]                   = 1e-7;
-        const Tensor<1, 3> diff = (force(m.w_tangential + dw) -
-                                   force(m.w_tangential)) / 1e-7;
+        const Tensor<1, 3> diff = (gradient(m.w_tangential + dw) -
+                                   gradient(m.w_tangential - dw)) / 2e-7;
         for (unsigned int i = 0; i < 3; ++i)
           fd_error = std::max(fd_error, std::abs(diff[i] - lin.matrix[i][j]));
       }
     for (unsigned int i = 0; i < 3; ++i)
       for (unsigned int j = 0; j < 3; ++j)
         asym = std::max(asym, std::abs(lin.matrix[i][j] - lin.matrix[j][i]));
-    std::cout << "3D slip force = " << lin.force
-              << "\n3D slip tangent matches difference quotient: "
-              << (fd_error < 1e-5 ? "yes" : "no")
+    // the linearised force at the current iterate is m F_b t
+    const Tensor<1, 3> force = lin.force - lin.matrix * m.w_tangential;
+    std::cout << "3D slip force at the iterate = " << force
+              << "\n3D slip tangent is the Hessian of F_b |w_tau|: "
+              << (fd_error < 1e-6 ? "yes" : "no")
               << ", symmetric: " << (asym < 1e-14 ? "yes" : "no")
               << ", positive semidefinite: "
-              << (min_quadratic_form(lin.matrix) > -1e-14 ? "yes" : "no")
-              << "\n";
+              << (min_quadratic_form(lin.matrix) > -1e-14 ? "yes" : "no") << "\n";
   }
 
   // damped linearisation: force m (a + p(w)) nu, matrix m p'(w) nu nu

@@ -107,7 +107,9 @@ namespace hemicontact
 
     /**
      * Linearised nodal force m_i (traction) of the free branches (damped,
-     * slip) about the current iterate; zero for constrained branches.
+     * slip) about the current iterate; zero for constrained branches. The
+     * slip tangent is the condensed semismooth-Newton tangent, which at a
+     * solution is the Hessian of F_b |w_tau|.
      */
     template <int dim>
     NodeLinearization<dim>
