@@ -5,6 +5,7 @@
 #include <hemicontact/normal_law.h>
 #include <hemicontact/parameters.h>
 
+#include <cctype>
 #include <fstream>
 #include <sstream>
 
@@ -434,18 +435,27 @@ namespace hemicontact
 
   namespace
   {
-    /** The message of a deal.II exception without its stack trace. */
+    /**
+     * The message of a deal.II exception without its stack trace, with
+     * its line breaks and indentation collapsed into one paragraph.
+     */
     std::string
     message_of(const ExceptionBase &e)
     {
       std::ostringstream s;
       e.print_info(s);
-      std::string m = s.str();
-      while (!m.empty() && (m.back() == '\n' || m.back() == ' '))
-        m.pop_back();
-      while (!m.empty() && (m.front() == '\n' || m.front() == ' '))
-        m.erase(0, 1);
-      return m;
+      std::string message;
+      for (const char c : s.str())
+        if (std::isspace(static_cast<unsigned char>(c)))
+          {
+            if (!message.empty() && message.back() != ' ')
+              message += ' ';
+          }
+        else
+          message += c;
+      while (!message.empty() && message.back() == ' ')
+        message.pop_back();
+      return message;
     }
 
     template <typename ParseFunction>

@@ -139,7 +139,7 @@ namespace hemicontact
                 << " is not below the estimated smallest eigenvalue "
                 << convexity_bound
                 << " of (rho/k M + A) against the normal boundary mass "
-                   "(design.md section 2, condition (4.26)). Newton may fail "
+                   "(the convexity condition of the step problem, cf. Han & Han 2019, (4.26)). Newton may fail "
                    "or the step may have several solutions; reduce the time "
                    "step k = "
                 << time_step << " or the law's nonmonotonicity.";

@@ -31,7 +31,7 @@ namespace hemicontact
     , parameters(parameters)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0 &&
                          parameters.output.terminal != "quiet")
-    , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , material(parameters.material)
     , law(std::move(law))
     , data(std::move(data))

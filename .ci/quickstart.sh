@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# The README's two commands:
+#   bash .ci/quickstart.sh example   install what is missing, build, run prm/block_2d.prm
+#   bash .ci/quickstart.sh test      install what is missing, build, run the test suite
+# Works on a fresh Debian 12 machine (as root, or with sudo available).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages="libdeal.ii-dev numdiff openmpi-bin cmake make g++ perl"
+
+install_missing() {
+  local missing=""
+  for p in $packages; do
+    dpkg -s "$p" > /dev/null 2>&1 || missing="$missing $p"
+  done
+  if [ -n "$missing" ]; then
+    local sudo=""
+    [ "$(id -u)" -eq 0 ] || sudo="sudo"
+    echo "installing:$missing"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends $missing < /dev/null
+  fi
+}
+
+build() {
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > /dev/null
+  cmake --build build -j2
+}
+
+# OpenMPI refuses to run as root unless told otherwise (CI runs as root)
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+
+case "${1:-}" in
+  example)
+    install_missing
+    build
+    ./build/hemicontact prm/block_2d.prm
+    echo "output written to $(pwd)/output-block-2d (open solution.pvd in ParaView)"
+    ;;
+  test)
+    install_missing
+    build
+    cd build
+    ctest -j2 --output-on-failure < /dev/null
+    ;;
+  *)
+    echo "usage: bash .ci/quickstart.sh example|test" >&2
+    exit 1
+    ;;
+esac

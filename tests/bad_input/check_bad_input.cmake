@@ -1,0 +1,43 @@
+# Run hemicontact on a broken parameter file and check that it fails the
+# way the file's header says:
+#   # expect-exit: N
+#   # expect-message: REGEX      (matched against standard error)
+#   # run-with: ARGUMENT         (optional: run with this instead of the file)
+# and that the message is one clean paragraph (no stack trace, no deal.II
+# exception banner).
+file(STRINGS ${PRM} _lines)
+foreach(_line ${_lines})
+  if(_line MATCHES "^# expect-exit: *([0-9]+)")
+    set(_exit ${CMAKE_MATCH_1})
+  elseif(_line MATCHES "^# expect-message: *(.*)$")
+    set(_message "${CMAKE_MATCH_1}")
+  elseif(_line MATCHES "^# run-with: *(.*)$")
+    set(_argument "${CMAKE_MATCH_1}")
+  endif()
+endforeach()
+if(NOT DEFINED _exit OR NOT DEFINED _message)
+  message(FATAL_ERROR "${PRM}: missing '# expect-exit:' or '# expect-message:' header")
+endif()
+
+get_filename_component(_name ${PRM} NAME_WE)
+set(_dir ${WORKDIR}/${_name})
+file(REMOVE_RECURSE ${_dir})
+file(MAKE_DIRECTORY ${_dir})
+if(NOT DEFINED _argument)
+  set(_argument ${PRM})
+endif()
+execute_process(COMMAND ${EXE} ${_argument}
+  WORKING_DIRECTORY ${_dir}
+  RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err
+  TIMEOUT 120)
+
+if(NOT "${_rc}" STREQUAL "${_exit}")
+  message(FATAL_ERROR "expected exit code ${_exit}, got '${_rc}'.\nstderr:\n${_err}\nstdout:\n${_out}")
+endif()
+if(NOT _err MATCHES "${_message}")
+  message(FATAL_ERROR "stderr does not match '${_message}':\n${_err}")
+endif()
+if(_err MATCHES "Stacktrace|An error occurred in line|-------")
+  message(FATAL_ERROR "the message is not a clean paragraph:\n${_err}")
+endif()
+message(STATUS "ok: exit ${_rc}: ${_err}")
