@@ -60,8 +60,21 @@ namespace hemicontact
           }
         if (simplex)
           {
+            // deal.II 9.4 does not colorize simplex rectangles: set the ids
+            // 2d (lower) and 2d+1 (upper) from the face centres
             GridGenerator::subdivided_hyper_rectangle_with_simplices(
-              *triangulation, repetitions, p0, p1, /*colorize=*/true);
+              *triangulation, repetitions, p0, p1, /*colorize=*/false);
+            const double tolerance = 1e-10 * (p1 - p0).norm();
+            for (const auto &cell : triangulation->active_cell_iterators())
+              for (const auto &face : cell->face_iterators())
+                if (face->at_boundary())
+                  for (unsigned int d = 0; d < dim; ++d)
+                    {
+                      if (std::abs(face->center()[d] - p0[d]) < tolerance)
+                        face->set_boundary_id(2 * d);
+                      if (std::abs(face->center()[d] - p1[d]) < tolerance)
+                        face->set_boundary_id(2 * d + 1);
+                    }
           }
         else
           GridGenerator::subdivided_hyper_rectangle(*triangulation,
