@@ -89,7 +89,7 @@ namespace hemicontact
            "kinetic_energy,elastic_energy,viscous_dissipation,"
            "friction_dissipation,normal_damping_dissipation,external_work,"
            "numerical_dissipation,energy_defect,relative_energy_defect,"
-           "wall_seconds\n";
+           "line_search_reductions,wall_seconds\n";
   }
 
   template <int dim>
@@ -268,7 +268,7 @@ namespace hemicontact
                << e.friction_dissipation << "," << e.damping_dissipation << ","
                << e.external_work << "," << e.numerical_dissipation << ","
                << e.defect() << "," << e.relative_defect() << ","
-               << s.wall_seconds << "\n";
+               << s.n_damped_steps << "," << s.wall_seconds << "\n";
     steps_file.flush();
   }
 
