@@ -99,7 +99,8 @@ namespace hemicontact
   unsigned int
   LinearSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
                       TrilinosWrappers::MPI::Vector &       x,
-                      const TrilinosWrappers::MPI::Vector & b)
+                      const TrilinosWrappers::MPI::Vector & b,
+                      const bool reuse_preconditioner)
   {
     if (parameters.type == "direct")
       {
@@ -112,7 +113,8 @@ namespace hemicontact
       }
 
     Assert(n_modes > 0, ExcMessage("set_rigid_body_modes() was not called."));
-    setup_preconditioner(matrix);
+    if (!reuse_preconditioner || amg == nullptr)
+      setup_preconditioner(matrix);
     const double  b_norm = b.l2_norm();
     SolverControl control(parameters.max_iterations,
                           std::max(parameters.relative_tolerance * b_norm,

@@ -37,12 +37,14 @@ namespace hemicontact
      * Solve @p matrix x = b to the relative tolerance of the parameters
      * (starting from the given x). Returns the number of Krylov iterations
      * (1 for the direct solver). Throws SolverFailure if CG does not
-     * converge.
+     * converge. With @p reuse_preconditioner the AMG hierarchy of the
+     * previous call is kept (the caller guarantees the same matrix).
      */
     unsigned int
     solve(const TrilinosWrappers::SparseMatrix &matrix,
           TrilinosWrappers::MPI::Vector &       x,
-          const TrilinosWrappers::MPI::Vector & b);
+          const TrilinosWrappers::MPI::Vector & b,
+          const bool reuse_preconditioner = false);
 
     /** Number of preconditioner set-ups so far. */
     unsigned int

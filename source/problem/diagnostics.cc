@@ -115,7 +115,7 @@ namespace hemicontact
       {
         apply_n(x, y);
         z = 0;
-        linear_solver.solve(step_matrix, z, y);
+        linear_solver.solve(step_matrix, z, y, /*reuse_preconditioner=*/it > 0);
         apply_n(z, tmp);
         const double znz = z * tmp;
         step_matrix.vmult(tmp, z);
