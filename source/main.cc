@@ -9,6 +9,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <hemicontact/contact_problem.h>
+#include <hemicontact/convergence_study.h>
 #include <hemicontact/input_error.h>
 #include <hemicontact/normal_law.h>
 #include <hemicontact/parameters.h>
@@ -63,6 +64,14 @@ namespace
 
     ParameterHandler prm;
     const Parameters parameters = read_parameters(prm, argument);
+    if (parameters.manufactured.enabled)
+      {
+        if (parameters.dimension == 2)
+          run_convergence_study<2>(parameters, prm, MPI_COMM_WORLD);
+        else
+          run_convergence_study<3>(parameters, prm, MPI_COMM_WORLD);
+        return 0;
+      }
     std::unique_ptr<NormalLaw> law = create_normal_law(prm);
     if (parameters.dimension == 2)
       ContactProblem<2>(parameters, std::move(law), MPI_COMM_WORLD).run();

@@ -381,6 +381,70 @@ namespace hemicontact
   }
 
   void
+  ManufacturedParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("manufactured solution");
+    prm.declare_entry("enabled", "false", Patterns::Bool(),
+                      "Verify against a manufactured solution: the body force, "
+                      "the tractions on Gamma_2 and Gamma_3 and the initial "
+                      "data are derived from 'exact displacement' (exact "
+                      "derivatives); the expressions in subsection 'data' "
+                      "except 'friction bound' are ignored, and the errors "
+                      "E_H, E_V, E_u are computed.");
+    prm.declare_entry("exact displacement", "0", Patterns::Anything(),
+                      "u(x,t): 'dimension' expressions separated by ';' in x, "
+                      "y, z, t and the data constants. Functions: sin cos tan "
+                      "exp log sqrt abs tanh sinh cosh atan pos(a)=max(a,0) "
+                      "pow max min; a^n for powers. It must vanish on "
+                      "Gamma_1.");
+    prm.declare_entry("normal multiplier", "0", Patterns::Anything(),
+                      "The choice xi_nu = s*(x,t) in dj(0) = [0,a] where the "
+                      "normal velocity vanishes; should lie strictly inside "
+                      "(0, a).");
+    prm.declare_entry("tangential multiplier", "0", Patterns::Anything(),
+                      "The choice xi_tau = lambda*(x,t) (projected on the "
+                      "tangent plane) where the tangential velocity vanishes; "
+                      "should satisfy |lambda*| < F_b.");
+    prm.leave_subsection();
+  }
+
+  void
+  ManufacturedParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("manufactured solution");
+    enabled               = prm.get_bool("enabled");
+    exact_displacement    = prm.get("exact displacement");
+    normal_multiplier     = prm.get("normal multiplier");
+    tangential_multiplier = prm.get("tangential multiplier");
+    prm.leave_subsection();
+  }
+
+  void
+  ConvergenceStudyParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("convergence study");
+    prm.declare_entry("type", "single",
+                      Patterns::Selection("single|h|k|coupled"),
+                      "With a manufactured solution: 'single' runs once; 'h' "
+                      "refines the mesh once per level with the time step "
+                      "fixed; 'k' halves the time step per level on the fixed "
+                      "mesh; 'coupled' does both (k = c h). Level 0 uses "
+                      "'geometry/global refinements' and 'time/time step'.");
+    prm.declare_entry("levels", "4", Patterns::Integer(1, 12),
+                      "Number of levels.");
+    prm.leave_subsection();
+  }
+
+  void
+  ConvergenceStudyParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("convergence study");
+    type     = prm.get("type");
+    n_levels = prm.get_integer("levels");
+    prm.leave_subsection();
+  }
+
+  void
   Parameters::declare(ParameterHandler &prm)
   {
     prm.declare_entry("dimension", "2", Patterns::Integer(2, 3),
@@ -393,6 +457,8 @@ namespace hemicontact
     NonlinearSolverParameters::declare(prm);
     LinearSolverParameters::declare(prm);
     OutputParameters::declare(prm);
+    ManufacturedParameters::declare(prm);
+    ConvergenceStudyParameters::declare(prm);
   }
 
   void
@@ -407,6 +473,8 @@ namespace hemicontact
     nonlinear_solver.parse(prm);
     linear_solver.parse(prm);
     output.parse(prm);
+    manufactured.parse(prm);
+    study.parse(prm);
     prm.enter_subsection("normal law");
     normal_law_name = prm.get("law");
     prm.leave_subsection();

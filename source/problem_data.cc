@@ -116,6 +116,7 @@ namespace hemicontact
   void
   ProblemData<dim>::set_time(const double t)
   {
+    time = t;
     for (Function<dim> *f :
          {body_force.get(), surface_traction.get(), contact_traction.get(),
           friction_bound.get(), initial_displacement.get(),

@@ -123,6 +123,32 @@ namespace hemicontact
     void        parse(ParameterHandler &prm);
   };
 
+  /**
+   * A manufactured solution: the exact displacement u(x,t) and the
+   * multiplier choices where the contact subdifferentials are intervals;
+   * f0, f2, f3, u0 and w0 are derived from them (design.md section 4).
+   */
+  struct ManufacturedParameters
+  {
+    bool        enabled;
+    std::string exact_displacement;    ///< dim expressions in x, y, z, t
+    std::string normal_multiplier;     ///< s* in (0, a) where w_nu = 0
+    std::string tangential_multiplier; ///< lambda* (|.| < F_b) where w_tau = 0
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** A convergence study over refinement levels (manufactured solutions). */
+  struct ConvergenceStudyParameters
+  {
+    std::string  type;     ///< "single", "h", "k" or "coupled"
+    unsigned int n_levels; ///< number of levels
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
   /** All parameters of a run, one struct per subsection. */
   struct Parameters
   {
@@ -135,6 +161,8 @@ namespace hemicontact
     NonlinearSolverParameters  nonlinear_solver;
     LinearSolverParameters     linear_solver;
     OutputParameters           output;
+    ManufacturedParameters     manufactured;
+    ConvergenceStudyParameters study;
     /** The normal law is parsed by its own factory (see normal_law.h). */
     std::string normal_law_name;
 

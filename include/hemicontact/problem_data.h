@@ -1,9 +1,11 @@
 #pragma once
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/tensor.h>
 
 #include <hemicontact/parameters.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -26,6 +28,19 @@ namespace hemicontact
     std::unique_ptr<Function<dim>> friction_bound;
     std::unique_ptr<Function<dim>> initial_displacement;
     std::unique_ptr<Function<dim>> initial_velocity;
+
+    /**
+     * Tractions that depend on the outward normal (point, normal, time),
+     * e.g. sigma nu of a manufactured solution. When set, they replace
+     * surface_traction / contact_traction.
+     */
+    using NormalTraction = std::function<
+      Tensor<1, dim>(const Point<dim> &, const Tensor<1, dim> &, double)>;
+    NormalTraction surface_traction_with_normal;
+    NormalTraction contact_traction_with_normal;
+
+    /** The time last passed to set_time(). */
+    double time = 0;
 
     /** Set the time of every time-dependent function. */
     void

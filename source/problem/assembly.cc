@@ -94,7 +94,7 @@ namespace hemicontact
     FEFaceValues<dim> fe_face(*discretization.mapping, fe,
                               discretization.face_quadrature(3),
                               update_values | update_quadrature_points |
-                                update_JxW_values);
+                                update_normal_vectors | update_JxW_values);
     const unsigned int n = fe.n_dofs_per_cell();
     Vector<double>     cell_load(n);
     std::vector<types::global_dof_index> dofs(n);
@@ -130,15 +130,29 @@ namespace hemicontact
             if (cell->face(f)->at_boundary())
               {
                 const types::boundary_id id = cell->face(f)->boundary_id();
-                const Function<dim> *traction =
-                  traction_ids.count(id) ? data.surface_traction.get() :
-                  contact_ids.count(id)  ? data.contact_traction.get() :
-                                           nullptr;
-                if (traction == nullptr)
+                const bool on_traction = traction_ids.count(id) > 0;
+                const bool on_contact  = contact_ids.count(id) > 0;
+                if (!on_traction && !on_contact)
                   continue;
+                const Function<dim> *traction =
+                  on_traction ? data.surface_traction.get() :
+                                data.contact_traction.get();
+                const auto &with_normal =
+                  on_traction ? data.surface_traction_with_normal :
+                                data.contact_traction_with_normal;
                 fe_face.reinit(cell, f);
-                traction->vector_value_list(fe_face.get_quadrature_points(),
-                                            face_values);
+                if (with_normal)
+                  for (const unsigned int q : fe_face.quadrature_point_indices())
+                    {
+                      const Tensor<1, dim> g =
+                        with_normal(fe_face.quadrature_point(q),
+                                    fe_face.normal_vector(q), time);
+                      for (unsigned int c = 0; c < dim; ++c)
+                        face_values[q](c) = g[c];
+                    }
+                else
+                  traction->vector_value_list(fe_face.get_quadrature_points(),
+                                              face_values);
                 for (const unsigned int q : fe_face.quadrature_point_indices())
                   for (unsigned int i = 0; i < n; ++i)
                     {

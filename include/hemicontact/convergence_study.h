@@ -1,0 +1,37 @@
+#pragma once
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <hemicontact/parameters.h>
+
+namespace hemicontact
+{
+  using namespace dealii;
+
+  /**
+   * The errors of design.md section 5 for one run against a manufactured
+   * solution, with e_n = w(t_n) - w_n and ||v||_V = ||eps(v)||_L2:
+   * E_H = max_n ||e_n||_L2, E_V = (k sum_n ||e_n||_V^2)^{1/2},
+   * E_u = max_n ||u(t_n) - u_n||_V, and the same in the H1 seminorm.
+   */
+  struct ErrorNorms
+  {
+    double E_H       = 0;
+    double E_V       = 0;
+    double E_u       = 0;
+    double E_V_H1    = 0;
+    double E_u_H1    = 0;
+  };
+
+  /**
+   * Run a manufactured-solution problem once or as a convergence study
+   * (parameters.study): print a ConvergenceTable with observed orders and
+   * write convergence.csv to the output directory. @p prm holds the parsed
+   * file (the normal law is created from it for every level).
+   */
+  template <int dim>
+  void
+  run_convergence_study(const Parameters &parameters, ParameterHandler &prm,
+                        MPI_Comm comm);
+} // namespace hemicontact

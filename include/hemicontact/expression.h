@@ -1,0 +1,161 @@
+#pragma once
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hemicontact
+{
+  /**
+   * A scalar expression in named variables, parsed once and evaluated with
+   * any number type -- double, or Sacado forward-AD numbers for exact
+   * derivatives (muparser evaluates only doubles). Grammar: numbers,
+   * variables and constants, + - * / ^, unary minus, parentheses, and the
+   * functions sin cos tan exp log sqrt abs tanh sinh cosh atan, pos(a) =
+   * max(a, 0) (for C^2 cut-offs such as pos(x-0.4)^3), pow(a,b), max(a,b),
+   * min(a,b).
+   */
+  class Expression
+  {
+  public:
+    /**
+     * Parse @p text; @p variables are the names bound at evaluation (in
+     * this order), @p constants are fixed values. Throws InputError with
+     * @p parameter_name on a syntax error or an unknown name.
+     */
+    Expression(const std::string &text, const std::vector<std::string> &variables,
+               const std::map<std::string, double> &constants,
+               const std::string &parameter_name);
+
+    /** Evaluate with @p values of the variables. */
+    template <typename Number>
+    Number
+    evaluate(const std::vector<Number> &values) const;
+
+    struct Node
+    {
+      enum Kind
+      {
+        constant,
+        variable,
+        unary,
+        binary,
+        function
+      } kind;
+      double                             value = 0;
+      unsigned int                       index = 0; ///< variable index
+      std::string                        op;        ///< operator/function
+      std::vector<std::unique_ptr<Node>> args;
+    };
+
+  private:
+    template <typename Number>
+    static Number
+    eval(const Node &node, const std::vector<Number> &values);
+
+    std::unique_ptr<Node> root;
+  };
+
+  // ---------------------------------------------------------------------
+  template <typename Number>
+  Number
+  Expression::evaluate(const std::vector<Number> &values) const
+  {
+    return eval(*root, values);
+  }
+
+  template <typename Number>
+  Number
+  Expression::eval(const Node &node, const std::vector<Number> &values)
+  {
+    using std::abs;
+    using std::atan;
+    using std::cos;
+    using std::cosh;
+    using std::exp;
+    using std::log;
+    using std::pow;
+    using std::sin;
+    using std::sinh;
+    using std::sqrt;
+    using std::tan;
+    using std::tanh;
+    switch (node.kind)
+      {
+        case Node::constant:
+          return Number(node.value);
+        case Node::variable:
+          return values[node.index];
+        case Node::unary:
+          return -eval(*node.args[0], values);
+        case Node::binary:
+          {
+            const Number a = eval(*node.args[0], values);
+            const Number b = eval(*node.args[1], values);
+            switch (node.op[0])
+              {
+                case '+':
+                  return a + b;
+                case '-':
+                  return a - b;
+                case '*':
+                  return a * b;
+                case '/':
+                  return a / b;
+                default: // '^'
+                  if (node.args[1]->kind == Node::constant &&
+                      node.args[1]->value ==
+                        static_cast<int>(node.args[1]->value) &&
+                      node.args[1]->value >= 1 && node.args[1]->value <= 8)
+                    {
+                      // integer powers by multiplication: exact derivatives
+                      // also at a = 0 (pos(x)^3)
+                      Number r = a;
+                      for (int i = 1; i < static_cast<int>(node.args[1]->value);
+                           ++i)
+                        r = r * a;
+                      return r;
+                    }
+                  return pow(a, b);
+              }
+          }
+        default:
+          {
+            const std::string &f = node.op;
+            const Number       a = eval(*node.args[0], values);
+            if (f == "sin")
+              return sin(a);
+            if (f == "cos")
+              return cos(a);
+            if (f == "tan")
+              return tan(a);
+            if (f == "exp")
+              return exp(a);
+            if (f == "log")
+              return log(a);
+            if (f == "sqrt")
+              return sqrt(a);
+            if (f == "abs")
+              return a < 0 ? Number(-a) : a;
+            if (f == "tanh")
+              return tanh(a);
+            if (f == "sinh")
+              return sinh(a);
+            if (f == "cosh")
+              return cosh(a);
+            if (f == "atan")
+              return atan(a);
+            if (f == "pos")
+              return a > 0 ? a : Number(0.);
+            const Number b = eval(*node.args[1], values);
+            if (f == "pow")
+              return pow(a, b);
+            if (f == "max")
+              return a > b ? a : b;
+            return a < b ? a : b; // min
+          }
+      }
+  }
+} // namespace hemicontact

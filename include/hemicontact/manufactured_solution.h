@@ -1,0 +1,80 @@
+#pragma once
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <hemicontact/expression.h>
+#include <hemicontact/kelvin_voigt.h>
+#include <hemicontact/normal_law.h>
+#include <hemicontact/parameters.h>
+#include <hemicontact/problem_data.h>
+
+#include <memory>
+#include <vector>
+
+namespace hemicontact
+{
+  using namespace dealii;
+
+  /**
+   * A manufactured solution u(x,t) given as expressions, with everything
+   * derived from it exactly (forward automatic differentiation, Sacado):
+   * w = du/dt, dw/dt, grad u, grad w and Div sigma, hence
+   *   f0 = rho dw/dt - Div sigma,  f2 = sigma nu,
+   *   f3 = sigma nu + xi_nu nu + xi_tau  (design.md section 4),
+   * with xi_nu in dj(w_nu), xi_tau in F_b d|w_tau| and the given multiplier
+   * choices where those sets are intervals (w_nu = 0, w_tau = 0).
+   */
+  template <int dim>
+  class ManufacturedSolution
+  {
+  public:
+    /** The exact fields at one point and time. */
+    struct Values
+    {
+      Tensor<1, dim> u, w, w_dot, div_sigma;
+      Tensor<2, dim> grad_u, grad_w;
+    };
+
+    ManufacturedSolution(const Parameters &parameters, const NormalLaw &law);
+
+    /** u, w, their gradients, dw/dt and Div sigma at (p, t). */
+    Values
+    evaluate(const Point<dim> &p, const double t) const;
+
+    /** sigma = A eps(w) + B eps(u). */
+    SymmetricTensor<2, dim>
+    stress(const Values &v) const;
+
+    /** f0 = rho dw/dt - Div sigma. */
+    Tensor<1, dim>
+    body_force(const Point<dim> &p, const double t) const;
+
+    /** f2 = sigma nu. */
+    Tensor<1, dim>
+    surface_traction(const Point<dim> &p, const Tensor<1, dim> &normal,
+                     const double t) const;
+
+    /** f3 = sigma nu + xi_nu nu + xi_tau. */
+    Tensor<1, dim>
+    contact_traction(const Point<dim> &p, const Tensor<1, dim> &normal,
+                     const double t) const;
+
+    /**
+     * The problem data: derived f0, f2, f3, u0, w0 and the friction bound
+     * of the parameter file. The returned data refer to this object.
+     */
+    ProblemData<dim>
+    make_problem_data() const;
+
+  private:
+    const NormalLaw &                   law;
+    KelvinVoigtMaterial<dim>            material;
+    std::vector<Expression>             displacement;
+    std::unique_ptr<Expression>         normal_multiplier;
+    std::vector<Expression>             tangential_multiplier;
+    std::unique_ptr<Function<dim>>      friction_bound;
+  };
+} // namespace hemicontact

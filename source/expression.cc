@@ -1,0 +1,228 @@
+#include <deal.II/base/utilities.h>
+
+#include <hemicontact/expression.h>
+#include <hemicontact/input_error.h>
+
+#include <cctype>
+#include <set>
+
+namespace hemicontact
+{
+  namespace
+  {
+    /** Recursive-descent parser: expr = term {(+|-) term}, term = factor
+     *  {(*|/) factor}, factor = unary [^ factor], unary = [-|+] primary. */
+    class Parser
+    {
+    public:
+      Parser(const std::string &text, const std::vector<std::string> &variables,
+             const std::map<std::string, double> &constants,
+             const std::string &parameter_name)
+        : text(text)
+        , variables(variables)
+        , constants(constants)
+        , parameter_name(parameter_name)
+      {}
+
+      std::unique_ptr<Expression::Node>
+      parse()
+      {
+        auto node = expression();
+        skip_space();
+        if (position != text.size())
+          fail("unexpected '" + text.substr(position, 1) + "'");
+        return node;
+      }
+
+    private:
+      using NodePtr = std::unique_ptr<Expression::Node>;
+
+      [[noreturn]] void
+      fail(const std::string &what) const
+      {
+        throw InputError("cannot parse '" + parameter_name + "' = '" + text +
+                         "': " + what + " at position " +
+                         std::to_string(position + 1) + ".");
+      }
+
+      void
+      skip_space()
+      {
+        while (position < text.size() && std::isspace(text[position]))
+          ++position;
+      }
+
+      bool
+      accept(const char c)
+      {
+        skip_space();
+        if (position < text.size() && text[position] == c)
+          {
+            ++position;
+            return true;
+          }
+        return false;
+      }
+
+      static NodePtr
+      make(Expression::Node::Kind kind, const std::string &op,
+           std::vector<NodePtr> args)
+      {
+        auto node  = std::make_unique<Expression::Node>();
+        node->kind = kind;
+        node->op   = op;
+        node->args = std::move(args);
+        return node;
+      }
+
+      NodePtr
+      expression()
+      {
+        NodePtr left = term();
+        for (;;)
+          {
+            if (accept('+'))
+              left = binary("+", std::move(left), term());
+            else if (accept('-'))
+              left = binary("-", std::move(left), term());
+            else
+              return left;
+          }
+      }
+
+      NodePtr
+      term()
+      {
+        NodePtr left = factor();
+        for (;;)
+          {
+            if (accept('*'))
+              left = binary("*", std::move(left), factor());
+            else if (accept('/'))
+              left = binary("/", std::move(left), factor());
+            else
+              return left;
+          }
+      }
+
+      NodePtr
+      factor()
+      {
+        NodePtr base = unary();
+        if (accept('^'))
+          return binary("^", std::move(base), factor());
+        return base;
+      }
+
+      NodePtr
+      unary()
+      {
+        if (accept('-'))
+          {
+            std::vector<NodePtr> args;
+            args.push_back(unary());
+            return make(Expression::Node::unary, "-", std::move(args));
+          }
+        accept('+');
+        return primary();
+      }
+
+      NodePtr
+      binary(const std::string &op, NodePtr a, NodePtr b)
+      {
+        std::vector<NodePtr> args;
+        args.push_back(std::move(a));
+        args.push_back(std::move(b));
+        return make(Expression::Node::binary, op, std::move(args));
+      }
+
+      NodePtr
+      primary()
+      {
+        skip_space();
+        if (position >= text.size())
+          fail("unexpected end of expression");
+        if (accept('('))
+          {
+            NodePtr inner = expression();
+            if (!accept(')'))
+              fail("missing ')'");
+            return inner;
+          }
+        const char c = text[position];
+        if (std::isdigit(c) || c == '.')
+          {
+            std::size_t length = 0;
+            const double value = std::stod(text.substr(position), &length);
+            position += length;
+            auto node   = std::make_unique<Expression::Node>();
+            node->kind  = Expression::Node::constant;
+            node->value = value;
+            return node;
+          }
+        if (std::isalpha(c) || c == '_')
+          {
+            const std::size_t start = position;
+            while (position < text.size() &&
+                   (std::isalnum(text[position]) || text[position] == '_'))
+              ++position;
+            const std::string name = text.substr(start, position - start);
+            if (accept('('))
+              return function(name);
+            for (unsigned int i = 0; i < variables.size(); ++i)
+              if (variables[i] == name)
+                {
+                  auto node   = std::make_unique<Expression::Node>();
+                  node->kind  = Expression::Node::variable;
+                  node->index = i;
+                  return node;
+                }
+            const auto constant = constants.find(name);
+            if (constant == constants.end())
+              fail("unknown name '" + name + "'");
+            auto node   = std::make_unique<Expression::Node>();
+            node->kind  = Expression::Node::constant;
+            node->value = constant->second;
+            return node;
+          }
+        fail("unexpected '" + std::string(1, c) + "'");
+      }
+
+      NodePtr
+      function(const std::string &name)
+      {
+        static const std::set<std::string> one = {"sin",  "cos",  "tan",
+                                                  "exp",  "log",  "sqrt",
+                                                  "abs",  "tanh", "sinh",
+                                                  "cosh", "atan", "pos"};
+        static const std::set<std::string> two = {"pow", "max", "min"};
+        if (!one.count(name) && !two.count(name))
+          fail("unknown function '" + name + "'");
+        std::vector<NodePtr> args;
+        args.push_back(expression());
+        if (two.count(name))
+          {
+            if (!accept(','))
+              fail("'" + name + "' needs two arguments");
+            args.push_back(expression());
+          }
+        if (!accept(')'))
+          fail("missing ')' after the arguments of '" + name + "'");
+        return make(Expression::Node::function, name, std::move(args));
+      }
+
+      const std::string                    text;
+      const std::vector<std::string> &     variables;
+      const std::map<std::string, double> &constants;
+      const std::string                    parameter_name;
+      std::size_t                          position = 0;
+    };
+  } // namespace
+
+  Expression::Expression(const std::string &                  text,
+                         const std::vector<std::string> &     variables,
+                         const std::map<std::string, double> &constants,
+                         const std::string &                  parameter_name)
+    : root(Parser(text, variables, constants, parameter_name).parse())
+  {}
+} // namespace hemicontact

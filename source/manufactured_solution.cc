@@ -1,0 +1,257 @@
+#include <deal.II/base/utilities.h>
+#include <deal.II/lac/vector.h>
+
+#include <hemicontact/input_error.h>
+#include <hemicontact/manufactured_solution.h>
+
+#include <Sacado.hpp>
+
+#include <cmath>
+
+namespace hemicontact
+{
+  namespace
+  {
+    std::map<std::string, double>
+    constants_of(const std::string &text)
+    {
+      std::map<std::string, double> constants;
+      constants["pi"] = M_PI;
+      for (const std::string &item : Utilities::split_string_list(text, ','))
+        {
+          const auto kv = Utilities::split_string_list(item, '=');
+          if (kv.size() == 2)
+            constants[kv[0]] = Utilities::string_to_double(kv[1]);
+        }
+      return constants;
+    }
+
+    std::vector<std::string>
+    variable_names(const int dim)
+    {
+      return dim == 2 ? std::vector<std::string>{"x", "y", "t"} :
+                        std::vector<std::string>{"x", "y", "z", "t"};
+    }
+
+    std::vector<Expression>
+    parse_vector(const std::string &text, const int dim,
+                 const std::map<std::string, double> &constants,
+                 const std::string &name)
+    {
+      std::vector<std::string> parts = Utilities::split_string_list(text, ';');
+      if (parts.size() == 1 && dim > 1)
+        parts.assign(dim, parts[0]);
+      require(static_cast<int>(parts.size()) == dim,
+              "manufactured solution: '" + name + "' needs " +
+                std::to_string(dim) + " expressions separated by ';'.");
+      std::vector<Expression> result;
+      for (const std::string &part : parts)
+        result.emplace_back(part, variable_names(dim), constants,
+                            "manufactured solution/" + name);
+      return result;
+    }
+  } // namespace
+
+  template <int dim>
+  ManufacturedSolution<dim>::ManufacturedSolution(const Parameters &parameters,
+                                                  const NormalLaw & law)
+    : law(law)
+    , material(parameters.material)
+  {
+    const auto constants = constants_of(parameters.data.constants);
+    const ManufacturedParameters &m = parameters.manufactured;
+    displacement = parse_vector(m.exact_displacement, dim, constants,
+                                "exact displacement");
+    normal_multiplier = std::make_unique<Expression>(
+      m.normal_multiplier, variable_names(dim), constants,
+      "manufactured solution/normal multiplier");
+    tangential_multiplier = parse_vector(m.tangential_multiplier, dim,
+                                         constants, "tangential multiplier");
+    friction_bound = parse_function<dim>(parameters.data.friction_bound, 1,
+                                         parameters.data.constants,
+                                         "friction bound");
+  }
+
+  template <int dim>
+  typename ManufacturedSolution<dim>::Values
+  ManufacturedSolution<dim>::evaluate(const Point<dim> &p, const double t) const
+  {
+    // three nested forward-AD levels: d/dt (outer), d/d(x,t), d/dx (inner)
+    using T1 = Sacado::Fad::SFad<double, dim>;
+    using T2 = Sacado::Fad::SFad<T1, dim + 1>;
+    using T3 = Sacado::Fad::SFad<T2, 1>;
+
+    std::vector<T3> variables(dim + 1);
+    for (int i = 0; i < dim; ++i)
+      variables[i] = T3(T2(dim + 1, i, T1(dim, i, p[i])));
+    variables[dim] = T3(1, 0, T2(dim + 1, dim, T1(t)));
+
+    Values v;
+    Tensor<3, dim> hessian_u, hessian_w; // [component][i][j]
+    for (int c = 0; c < dim; ++c)
+      {
+        const T3 r = displacement[c].evaluate(variables);
+        v.u[c]     = r.val().val().val();
+        v.w[c]     = r.dx(0).val().val();
+        v.w_dot[c] = r.dx(0).dx(dim).val();
+        for (int i = 0; i < dim; ++i)
+          {
+            v.grad_u[c][i] = r.val().val().dx(i);
+            v.grad_w[c][i] = r.dx(0).val().dx(i);
+            for (int j = 0; j < dim; ++j)
+              {
+                hessian_u[c][i][j] = r.val().dx(j).dx(i);
+                hessian_w[c][i][j] = r.dx(0).dx(j).dx(i);
+              }
+          }
+      }
+
+    // Div(2 mu eps(v) + lambda div v I)_i = mu lap v_i + (mu+lambda) d_i div v
+    const auto div_of = [&](const Tensor<3, dim> &h, const double mu,
+                            const double lambda) {
+      Tensor<1, dim> result;
+      for (int i = 0; i < dim; ++i)
+        for (int j = 0; j < dim; ++j)
+          result[i] += mu * h[i][j][j] + (mu + lambda) * h[j][i][j];
+      return result;
+    };
+    v.div_sigma =
+      div_of(hessian_w, material.mu_viscous(), material.lambda_viscous()) +
+      div_of(hessian_u, material.mu_elastic(), material.lambda_elastic());
+    return v;
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  ManufacturedSolution<dim>::stress(const Values &v) const
+  {
+    return material.stress(symmetrize(v.grad_w), symmetrize(v.grad_u));
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  ManufacturedSolution<dim>::body_force(const Point<dim> &p,
+                                        const double      t) const
+  {
+    const Values v = evaluate(p, t);
+    return material.density() * v.w_dot - v.div_sigma;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  ManufacturedSolution<dim>::surface_traction(const Point<dim> &    p,
+                                              const Tensor<1, dim> &normal,
+                                              const double          t) const
+  {
+    return stress(evaluate(p, t)) * normal;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  ManufacturedSolution<dim>::contact_traction(const Point<dim> &    p,
+                                              const Tensor<1, dim> &normal,
+                                              const double          t) const
+  {
+    const Values         v      = evaluate(p, t);
+    const double         w_n    = v.w * normal;
+    const Tensor<1, dim> w_t    = v.w - w_n * normal;
+    const double         scale  = 1e-13 * (1 + v.w.norm());
+    const double         bound  = friction_bound->value(p);
+
+    std::vector<double> at(dim + 1);
+    for (int i = 0; i < dim; ++i)
+      at[i] = p[i];
+    at[dim] = t;
+
+    // xi_nu in dj(w_nu): the given multiplier where w_nu = 0
+    const double xi_n = std::abs(w_n) <= scale ?
+                          normal_multiplier->evaluate(at) :
+                          law.subgradient(w_n);
+    // xi_tau in F_b d|w_tau|: the given multiplier where w_tau = 0
+    Tensor<1, dim> xi_t;
+    if (w_t.norm() <= scale)
+      {
+        for (int c = 0; c < dim; ++c)
+          xi_t[c] = tangential_multiplier[c].evaluate(at);
+        xi_t -= (xi_t * normal) * normal;
+      }
+    else
+      xi_t = bound * w_t / w_t.norm();
+
+    return stress(v) * normal + xi_n * normal + xi_t;
+  }
+
+  template <int dim>
+  ProblemData<dim>
+  ManufacturedSolution<dim>::make_problem_data() const
+  {
+    ProblemData<dim> data;
+    // f0 and the initial fields as deal.II Functions (time from get_time())
+    class Field : public Function<dim>
+    {
+    public:
+      Field(const ManufacturedSolution<dim> &m, const int which)
+        : Function<dim>(dim)
+        , m(m)
+        , which(which)
+      {}
+      void
+      vector_value(const Point<dim> &p, Vector<double> &values) const override
+      {
+        const double   t = this->get_time();
+        Tensor<1, dim> f;
+        if (which == 0)
+          f = m.body_force(p, t);
+        else if (which == 1)
+          f = m.evaluate(p, t).u;
+        else
+          f = m.evaluate(p, t).w;
+        for (int c = 0; c < dim; ++c)
+          values(c) = f[c];
+      }
+      double
+      value(const Point<dim> &p, const unsigned int c) const override
+      {
+        Vector<double> v(dim);
+        vector_value(p, v);
+        return v(c);
+      }
+
+    private:
+      const ManufacturedSolution<dim> &m;
+      const int                        which;
+    };
+
+    data.body_force           = std::make_unique<Field>(*this, 0);
+    data.initial_displacement = std::make_unique<Field>(*this, 1);
+    data.initial_velocity     = std::make_unique<Field>(*this, 2);
+    data.surface_traction     = std::make_unique<Functions::ZeroFunction<dim>>(dim);
+    data.contact_traction     = std::make_unique<Functions::ZeroFunction<dim>>(dim);
+    // the friction bound of the parameter file, shared with this object
+    struct Bound : public Function<dim>
+    {
+      explicit Bound(const Function<dim> &f)
+        : f(f)
+      {}
+      double
+      value(const Point<dim> &p, const unsigned int) const override
+      {
+        return f.value(p);
+      }
+      const Function<dim> &f;
+    };
+    data.friction_bound = std::make_unique<Bound>(*friction_bound);
+    data.surface_traction_with_normal =
+      [this](const Point<dim> &p, const Tensor<1, dim> &n, double t) {
+        return surface_traction(p, n, t);
+      };
+    data.contact_traction_with_normal =
+      [this](const Point<dim> &p, const Tensor<1, dim> &n, double t) {
+        return contact_traction(p, n, t);
+      };
+    return data;
+  }
+
+  template class ManufacturedSolution<2>;
+  template class ManufacturedSolution<3>;
+} // namespace hemicontact
