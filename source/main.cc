@@ -99,8 +99,7 @@ main(int argc, char **argv)
   catch (const SolverFailure &e)
     {
       if (root)
-        std::cerr << "hemicontact: solver failure: " << e.what()
-                  << " The last converged state was written." << std::endl;
+        std::cerr << "hemicontact: solver failure: " << e.what() << std::endl;
       return 3;
     }
   catch (const dealii::ExceptionBase &e)

@@ -53,7 +53,10 @@ namespace hemicontact
                       "Gmsh .msh file (relative to the working directory) for "
                       "mesh = gmsh.");
     prm.declare_entry("global refinements", "3", Patterns::Integer(0, 20),
-                      "Number of uniform refinements of the coarse mesh.");
+                      "Number of uniform refinements of the coarse mesh. For "
+                      "a simplex rectangle/box the mesh is instead built "
+                      "with 2^r times the subdivisions (same mesh size, "
+                      "better shapes than refined tetrahedra).");
     prm.leave_subsection();
   }
 
@@ -566,6 +569,22 @@ namespace hemicontact
     }
     return read_with(prm, "'" + filename + "'",
                      [&]() { prm.parse_input(filename); });
+  }
+
+  Parameters
+  read_parameters(ParameterHandler &prm, const std::string &filename,
+                  const std::string &overrides)
+  {
+    {
+      std::ifstream probe(filename);
+      require(static_cast<bool>(probe),
+              "cannot open the parameter file '" + filename +
+                "': no such file or not readable.");
+    }
+    return read_with(prm, "'" + filename + "'", [&]() {
+      prm.parse_input(filename);
+      prm.parse_input_from_string(overrides);
+    });
   }
 
   Parameters

@@ -5,6 +5,8 @@
 
 #include <hemicontact/parameters.h>
 
+#include <vector>
+
 namespace hemicontact
 {
   using namespace dealii;
@@ -24,14 +26,27 @@ namespace hemicontact
     double E_u_H1    = 0;
   };
 
+  /** One level of a convergence study. */
+  struct LevelResult
+  {
+    double       h = 0, k = 0;
+    unsigned int n_dofs = 0, n_steps = 0;
+    ErrorNorms   errors;
+    double       mean_newton_iterations = 0;
+    /** shares of (node, step) pairs: separating, normal stick, damped,
+     *  tangential stick, slip */
+    double branch_share[5] = {0, 0, 0, 0, 0};
+  };
+
   /**
    * Run a manufactured-solution problem once or as a convergence study
    * (parameters.study): print a ConvergenceTable with observed orders and
    * write convergence.csv to the output directory. @p prm holds the parsed
-   * file (the normal law is created from it for every level).
+   * file (the normal law is created from it for every level). Returns the
+   * results per level.
    */
   template <int dim>
-  void
+  std::vector<LevelResult>
   run_convergence_study(const Parameters &parameters, ParameterHandler &prm,
                         MPI_Comm comm);
 } // namespace hemicontact

@@ -182,6 +182,14 @@ namespace hemicontact
   Parameters
   read_parameters(ParameterHandler &prm, const std::string &filename);
 
+  /**
+   * Read @p filename, then the entries of @p overrides (parameter-file
+   * text) on top of it -- e.g. coarser levels of a shipped study in a test.
+   */
+  Parameters
+  read_parameters(ParameterHandler &prm, const std::string &filename,
+                  const std::string &overrides);
+
   /** Same, from a string holding a parameter file (used by tests). */
   Parameters
   read_parameters_from_string(ParameterHandler &prm, const std::string &text);

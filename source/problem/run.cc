@@ -91,11 +91,15 @@ namespace hemicontact
           {
             stats = advance();
           }
-        catch (const SolverFailure &)
+        catch (const SolverFailure &failure)
           {
             if (interval > 0)
               write_vtu();
-            throw;
+            throw SolverFailure(std::string(failure.what()) +
+                                " The last converged state (step " +
+                                std::to_string(step_number) +
+                                ") was written to '" +
+                                parameters.output.directory + "'.");
           }
         total_newton += stats.newton_iterations;
         max_newton = std::max(max_newton, stats.newton_iterations);

@@ -97,10 +97,11 @@ namespace hemicontact
   } // namespace
 
   template <int dim>
-  void
+  std::vector<LevelResult>
   run_convergence_study(const Parameters &parameters, ParameterHandler &prm,
                         MPI_Comm comm)
   {
+    std::vector<LevelResult> results;
     const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
     const std::string &type     = parameters.study.type;
     const unsigned int n_levels = type == "single" ? 1 : parameters.study.n_levels;
@@ -164,6 +165,17 @@ namespace hemicontact
         const double h = mesh_size(problem.get_dof_handler(), comm);
         const double k = problem.get_time_step();
 
+        LevelResult result;
+        result.h                      = h;
+        result.k                      = k;
+        result.n_dofs                 = problem.get_dof_handler().n_dofs();
+        result.n_steps                = n_steps;
+        result.errors                 = errors;
+        result.mean_newton_iterations = double(newton) / n_steps;
+        for (unsigned int b = 0; b < 5; ++b)
+          result.branch_share[b] = branch[b] / n_pairs_normal;
+        results.push_back(result);
+
         table.add_value("level", level);
         table.add_value("h", h);
         table.add_value("k", k);
@@ -219,10 +231,11 @@ namespace hemicontact
                   << "error ratio between levels)\n";
         table.write_text(std::cout, TableHandler::org_mode_table);
       }
+    return results;
   }
 
-  template void
+  template std::vector<LevelResult>
   run_convergence_study<2>(const Parameters &, ParameterHandler &, MPI_Comm);
-  template void
+  template std::vector<LevelResult>
   run_convergence_study<3>(const Parameters &, ParameterHandler &, MPI_Comm);
 } // namespace hemicontact
