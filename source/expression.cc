@@ -3,8 +3,8 @@
 #include <hemicontact/expression.h>
 #include <hemicontact/input_error.h>
 
+#include <algorithm>
 #include <cctype>
-#include <set>
 
 namespace hemicontact
 {
@@ -191,16 +191,15 @@ namespace hemicontact
       NodePtr
       function(const std::string &name)
       {
-        static const std::set<std::string> one = {"sin",  "cos",  "tan",
-                                                  "exp",  "log",  "sqrt",
-                                                  "abs",  "tanh", "sinh",
-                                                  "cosh", "atan", "pos"};
-        static const std::set<std::string> two = {"pow", "max", "min"};
-        if (!one.count(name) && !two.count(name))
+        const auto &names = Expression::function_names();
+        const auto  found = std::find(names.begin(), names.end(), name);
+        if (found == names.end())
           fail("unknown function '" + name + "'");
+        const int  id           = found - names.begin();
+        const bool two_argument = id >= 12;
         std::vector<NodePtr> args;
         args.push_back(expression());
-        if (two.count(name))
+        if (two_argument)
           {
             if (!accept(','))
               fail("'" + name + "' needs two arguments");
@@ -208,7 +207,9 @@ namespace hemicontact
           }
         if (!accept(')'))
           fail("missing ')' after the arguments of '" + name + "'");
-        return make(Expression::Node::function, name, std::move(args));
+        NodePtr node      = make(Expression::Node::function, name, std::move(args));
+        node->function_id = id;
+        return node;
       }
 
       const std::string                    text;
@@ -218,6 +219,15 @@ namespace hemicontact
       std::size_t                          position = 0;
     };
   } // namespace
+
+  const std::vector<std::string> &
+  Expression::function_names()
+  {
+    static const std::vector<std::string> names = {
+      "sin",  "cos",  "tan",  "exp", "log", "sqrt", "abs", "tanh",
+      "sinh", "cosh", "atan", "pos", "pow", "max",  "min"};
+    return names;
+  }
 
   Expression::Expression(const std::string &                  text,
                          const std::vector<std::string> &     variables,

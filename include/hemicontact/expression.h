@@ -47,8 +47,14 @@ namespace hemicontact
       double                             value = 0;
       unsigned int                       index = 0; ///< variable index
       std::string                        op;        ///< operator/function
+      int function_id = -1; ///< index into function_names()
       std::vector<std::unique_ptr<Node>> args;
     };
+
+    /** The functions the grammar knows, in the order of Node::function_id;
+     *  the first ones take one argument, the last three two. */
+    static const std::vector<std::string> &
+    function_names();
 
   private:
     template <typename Number>
@@ -123,38 +129,42 @@ namespace hemicontact
           }
         default:
           {
-            const std::string &f = node.op;
-            const Number       a = eval(*node.args[0], values);
-            if (f == "sin")
-              return sin(a);
-            if (f == "cos")
-              return cos(a);
-            if (f == "tan")
-              return tan(a);
-            if (f == "exp")
-              return exp(a);
-            if (f == "log")
-              return log(a);
-            if (f == "sqrt")
-              return sqrt(a);
-            if (f == "abs")
-              return a < 0 ? Number(-a) : a;
-            if (f == "tanh")
-              return tanh(a);
-            if (f == "sinh")
-              return sinh(a);
-            if (f == "cosh")
-              return cosh(a);
-            if (f == "atan")
-              return atan(a);
-            if (f == "pos")
-              return a > 0 ? a : Number(0.);
+            const Number a = eval(*node.args[0], values);
+            switch (node.function_id)
+              {
+                case 0:
+                  return sin(a);
+                case 1:
+                  return cos(a);
+                case 2:
+                  return tan(a);
+                case 3:
+                  return exp(a);
+                case 4:
+                  return log(a);
+                case 5:
+                  return sqrt(a);
+                case 6:
+                  return a < 0 ? Number(-a) : a;
+                case 7:
+                  return tanh(a);
+                case 8:
+                  return sinh(a);
+                case 9:
+                  return cosh(a);
+                case 10:
+                  return atan(a);
+                case 11:
+                  return a > 0 ? a : Number(0.);
+                default:
+                  break;
+              }
             const Number b = eval(*node.args[1], values);
-            if (f == "pow")
+            if (node.function_id == 12)
               return pow(a, b);
-            if (f == "max")
+            if (node.function_id == 13)
               return a > b ? a : b;
-            return a < b ? a : b; // min
+            return a < b ? a : b; // 14: min
           }
       }
   }

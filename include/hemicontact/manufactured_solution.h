@@ -44,6 +44,10 @@ namespace hemicontact
     Values
     evaluate(const Point<dim> &p, const double t) const;
 
+    /** Only u, w and their gradients (first derivatives: cheaper). */
+    Values
+    evaluate_fields(const Point<dim> &p, const double t) const;
+
     /** sigma = A eps(w) + B eps(u). */
     SymmetricTensor<2, dim>
     stress(const Values &v) const;

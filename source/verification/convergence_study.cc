@@ -42,9 +42,9 @@ namespace hemicontact
       w = problem.get_velocity();
       u = problem.get_displacement();
 
-      // one order more than the elements need
+      // of higher order than the elements (exact for degree 5)
       const Quadrature<dim> quadrature =
-        dof_handler.get_fe().reference_cell().template get_gauss_type_quadrature<dim>(4);
+        dof_handler.get_fe().reference_cell().template get_gauss_type_quadrature<dim>(3);
       FEValues<dim> fe_values(problem.get_mapping(), dof_handler.get_fe(),
                               quadrature,
                               update_values | update_gradients |
@@ -64,7 +64,8 @@ namespace hemicontact
             fe_values[v].get_function_gradients(u, grad_u_h);
             for (const unsigned int q : fe_values.quadrature_point_indices())
               {
-                const auto ex = exact.evaluate(fe_values.quadrature_point(q), t);
+                const auto ex =
+                  exact.evaluate_fields(fe_values.quadrature_point(q), t);
                 const Tensor<2, dim> gw = ex.grad_w - grad_w_h[q];
                 const Tensor<2, dim> gu = ex.grad_u - grad_u_h[q];
                 const double         JxW = fe_values.JxW(q);

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Run one convergence study of a shipped manufactured-solution case:
+#   bash prm/verification/study.sh CASE TYPE LEVELS REFINEMENT TIME_STEP [NP]
+# e.g. bash prm/verification/study.sh mms_2d_quad_exponential coupled 5 3 0.125
+# CASE is a file prm/verification/CASE.prm; TYPE is h, k or coupled; level 0
+# uses REFINEMENT global refinements and TIME_STEP. The table is printed and
+# written to results/CASE-TYPE/convergence.csv (with the study's log).
+set -euo pipefail
+root="$(cd "$(dirname "$0")/../.." && pwd)"
+case_name=$1; type=$2; levels=$3; refinement=$4; time_step=$5; np=${6:-1}
+out="$root/results/$case_name-$type"
+mkdir -p "$out"
+{
+  cat "$root/prm/verification/$case_name.prm"
+  printf 'subsection geometry\n  set global refinements = %s\nend\n' "$refinement"
+  printf 'subsection time\n  set time step = %s\nend\n' "$time_step"
+  printf 'subsection convergence study\n  set type = %s\n  set levels = %s\nend\n' "$type" "$levels"
+  printf 'subsection output\n  set directory = %s\nend\n' "$out"
+} > "$out/study.prm"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+start=$(date +%s)
+if [ "$np" -gt 1 ]; then
+  mpirun -np "$np" "$root/build/hemicontact" "$out/study.prm" | tee "$out/study.log"
+else
+  "$root/build/hemicontact" "$out/study.prm" | tee "$out/study.log"
+fi
+echo "wall time: $(( $(date +%s) - start )) s" | tee -a "$out/study.log"
