@@ -32,7 +32,7 @@ figures = out_root / "doc" / "figures"
 figures.mkdir(parents=True, exist_ok=True)
 studies = sorted(p for p in results.glob("*/convergence.csv"))
 print(f"{len(studies)} studies found in {results}")
-assert studies, "no results/*/convergence.csv: run prm/verification/study.sh first"""),
+assert studies, "no results/*/convergence.csv: run prm/verification/study.sh first" """),
 ("code", """errors = ["E_H", "E_V", "E_u", "E_V_H1", "E_u_H1"]
 
 def with_orders(df):
