@@ -12,20 +12,6 @@ namespace hemicontact
 {
   namespace
   {
-    std::map<std::string, double>
-    constants_of(const std::string &text)
-    {
-      std::map<std::string, double> constants;
-      constants["pi"] = M_PI;
-      for (const std::string &item : Utilities::split_string_list(text, ','))
-        {
-          const auto kv = Utilities::split_string_list(item, '=');
-          if (kv.size() == 2)
-            constants[kv[0]] = Utilities::string_to_double(kv[1]);
-        }
-      return constants;
-    }
-
     std::vector<std::string>
     variable_names(const int dim)
     {
@@ -58,7 +44,7 @@ namespace hemicontact
     : law(law)
     , material(parameters.material)
   {
-    const auto constants = constants_of(parameters.data.constants);
+    const auto constants = parse_constants(parameters.data.constants);
     const ManufacturedParameters &m = parameters.manufactured;
     displacement = parse_vector(m.exact_displacement, dim, constants,
                                 "exact displacement");

@@ -14,31 +14,6 @@ namespace hemicontact
 {
   namespace
   {
-    std::map<std::string, double>
-    parse_constants(const std::string &text)
-    {
-      std::map<std::string, double> constants;
-      constants["pi"] = numbers::PI;
-      for (const std::string &item : Utilities::split_string_list(text, ','))
-        {
-          const std::vector<std::string> kv =
-            Utilities::split_string_list(item, '=');
-          require(kv.size() == 2 && !kv[0].empty(),
-                  "data: 'constants' entry '" + item +
-                    "' is not of the form name=value.");
-          try
-            {
-              constants[kv[0]] = Utilities::string_to_double(kv[1]);
-            }
-          catch (...)
-            {
-              throw InputError("data: 'constants' entry '" + item +
-                               "' does not give a number.");
-            }
-        }
-      return constants;
-    }
-
     bool
     is_number(const std::string &s)
     {
@@ -53,6 +28,31 @@ namespace hemicontact
         }
     }
   } // namespace
+
+  std::map<std::string, double>
+  parse_constants(const std::string &text)
+  {
+    std::map<std::string, double> constants;
+    constants["pi"] = numbers::PI;
+    for (const std::string &item : Utilities::split_string_list(text, ','))
+      {
+        const std::vector<std::string> kv =
+          Utilities::split_string_list(item, '=');
+        require(kv.size() == 2 && !kv[0].empty(),
+                "data: 'constants' entry '" + item +
+                  "' is not of the form name=value.");
+        try
+          {
+            constants[kv[0]] = Utilities::string_to_double(kv[1]);
+          }
+        catch (...)
+          {
+            throw InputError("data: 'constants' entry '" + item +
+                             "' does not give a number.");
+          }
+      }
+    return constants;
+  }
 
   template <int dim>
   std::unique_ptr<Function<dim>>

@@ -6,6 +6,7 @@
 #include <hemicontact/parameters.h>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -55,6 +56,13 @@ namespace hemicontact
   template <int dim>
   ProblemData<dim>
   make_problem_data(const DataParameters &data);
+
+  /**
+   * The user constants of 'data/constants' ("a=1, b=2") plus pi; a
+   * malformed entry throws an InputError.
+   */
+  std::map<std::string, double>
+  parse_constants(const std::string &text);
 
   /**
    * A FunctionParser for one parameter, with the variables x, y[, z], t and
