@@ -51,8 +51,10 @@ namespace hemicontact
   void
   ContactProblem<dim>::run()
   {
-    open_tables();
+    // validate everything (mesh, boundary ids, data) before touching the
+    // output directory, so that a bad input does not truncate earlier output
     setup();
+    open_tables();
     setup_probes();
 
     const unsigned int n_nodes = Utilities::MPI::sum(

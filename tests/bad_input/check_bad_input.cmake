@@ -4,7 +4,8 @@
 #   # expect-message: REGEX      (matched against standard error)
 #   # run-with: ARGUMENT         (optional: run with this instead of the file)
 # and that the message is one clean paragraph (no stack trace, no deal.II
-# exception banner).
+# exception banner), and that an input error (exit 2) leaves the output
+# of an earlier run intact.
 file(STRINGS ${PRM} _lines)
 foreach(_line ${_lines})
   if(_line MATCHES "^# expect-exit: *([0-9]+)")
@@ -23,6 +24,8 @@ get_filename_component(_name ${PRM} NAME_WE)
 set(_dir ${WORKDIR}/${_name})
 file(REMOVE_RECURSE ${_dir})
 file(MAKE_DIRECTORY ${_dir})
+# output of an earlier run in the default output directory must survive
+file(WRITE ${_dir}/output/steps.csv "an earlier run\n")
 if(NOT DEFINED _argument)
   set(_argument ${PRM})
 endif()
@@ -39,5 +42,10 @@ if(NOT _err MATCHES "${_message}")
 endif()
 if(_err MATCHES "Stacktrace|An error occurred in line|-------")
   message(FATAL_ERROR "the message is not a clean paragraph:\n${_err}")
+endif()
+# an input error is found before anything is written
+file(READ ${_dir}/output/steps.csv _previous)
+if(_exit EQUAL 2 AND NOT _previous STREQUAL "an earlier run\n")
+  message(FATAL_ERROR "the failed run changed output/steps.csv of an earlier run")
 endif()
 message(STATUS "ok: exit ${_rc}: ${_err}")
