@@ -26,16 +26,16 @@ namespace hemicontact
       double w_L2 = 0, w_V = 0, w_H1 = 0, u_V = 0, u_H1 = 0;
     };
 
+    /** @p relevant: the locally relevant dofs of the problem's mesh. */
     template <int dim>
     StepErrors
     step_errors(const ContactProblem<dim> &          problem,
                 const ManufacturedSolution<dim> &    exact,
                 const double                         t,
+                const IndexSet &                     relevant,
                 MPI_Comm                             comm)
     {
       const DoFHandler<dim> &dof_handler = problem.get_dof_handler();
-      IndexSet               relevant;
-      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
       TrilinosWrappers::MPI::Vector w(dof_handler.locally_owned_dofs(),
                                       relevant, comm);
       TrilinosWrappers::MPI::Vector u(w);
@@ -137,6 +137,9 @@ namespace hemicontact
         ContactProblem<dim> problem(p, create_normal_law(prm),
                                     exact.make_problem_data(), comm);
         problem.setup();
+        IndexSet relevant;
+        DoFTools::extract_locally_relevant_dofs(problem.get_dof_handler(),
+                                                relevant);
 
         ErrorNorms   errors;
         double       sum_V = 0, sum_V_H1 = 0;
@@ -145,7 +148,8 @@ namespace hemicontact
         while (!problem.finished())
           {
             const StepStatistics s = problem.advance();
-            const StepErrors     e = step_errors(problem, exact, s.time, comm);
+            const StepErrors     e =
+              step_errors(problem, exact, s.time, relevant, comm);
             errors.E_H = std::max(errors.E_H, std::sqrt(e.w_L2));
             errors.E_u = std::max(errors.E_u, std::sqrt(e.u_V));
             errors.E_u_H1 = std::max(errors.E_u_H1, std::sqrt(e.u_H1));
