@@ -561,14 +561,7 @@ namespace hemicontact
   Parameters
   read_parameters(ParameterHandler &prm, const std::string &filename)
   {
-    {
-      std::ifstream probe(filename);
-      require(static_cast<bool>(probe),
-              "cannot open the parameter file '" + filename +
-                "': no such file or not readable.");
-    }
-    return read_with(prm, "'" + filename + "'",
-                     [&]() { prm.parse_input(filename); });
+    return read_parameters(prm, filename, "");
   }
 
   Parameters
@@ -583,7 +576,8 @@ namespace hemicontact
     }
     return read_with(prm, "'" + filename + "'", [&]() {
       prm.parse_input(filename);
-      prm.parse_input_from_string(overrides);
+      if (!overrides.empty())
+        prm.parse_input_from_string(overrides);
     });
   }
 
