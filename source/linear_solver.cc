@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe.h>
 #include <deal.II/lac/solver_cg.h>
@@ -9,6 +10,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include <cmath>
 #include <map>
 
 namespace hemicontact
@@ -72,12 +74,17 @@ namespace hemicontact
               }
         }
     amg.reset();
+    step_amg.reset();
+    contact_amg.reset();
+    reference_work_per_decade = 0;
+    lost_seconds              = 0;
   }
 
-  void
-  LinearSolver::setup_preconditioner(
-    const TrilinosWrappers::SparseMatrix &matrix)
+  std::unique_ptr<TrilinosWrappers::PreconditionAMG>
+  LinearSolver::make_amg(const TrilinosWrappers::SparseMatrix &matrix)
   {
+    Assert(n_modes > 0, ExcMessage("set_rigid_body_modes() was not called."));
+    Timer timer;
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
     data.higher_order_elements = false;
@@ -91,9 +98,48 @@ namespace hemicontact
     ml_list.set("null space: dimension", static_cast<int>(n_modes));
     ml_list.set("null space: vectors", rigid_body_modes.data());
 
-    amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-    amg->initialize(matrix, ml_list);
+    auto result = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    result->initialize(matrix, ml_list);
     ++setups;
+    last_setup_seconds = Utilities::MPI::max(timer.wall_time(), mpi_communicator);
+    setup_wall_seconds += last_setup_seconds;
+    reference_work_per_decade = 0;
+    lost_seconds              = 0;
+    return result;
+  }
+
+  const TrilinosWrappers::PreconditionAMG &
+  LinearSolver::step_preconditioner(
+    const TrilinosWrappers::SparseMatrix &step_matrix)
+  {
+    if (step_amg == nullptr)
+      step_amg = make_amg(step_matrix);
+    return *step_amg;
+  }
+
+  template <typename OperatorType, typename PreconditionerType>
+  unsigned int
+  LinearSolver::run_cg(const OperatorType &                 op,
+                       const PreconditionerType &           preconditioner,
+                       TrilinosWrappers::MPI::Vector &      x,
+                       const TrilinosWrappers::MPI::Vector &b,
+                       SolverControl &                      control)
+  {
+    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    try
+      {
+        cg.solve(op, x, b, preconditioner);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        throw SolverFailure(
+          "the linear solver (CG + AMG) did not converge in " +
+          std::to_string(e.last_step) + " iterations (residual " +
+          std::to_string(e.last_residual) + ", target " +
+          std::to_string(control.tolerance()) +
+          "); raise 'linear solver/max iterations' or try 'type = direct'.");
+      }
+    return control.last_step();
   }
 
   unsigned int
@@ -112,29 +158,92 @@ namespace hemicontact
         return 1;
       }
 
-    Assert(n_modes > 0, ExcMessage("set_rigid_body_modes() was not called."));
     if (!reuse_preconditioner || amg == nullptr)
-      setup_preconditioner(matrix);
-    const double  b_norm = b.l2_norm();
+      amg = make_amg(matrix);
     SolverControl control(parameters.max_iterations,
-                          std::max(parameters.relative_tolerance * b_norm,
+                          std::max(parameters.relative_tolerance * b.l2_norm(),
                                    1e-300));
-    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-    try
-      {
-        cg.solve(matrix, x, b, *amg);
-      }
-    catch (const SolverControl::NoConvergence &e)
-      {
-        throw SolverFailure(
-          "the linear solver (CG + AMG) did not converge in " +
-          std::to_string(e.last_step) + " iterations (residual " +
-          std::to_string(e.last_residual) + ", target " +
-          std::to_string(control.tolerance()) +
-          "); raise 'linear solver/max iterations' or try 'type = direct'.");
-      }
-    return control.last_step();
+    return run_cg(matrix, *amg, x, b, control);
   }
+
+  unsigned int
+  LinearSolver::solve_with_step_preconditioner(
+    const TrilinosWrappers::SparseMatrix &step_matrix,
+    TrilinosWrappers::MPI::Vector &       x,
+    const TrilinosWrappers::MPI::Vector & b,
+    const double                          relative_tolerance)
+  {
+    if (parameters.type == "direct")
+      return solve(step_matrix, x, b);
+    const double tolerance = relative_tolerance > 0 ?
+                               relative_tolerance :
+                               parameters.relative_tolerance;
+    SolverControl control(parameters.max_iterations,
+                          std::max(tolerance * b.l2_norm(), 1e-300));
+    return run_cg(step_matrix, step_preconditioner(step_matrix), x, b,
+                  control);
+  }
+
+  template <int dim>
+  unsigned int
+  LinearSolver::solve_projected(const ProjectedOperator<dim> &        op,
+                                const TrilinosWrappers::SparseMatrix &step_matrix,
+                                TrilinosWrappers::MPI::Vector &       x,
+                                const TrilinosWrappers::MPI::Vector & b,
+                                const double reduction,
+                                const double absolute_tolerance)
+  {
+    const ProjectedPreconditioner<dim> preconditioner(
+      op, contact_amg ? *contact_amg : step_preconditioner(step_matrix));
+    ReductionControl control(parameters.max_iterations,
+                             std::max(absolute_tolerance, 1e-300), reduction);
+    Timer              timer(mpi_communicator, /*sync_lap_times=*/true);
+    const unsigned int n = run_cg(op, preconditioner, x, b, control);
+    timer.stop();
+
+    // Krylov work per decade of reduction, against the first solve after
+    // the last AMG build; the time of the surplus iterations accumulates
+    const double decades =
+      std::log10(std::max(control.initial_value(), 1e-300) /
+                 std::max(control.last_value(), 1e-300));
+    if (n > 0 && decades > 0.5)
+      {
+        const double work_per_decade = n / decades;
+        if (reference_work_per_decade == 0)
+          reference_work_per_decade = work_per_decade;
+        const double surplus =
+          std::max(0., n - reference_work_per_decade * decades);
+        lost_seconds += surplus * timer.wall_time() / n;
+      }
+    return n;
+  }
+
+  bool
+  LinearSolver::contact_preconditioner_is_stale() const
+  {
+    const double factor = parameters.preconditioner_rebuild_factor;
+    return factor > 0 && lost_seconds > factor * last_setup_seconds;
+  }
+
+  void
+  LinearSolver::rebuild_contact_preconditioner(
+    const TrilinosWrappers::SparseMatrix &contact_matrix)
+  {
+    contact_amg = make_amg(contact_matrix);
+  }
+
+  template unsigned int
+  LinearSolver::solve_projected<2>(const ProjectedOperator<2> &,
+                                   const TrilinosWrappers::SparseMatrix &,
+                                   TrilinosWrappers::MPI::Vector &,
+                                   const TrilinosWrappers::MPI::Vector &,
+                                   const double, const double);
+  template unsigned int
+  LinearSolver::solve_projected<3>(const ProjectedOperator<3> &,
+                                   const TrilinosWrappers::SparseMatrix &,
+                                   TrilinosWrappers::MPI::Vector &,
+                                   const TrilinosWrappers::MPI::Vector &,
+                                   const double, const double);
 
   template void
   LinearSolver::set_rigid_body_modes<2>(const DoFHandler<2> &,

@@ -324,8 +324,33 @@ namespace hemicontact
                       "'cg amg': conjugate gradients with Trilinos ML AMG "
                       "(rigid-body near-null space); 'direct': sparse direct "
                       "solver (Amesos KLU; small problems).");
+    prm.declare_entry(
+      "newton operator", "projected", Patterns::Selection("projected|assembled"),
+      "How each Newton iteration gets its matrix (with 'cg amg'). "
+      "'projected': the step matrix rho/k M + A and its AMG hierarchy are "
+      "built once per mesh; an iteration only applies the nodal contact "
+      "blocks and projects out the constrained directions. 'assembled': the "
+      "Newton matrix is reassembled with the contact constraints and its AMG "
+      "rebuilt in every iteration. 'direct' always assembles.");
+    prm.declare_entry(
+      "forcing term", "eisenstat-walker",
+      Patterns::Selection("eisenstat-walker|fixed"),
+      "Krylov stopping rule of a Newton iteration (projected operator). "
+      "'eisenstat-walker': reduce the linear residual by eta_k = "
+      "0.9 (r_k/r_{k-1})^2 (capped by 'maximum forcing term', never below "
+      "what the Newton tolerance needs); 'fixed': 'relative tolerance'.");
+    prm.declare_entry("maximum forcing term", "0.1", Patterns::Double(0, 1),
+                      "Largest Eisenstat-Walker forcing term eta_k.");
+    prm.declare_entry(
+      "preconditioner rebuild factor", "0", Patterns::Double(0),
+      "Projected operator: the AMG hierarchy (first of rho/k M + A) is "
+      "rebuilt from rho/k M + A plus the current nodal contact stiffness once "
+      "the Krylov time lost since the last build (iterations per decade above "
+      "those of the first solve after it) exceeds this factor times the time "
+      "of one set-up. 0: never rebuild.");
     prm.declare_entry("relative tolerance", "1e-10", Patterns::Double(0),
-                      "Krylov tolerance relative to the right-hand side.");
+                      "Krylov tolerance relative to the right-hand side (the "
+                      "floor of every linear solve).");
     prm.declare_entry("max iterations", "1000", Patterns::Integer(1),
                       "Krylov iteration limit.");
     prm.declare_entry("aggregation threshold", "1e-4", Patterns::Double(0),
@@ -340,6 +365,11 @@ namespace hemicontact
   {
     prm.enter_subsection("linear solver");
     type                  = prm.get("type");
+    newton_operator       = prm.get("newton operator");
+    forcing_term          = prm.get("forcing term");
+    maximum_forcing_term  = prm.get_double("maximum forcing term");
+    preconditioner_rebuild_factor =
+      prm.get_double("preconditioner rebuild factor");
     relative_tolerance    = prm.get_double("relative tolerance");
     max_iterations        = prm.get_integer("max iterations");
     aggregation_threshold = prm.get_double("aggregation threshold");
@@ -365,6 +395,13 @@ namespace hemicontact
                       "'progress': one line per step; 'quiet': start and end "
                       "only; 'test': rounded, machine-independent lines for "
                       "the test suite.");
+    prm.declare_entry(
+      "performance summary", "false", Patterns::Bool(),
+      "At the end, time one solve of the step matrix rho/k M + A with the "
+      "same solver (fresh AMG set-up plus CG from zero to 'relative "
+      "tolerance') and write performance.csv: iteration counts, wall time "
+      "per step, the time split, peak memory and bytes per dof (bench/ uses "
+      "it).");
     prm.declare_entry("timing summary", "true", Patterns::Bool(),
                       "Print the TimerOutput summary at the end.");
     prm.leave_subsection();
@@ -379,6 +416,7 @@ namespace hemicontact
     probe_points   = prm.get("probe points");
     terminal       = prm.get("terminal");
     timing_summary = prm.get_bool("timing summary");
+    performance_summary = prm.get_bool("performance summary");
     prm.leave_subsection();
     require(!directory.empty(), "output: 'directory' must not be empty.");
   }

@@ -165,6 +165,13 @@ namespace hemicontact
                            const std::vector<NodeMultipliers<dim>> &mult);
 
     /** @name newton.cc */
+    /** Whether Newton iterations reassemble a matrix (else: projected operator). */
+    bool
+    assembles_newton_matrix() const
+    {
+      return parameters.linear_solver.type == "direct" ||
+             parameters.linear_solver.newton_operator == "assembled";
+    }
     StepStatistics
     solve_step();
     void
@@ -173,6 +180,20 @@ namespace hemicontact
     std::vector<NodeMultipliers<dim>>
     node_multipliers(const TrilinosWrappers::MPI::Vector &w_ghosted,
                      const TrilinosWrappers::MPI::Vector &residual_ghosted) const;
+    unsigned int
+    solve_newton_system(const TrilinosWrappers::MPI::Vector &w,
+                        const TrilinosWrappers::MPI::Vector &w_ghosted,
+                        const std::vector<NodeMultipliers<dim>> &mult,
+                        const double                             reduction,
+                        const double                             absolute_tolerance,
+                        TrilinosWrappers::MPI::Vector &          trial);
+    unsigned int
+    solve_projected_system(const TrilinosWrappers::MPI::Vector &w,
+                           const TrilinosWrappers::MPI::Vector &w_ghosted,
+                           const std::vector<NodeMultipliers<dim>> &mult,
+                           const double                             reduction,
+                           const double absolute_tolerance,
+                           TrilinosWrappers::MPI::Vector &trial);
     double
     nonsmooth_residual(const TrilinosWrappers::MPI::Vector &residual,
                        const std::vector<NodeMultipliers<dim>> &mult) const;
@@ -209,6 +230,19 @@ namespace hemicontact
     write_probes();
     void
     print_step(const StepStatistics &stats) const;
+
+    /** @name performance.cc */
+    /** Totals over the run's steps (for the summary line and performance.csv). */
+    struct RunTotals
+    {
+      unsigned int steps             = 0;
+      unsigned int newton_iterations = 0;
+      unsigned int max_newton        = 0;
+      unsigned int linear_iterations = 0;
+      double       step_wall_seconds = 0; ///< advance() only, no output
+    };
+    void
+    write_performance_summary(const RunTotals &totals);
 
     MPI_Comm           mpi_communicator;
     Parameters         parameters;

@@ -3,12 +3,14 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <hemicontact/parameters.h>
+#include <hemicontact/projected_operator.h>
 
 #include <memory>
 #include <vector>
@@ -46,6 +48,69 @@ namespace hemicontact
           const TrilinosWrappers::MPI::Vector & b,
           const bool reuse_preconditioner = false);
 
+    /**
+     * Solve @p matrix x = b with CG and the AMG hierarchy of the step
+     * matrix (see step_preconditioner()), to @p relative_tolerance times
+     * |b| (if positive; else 'relative tolerance').
+     */
+    unsigned int
+    solve_with_step_preconditioner(
+      const TrilinosWrappers::SparseMatrix &step_matrix,
+      TrilinosWrappers::MPI::Vector &       x,
+      const TrilinosWrappers::MPI::Vector & b,
+      const double                          relative_tolerance = -1);
+
+    /**
+     * Solve op x = b on range(Pi) with CG preconditioned by Pi P Pi, P the
+     * AMG hierarchy of the contact matrix if one was built
+     * (rebuild_contact_preconditioner()), else that of the step matrix. Stops
+     * when the residual has dropped by @p reduction relative to the initial
+     * one, or below @p absolute_tolerance. x must lie in range(Pi) on entry.
+     * Returns the number of iterations.
+     */
+    template <int dim>
+    unsigned int
+    solve_projected(const ProjectedOperator<dim> &        op,
+                    const TrilinosWrappers::SparseMatrix &step_matrix,
+                    TrilinosWrappers::MPI::Vector &       x,
+                    const TrilinosWrappers::MPI::Vector & b,
+                    const double                          reduction,
+                    const double                          absolute_tolerance);
+
+    /**
+     * Whether rebuilding the AMG hierarchy from the current contact matrix
+     * would now pay off: the Krylov time lost since the last build, against
+     * the first solve after it (iterations per decade of reduction), exceeds
+     * 'preconditioner rebuild factor' times the time of one set-up. The same
+     * answer on every rank.
+     */
+    bool
+    contact_preconditioner_is_stale() const;
+
+    /**
+     * Build the AMG hierarchy of @p contact_matrix (K0 plus the current
+     * nodal contact stiffness) to precondition the projected operator from
+     * now on, until the next mesh.
+     */
+    void
+    rebuild_contact_preconditioner(
+      const TrilinosWrappers::SparseMatrix &contact_matrix);
+
+    /**
+     * The AMG hierarchy of the step matrix K0 = rho/k M + A: built on the
+     * first call after set_rigid_body_modes() (i.e. once per mesh), then
+     * reused by every later call.
+     */
+    const TrilinosWrappers::PreconditionAMG &
+    step_preconditioner(const TrilinosWrappers::SparseMatrix &step_matrix);
+
+    /** Wall seconds spent in AMG set-ups so far. */
+    double
+    setup_seconds() const
+    {
+      return setup_wall_seconds;
+    }
+
     /** Number of preconditioner set-ups so far. */
     unsigned int
     n_setups() const
@@ -54,14 +119,29 @@ namespace hemicontact
     }
 
   private:
-    void
-    setup_preconditioner(const TrilinosWrappers::SparseMatrix &matrix);
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG>
+    make_amg(const TrilinosWrappers::SparseMatrix &matrix);
+
+    /** CG on (matrix or operator, preconditioner); SolverFailure if it stalls. */
+    template <typename OperatorType, typename PreconditionerType>
+    unsigned int
+    run_cg(const OperatorType &op, const PreconditionerType &preconditioner,
+           TrilinosWrappers::MPI::Vector &      x,
+           const TrilinosWrappers::MPI::Vector &b, SolverControl &control);
 
     LinearSolverParameters parameters;
     MPI_Comm               mpi_communicator;
     unsigned int           n_modes = 0;
     std::vector<double>    rigid_body_modes; ///< column-major, owned rows
-    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg; ///< of the last matrix
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> step_amg; ///< of K0
+    /** Of K0 plus a recent nodal contact stiffness. */
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> contact_amg;
+    /** @name The cost model of rebuilding the projected solver's AMG. */
+    double last_setup_seconds        = 0;
+    double reference_work_per_decade = 0; ///< first solve after a build
+    double lost_seconds              = 0; ///< Krylov time above that rate
     unsigned int                                       setups = 0;
+    double setup_wall_seconds = 0;
   };
 } // namespace hemicontact

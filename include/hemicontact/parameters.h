@@ -101,6 +101,13 @@ namespace hemicontact
   struct LinearSolverParameters
   {
     std::string  type; ///< "cg amg" or "direct"
+    /** "projected" (K0 and its AMG once per mesh) or "assembled". */
+    std::string  newton_operator;
+    /** "eisenstat-walker" or "fixed" Krylov tolerance. */
+    std::string  forcing_term;
+    double       maximum_forcing_term;
+    /** Rebuild the AMG when Krylov work per decade exceeds this factor. */
+    double       preconditioner_rebuild_factor;
     double       relative_tolerance;
     unsigned int max_iterations;
     double       aggregation_threshold;
@@ -118,6 +125,8 @@ namespace hemicontact
     std::string  probe_points; ///< "x,y; x,y" (empty: none)
     std::string  terminal;     ///< "progress", "quiet" or "test"
     bool         timing_summary;
+    /** Write performance.csv (and time one step-matrix solve) at the end. */
+    bool         performance_summary;
 
     static void declare(ParameterHandler &prm);
     void        parse(ParameterHandler &prm);

@@ -164,6 +164,108 @@ namespace hemicontact
   }
 
   template <int dim>
+  unsigned int
+  ContactProblem<dim>::solve_newton_system(
+    const TrilinosWrappers::MPI::Vector &    w,
+    const TrilinosWrappers::MPI::Vector &    w_ghosted,
+    const std::vector<NodeMultipliers<dim>> &mult,
+    const double                             reduction,
+    const double                             absolute_tolerance,
+    TrilinosWrappers::MPI::Vector &          trial)
+  {
+    if (!assembles_newton_matrix())
+      return solve_projected_system(w, w_ghosted, mult, reduction,
+                                    absolute_tolerance, trial);
+
+    // assembled: eliminate the contact constraints and rebuild the matrix
+    {
+      TimerOutput::Scope t(timer, "active set update");
+      build_newton_constraints();
+    }
+    assemble_newton_system(w_ghosted, mult);
+    TimerOutput::Scope t(timer, "linear solve");
+    trial = w;
+    newton_constraints.set_zero(trial);
+    const unsigned int n_iterations =
+      linear_solver.solve(newton_matrix, trial, newton_rhs);
+    newton_constraints.distribute(trial);
+    return n_iterations;
+  }
+
+  template <int dim>
+  unsigned int
+  ContactProblem<dim>::solve_projected_system(
+    const TrilinosWrappers::MPI::Vector &    w,
+    const TrilinosWrappers::MPI::Vector &    w_ghosted,
+    const std::vector<NodeMultipliers<dim>> &mult,
+    const double                             reduction,
+    const double                             absolute_tolerance,
+    TrilinosWrappers::MPI::Vector &          trial)
+  {
+    // the constrained quadratic problem of this iteration: minimise
+    // 1/2 x.K x - g.x over range(Pi), with K = K0 + sum L_i and
+    // g = b - (contact force - L_i w) at the nodes
+    ProjectedOperator<dim>        op(step_matrix, locally_owned_dofs);
+    TrilinosWrappers::MPI::Vector rhs(step_rhs);
+    std::vector<Tensor<2, dim>>   node_stiffness(contact_nodes.size());
+    {
+      TimerOutput::Scope t(timer, "active set update");
+      for (unsigned int k = 0; k < contact_nodes.size(); ++k)
+        if (contact_nodes[k].locally_owned)
+          {
+            const ContactNode<dim> &     node = contact_nodes[k];
+            const NodeLinearization<dim> lin =
+              NodeContact::linearize(node, mult[k], *law);
+            Tensor<2, dim> projector = unit_symmetric_tensor<dim>();
+            for (const Tensor<1, dim> &e :
+                 NodeContact::constrained_directions(node))
+              projector -= outer_product(e, e);
+            op.add_node(node.dofs, projector, lin.matrix);
+            node_stiffness[k] = projector * lin.matrix * projector;
+
+            Tensor<1, dim> w_node;
+            for (unsigned int c = 0; c < dim; ++c)
+              w_node[c] = w_ghosted[node.dofs[c]];
+            const Tensor<1, dim> g_node = lin.matrix * w_node - lin.force;
+            for (unsigned int c = 0; c < dim; ++c)
+              rhs[node.dofs[c]] = step_rhs[node.dofs[c]] + g_node[c];
+          }
+      rhs.compress(VectorOperation::insert);
+      op.project(rhs);
+    }
+
+    TimerOutput::Scope t(timer, "linear solve");
+    if (linear_solver.contact_preconditioner_is_stale())
+      {
+        // K0 plus the nodal stiffness: a copy of the values and dim x dim
+        // additions, no cell loop
+        newton_matrix.copy_from(step_matrix);
+        for (unsigned int k = 0; k < contact_nodes.size(); ++k)
+          if (contact_nodes[k].locally_owned)
+            {
+              const ContactNode<dim> &node = contact_nodes[k];
+              const Tensor<2, dim> &  stiffness = node_stiffness[k];
+              for (unsigned int a = 0; a < dim; ++a)
+                for (unsigned int b = 0; b < dim; ++b)
+                  if (stiffness[a][b] != 0)
+                    newton_matrix.add(node.dofs[a], node.dofs[b],
+                                      stiffness[a][b]);
+            }
+        newton_matrix.compress(VectorOperation::add);
+        linear_solver.rebuild_contact_preconditioner(newton_matrix);
+      }
+    trial = w;
+    base_constraints.set_zero(trial);
+    op.project(trial);
+    const unsigned int n_iterations = linear_solver.solve_projected(
+      op, step_matrix, trial, rhs, reduction,
+      std::max(absolute_tolerance,
+               parameters.linear_solver.relative_tolerance * rhs.l2_norm()));
+    base_constraints.distribute(trial);
+    return n_iterations;
+  }
+
+  template <int dim>
   void
   ContactProblem<dim>::count_branches(StepStatistics &stats) const
   {
@@ -197,6 +299,9 @@ namespace hemicontact
                                             mpi_communicator);
     TrilinosWrappers::MPI::Vector residual_ghosted(w_ghosted);
     TrilinosWrappers::MPI::Vector trial(w);
+
+    const LinearSolverParameters &lin_settings = parameters.linear_solver;
+    double forcing = lin_settings.maximum_forcing_term, previous_res = 0;
 
     const double load_norm = step_rhs.l2_norm();
     const double target =
@@ -264,19 +369,23 @@ namespace hemicontact
             "'nonlinear solver/max iterations', or check the convexity "
             "warning at start-up.");
 
-        {
-          TimerOutput::Scope t(timer, "active set update");
-          build_newton_constraints();
-        }
-        assemble_newton_system(w_ghosted, mult);
-        {
-          TimerOutput::Scope t(timer, "linear solve");
-          trial = w;
-          newton_constraints.set_zero(trial);
-          stats.linear_iterations +=
-            linear_solver.solve(newton_matrix, trial, newton_rhs);
-          newton_constraints.distribute(trial);
-        }
+        // inexact Newton: the Krylov tolerance follows the decrease of the
+        // nonsmooth residual (Eisenstat-Walker, choice 2), but never asks for
+        // more than the Newton tolerance needs
+        if (iteration > 0)
+          {
+            const double previous_forcing = forcing;
+            forcing = 0.9 * std::pow(res / previous_res, 2);
+            if (0.9 * previous_forcing * previous_forcing > 0.1)
+              forcing = std::max(forcing,
+                                 0.9 * previous_forcing * previous_forcing);
+            forcing = std::min(forcing, lin_settings.maximum_forcing_term);
+          }
+        previous_res = res;
+        const bool inexact = lin_settings.forcing_term == "eisenstat-walker";
+        stats.linear_iterations += solve_newton_system(
+          w, w_ghosted, mult, inexact ? forcing : 0.,
+          inexact ? 0.1 * target : 0., trial);
         {
           TimerOutput::Scope t(timer, "line search");
           line_search(w, trial, residual, stats.n_damped_steps);
@@ -304,7 +413,17 @@ namespace hemicontact
     const TrilinosWrappers::MPI::Vector &, unsigned int &);                    \
   template void           ContactProblem<dim>::count_branches(StepStatistics &) \
     const;                                                                     \
-  template StepStatistics ContactProblem<dim>::solve_step();
+  template StepStatistics ContactProblem<dim>::solve_step();                   \
+  template unsigned int   ContactProblem<dim>::solve_newton_system(           \
+    const TrilinosWrappers::MPI::Vector &,                                     \
+    const TrilinosWrappers::MPI::Vector &,                                     \
+    const std::vector<NodeMultipliers<dim>> &, const double, const double,     \
+    TrilinosWrappers::MPI::Vector &);                                          \
+  template unsigned int ContactProblem<dim>::solve_projected_system(          \
+    const TrilinosWrappers::MPI::Vector &,                                     \
+    const TrilinosWrappers::MPI::Vector &,                                     \
+    const std::vector<NodeMultipliers<dim>> &, const double, const double,     \
+    TrilinosWrappers::MPI::Vector &);
 
   HEMICONTACT_INSTANTIATE(2)
   HEMICONTACT_INSTANTIATE(3)

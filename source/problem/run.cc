@@ -85,7 +85,7 @@ namespace hemicontact
       write_vtu();
     write_probes();
 
-    unsigned int total_newton = 0, max_newton = 0;
+    RunTotals totals;
     while (!finished())
       {
         StepStatistics stats;
@@ -103,8 +103,11 @@ namespace hemicontact
                                 ") was written to '" +
                                 parameters.output.directory + "'.");
           }
-        total_newton += stats.newton_iterations;
-        max_newton = std::max(max_newton, stats.newton_iterations);
+        ++totals.steps;
+        totals.newton_iterations += stats.newton_iterations;
+        totals.max_newton = std::max(totals.max_newton, stats.newton_iterations);
+        totals.linear_iterations += stats.linear_iterations;
+        totals.step_wall_seconds += stats.wall_seconds;
         write_step_row(stats);
         write_probes();
         if (interval > 0 && (step_number % interval == 0 || finished()))
@@ -114,9 +117,12 @@ namespace hemicontact
 
     pcout << "done: " << n_steps << " steps, Newton iterations per step mean "
           << std::fixed << std::setprecision(2)
-          << double(total_newton) / n_steps << " max " << max_newton
+          << double(totals.newton_iterations) / std::max(totals.steps, 1u)
+          << " max " << totals.max_newton
           << ", energy defect < 1e-7 relative: "
           << (energy.relative_defect() < 1e-7 ? "yes" : "no") << std::endl;
+    if (parameters.output.performance_summary)
+      write_performance_summary(totals);
     if (parameters.output.timing_summary && parameters.output.terminal != "test")
       timer.print_wall_time_statistics(mpi_communicator);
   }

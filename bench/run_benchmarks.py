@@ -1,0 +1,194 @@
+#!/usr/bin/python3
+"""Performance benchmark of hemicontact (not part of CI's pass/fail).
+
+Runs fixed cases -- the default 2D example and its 3D version at three
+successive refinements, solver variants on the middle 3D level, and a large
+3D case (~0.8M dofs) on 1 and 2 MPI ranks -- with 'performance summary =
+true', reads each run's performance.csv and prints one table plus the growth
+exponents of the time per step against the number of dofs. Every figure is
+also written to bench/results/benchmark.csv (or --output).
+
+  /usr/bin/python3 bench/run_benchmarks.py            # everything (~25 min)
+  /usr/bin/python3 bench/run_benchmarks.py --quick    # small levels only
+
+Needs a Release build in build/ (cmake -S . -B build -DCMAKE_BUILD_TYPE=Release).
+"""
+import argparse
+import csv
+import math
+import os
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+EXE = os.path.join(ROOT, "build", "hemicontact")
+
+
+def case(name, base, refinements, end_time=1.0, ranks=1, subdivisions=None,
+         solver=None):
+    return dict(name=name, base=base, refinements=refinements,
+                end_time=end_time, ranks=ranks, subdivisions=subdivisions,
+                solver=solver or {})
+
+
+def cases(quick, skip_large):
+    result = []
+    levels_2d = [3, 4, 5] if quick else [4, 5, 6]
+    levels_3d = [1, 2, 3] if quick else [2, 3, 4]
+    for r in levels_2d:
+        result.append(case(f"2d-r{r}", "block_2d.prm", r))
+    for r in levels_3d:
+        result.append(case(f"3d-r{r}", "block_3d.prm", r))
+    # the trade-off of reusing the AMG of the step matrix, and of inexact
+    # Newton, on the middle 3D level
+    middle = levels_3d[1]
+    for operator in ("projected", "assembled"):
+        for forcing in ("eisenstat-walker", "fixed"):
+            if operator == "projected" and forcing == "eisenstat-walker":
+                continue  # the default: already run above
+            result.append(case(f"3d-r{middle}-{operator}-{forcing}",
+                               "block_3d.prm", middle,
+                               solver={"newton operator": operator,
+                                       "forcing term": forcing}))
+    if not skip_large and not quick:
+        # 160 x 40 x 40 hexahedra: 812,163 dofs; the first 20 steps
+        for ranks in (1, 2):
+            result.append(case(f"3d-large-np{ranks}", "block_3d.prm", 3,
+                               end_time=0.2, ranks=ranks,
+                               subdivisions="20, 5, 5"))
+    return result
+
+
+def write_prm(c, directory):
+    lines = [open(os.path.join(ROOT, "prm", c["base"])).read()]
+    lines.append("subsection geometry\n  set global refinements = %d\n" %
+                 c["refinements"])
+    if c["subdivisions"]:
+        lines.append("  set subdivisions = %s\n" % c["subdivisions"])
+    lines.append("end\nsubsection time\n  set end time = %g\nend\n" %
+                 c["end_time"])
+    lines.append("subsection linear solver\n")
+    for key, value in c["solver"].items():
+        lines.append("  set %s = %s\n" % (key, value))
+    lines.append("end\nsubsection output\n  set directory = %s\n"
+                 "  set vtu interval = 0\n  set probe points =\n"
+                 "  set terminal = quiet\n  set timing summary = false\n"
+                 "  set performance summary = true\nend\n" % directory)
+    path = os.path.join(directory, "run.prm")
+    with open(path, "w") as f:
+        f.write("".join(lines))
+    return path
+
+
+def run(c, work):
+    directory = os.path.join(work, c["name"])
+    os.makedirs(directory, exist_ok=True)
+    prm = write_prm(c, directory)
+    command = [EXE, prm]
+    if c["ranks"] > 1:
+        command = ["mpirun", "-np", str(c["ranks"])] + command
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
+               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    print(f"running {c['name']} ...", file=sys.stderr, flush=True)
+    subprocess.run(command, check=True, env=env, stdout=subprocess.DEVNULL)
+    with open(os.path.join(directory, "performance.csv")) as f:
+        values = {row["quantity"]: float(row["value"])
+                  for row in csv.DictReader(f)}
+    values["case"] = c["name"]
+    return values
+
+
+def growth_exponent(rows):
+    """Least-squares slope of log(wall per step) against log(dofs)."""
+    x = [math.log(r["n_dofs"]) for r in rows]
+    y = [math.log(r["wall_per_step"]) for r in rows]
+    mx, my = sum(x) / len(x), sum(y) / len(y)
+    return (sum((a - mx) * (b - my) for a, b in zip(x, y)) /
+            sum((a - mx) ** 2 for a in x))
+
+
+COLUMNS = [
+    ("case", "case", "%-34s"),
+    ("n_dofs", "dofs", "%9d"),
+    ("mpi_ranks", "np", "%2d"),
+    ("steps", "steps", "%5d"),
+    ("newton_mean", "Nwt", "%5.2f"),
+    ("newton_max", "max", "%3d"),
+    ("linear_per_solve", "lin/slv", "%7.1f"),
+    ("wall_per_step", "s/step", "%8.4f"),
+    ("reference_solve_wall", "1 solve", "%8.4f"),
+    ("reference_cg_wall", "(CG)", "%8.4f"),
+    ("ratio_step_to_reference", "ratio", "%6.2f"),
+    ("time_assembly_load", "load", "%7.2f"),
+    ("time_assembly_newton", "asm", "%7.2f"),
+    ("time_active_set_update", "act.set", "%7.2f"),
+    ("time_preconditioner_setup", "AMG", "%7.2f"),
+    ("time_linear_solve_without_setup", "Krylov", "%7.2f"),
+    ("time_energy", "energy", "%7.2f"),
+    ("time_output", "output", "%6.2f"),
+    ("peak_memory_bytes", "MiB", "%7.0f"),
+    ("bytes_per_dof", "B/dof", "%7.0f"),
+]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--quick", action="store_true",
+                        help="small levels only (a few seconds per case)")
+    parser.add_argument("--skip-large", action="store_true",
+                        help="leave out the ~0.8M-dof 3D case")
+    parser.add_argument("--work", default=os.path.join(ROOT, "bench", "work"),
+                        help="where the runs write (default bench/work)")
+    parser.add_argument("--output", default=os.path.join(
+        ROOT, "bench", "results", "benchmark.csv"))
+    args = parser.parse_args()
+    if not os.access(EXE, os.X_OK):
+        sys.exit("bench: build/hemicontact not found; build it first "
+                 "(cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && "
+                 "cmake --build build -j2)")
+
+    rows = [run(c, args.work) for c in cases(args.quick, args.skip_large)]
+    for r in rows:
+        r["peak_memory_bytes"] /= 2 ** 20
+
+    print("\nTime split columns are seconds summed over the run; 'ratio' is "
+          "s/step over one solve\nof the step matrix (AMG set-up + CG) "
+          "measured in the same run.\n")
+    print(" ".join((fmt.replace("d", "s").replace(".2f", "s")
+                    .replace(".4f", "s").replace(".1f", "s")
+                    .replace(".0f", "s")) % title
+                   for _, title, fmt in COLUMNS))
+    for r in rows:
+        print(" ".join(fmt % r[key] for key, _, fmt in COLUMNS))
+
+    summary = []
+    for prefix in ("2d-r", "3d-r"):
+        levels = [r for r in rows if r["case"].startswith(prefix) and
+                  r["case"].count("-") == 1]
+        if len(levels) >= 2:
+            p = growth_exponent(levels)
+            summary.append((f"growth exponent p of s/step ~ dofs^p ({prefix[:2]})", p))
+            means = [r["newton_mean"] for r in levels]
+            summary.append((f"Newton mean spread max-min ({prefix[:2]})",
+                            max(means) - min(means)))
+    large = {r["mpi_ranks"]: r for r in rows if "large" in r["case"]}
+    if 1 in large and 2 in large:
+        summary.append(("speed-up 2 ranks vs 1 (large case, s/step)",
+                        large[1]["wall_per_step"] / large[2]["wall_per_step"]))
+    print()
+    for name, value in summary:
+        print(f"{name}: {value:.3f}")
+
+    os.makedirs(os.path.dirname(args.output), exist_ok=True)
+    with open(args.output, "w", newline="") as f:
+        keys = ["case"] + sorted(k for k in rows[0] if k != "case")
+        writer = csv.DictWriter(f, fieldnames=keys)
+        writer.writeheader()
+        writer.writerows(rows)
+        for name, value in summary:
+            f.write(f"# {name}: {value:.4f}\n")
+    print(f"\nwritten to {args.output}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,105 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <hemicontact/contact_problem.h>
+
+#include <sys/resource.h>
+
+#include <fstream>
+#include <iomanip>
+#include <map>
+
+namespace hemicontact
+{
+  namespace
+  {
+    /** Peak resident set size of this process in bytes. */
+    double
+    peak_resident_bytes()
+    {
+      rusage usage;
+      getrusage(RUSAGE_SELF, &usage);
+      return 1024. * usage.ru_maxrss; // Linux reports kilobytes
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ContactProblem<dim>::write_performance_summary(const RunTotals &totals)
+  {
+    // the reference cost: one solve of the step matrix K0 = rho/k M + A with
+    // the same solver, AMG set up afresh, CG from zero to the fixed tolerance
+    const double setup_before = linear_solver.setup_seconds();
+    TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);
+    TrilinosWrappers::MPI::Vector b(step_rhs);
+    if (b.l2_norm() == 0)
+      b = 1.;
+    base_constraints.set_zero(b);
+    LinearSolver reference(parameters.linear_solver, mpi_communicator);
+    reference.set_rigid_body_modes(dof_handler, *discretization.mapping);
+    Timer              solve_timer(mpi_communicator, /*sync_lap_times=*/true);
+    const unsigned int reference_iterations =
+      reference.solve_with_step_preconditioner(step_matrix, x, b);
+    solve_timer.stop();
+    const double reference_total = solve_timer.wall_time();
+    const double reference_setup =
+      Utilities::MPI::max(reference.setup_seconds(), mpi_communicator);
+
+    const std::map<std::string, double> sections =
+      timer.get_summary_data(TimerOutput::total_wall_time);
+    const auto section = [&](const std::string &name) {
+      const auto it = sections.find(name);
+      return Utilities::MPI::max(it == sections.end() ? 0. : it->second,
+                                 mpi_communicator);
+    };
+    const double run_setup_amg =
+      Utilities::MPI::max(setup_before, mpi_communicator);
+    const double peak_bytes =
+      Utilities::MPI::sum(peak_resident_bytes(), mpi_communicator);
+    const double steps      = std::max(totals.steps, 1u);
+    const double step_wall  = Utilities::MPI::max(totals.step_wall_seconds,
+                                                 mpi_communicator) /
+                             steps;
+
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+    std::ofstream out(parameters.output.directory + "/performance.csv");
+    out << std::setprecision(6) << "quantity,value\n"
+        << "dimension," << dim << "\n"
+        << "mpi_ranks," << Utilities::MPI::n_mpi_processes(mpi_communicator)
+        << "\n"
+        << "n_dofs," << dof_handler.n_dofs() << "\n"
+        << "n_cells,"
+        << discretization.triangulation->n_global_active_cells() << "\n"
+        << "steps," << totals.steps << "\n"
+        << "newton_mean," << totals.newton_iterations / steps << "\n"
+        << "newton_max," << totals.max_newton << "\n"
+        << "linear_per_solve,"
+        << double(totals.linear_iterations) /
+             std::max(totals.newton_iterations, 1u)
+        << "\n"
+        << "wall_per_step," << step_wall << "\n"
+        << "reference_solve_wall," << reference_total << "\n"
+        << "reference_setup_wall," << reference_setup << "\n"
+        << "reference_cg_wall," << reference_total - reference_setup << "\n"
+        << "reference_iterations," << reference_iterations << "\n"
+        << "ratio_step_to_reference," << step_wall / reference_total << "\n"
+        << "time_setup," << section("setup") << "\n"
+        << "time_assembly_load," << section("assembly: load") << "\n"
+        << "time_assembly_newton," << section("assembly: Newton system")
+        << "\n"
+        << "time_active_set_update," << section("active set update") << "\n"
+        << "time_preconditioner_setup," << run_setup_amg << "\n"
+        << "time_linear_solve_without_setup,"
+        << section("linear solve") + section("convexity check") - run_setup_amg
+        << "\n"
+        << "time_line_search," << section("line search") << "\n"
+        << "time_energy," << section("energy balance") << "\n"
+        << "time_output," << section("output") << "\n"
+        << "peak_memory_bytes," << peak_bytes << "\n"
+        << "bytes_per_dof," << peak_bytes / dof_handler.n_dofs() << "\n";
+  }
+
+  template void ContactProblem<2>::write_performance_summary(const RunTotals &);
+  template void ContactProblem<3>::write_performance_summary(const RunTotals &);
+} // namespace hemicontact
