@@ -51,7 +51,7 @@ def markdown(sections):
            "Every entry is shown with its default value. A parameter file only needs the",
            "entries it changes; subsections are entered with `subsection NAME` ... `end`.", ""]
     out.append("Sections: " + ", ".join(
-        f"[{' / '.join(p) if p else '(top level)'}](#{anchor(p)})" for p, _ in sections))
+        f"`{' / '.join(p) if p else '(top level)'}`" for p, _ in sections) + ".")
     out.append("")
     for path, entries in sections:
         out += [f"## {' / '.join(path) if path else '(top level)'}", ""]
@@ -64,12 +64,6 @@ def markdown(sections):
                        if default else f"| `{cell(name)}` | (empty) | {cell(doc)} |")
         out.append("")
     return "\n".join(out)
-
-
-def anchor(path):
-    # GitHub's heading anchors: lower case, spaces to '-', other punctuation dropped
-    title = " / ".join(path) if path else "(top level)"
-    return "".join(c for c in title.lower().replace(" ", "-") if c.isalnum() or c in "-_")
 
 
 def main():
