@@ -1,9 +1,17 @@
 # Run a shipped parameter file from prm/ for one time step (a second
 # 'time' subsection sets the end time to the time step; output goes to out/
 # every step; everything else as shipped) and check that it succeeds and
-# writes steps.csv, the .pvd series with its .pvtu files, and probes.csv
-# when it has probe points.
+# writes steps.csv, the .pvd series with its .pvtu files, the contact CSV
+# files, and probes.csv when it has probe points. A relative 'mesh file' is
+# taken relative to the repository root SOURCE_DIR (where the shipped files
+# are meant to be run from).
 file(READ ${PRM} _text)
+if(_text MATCHES "set mesh file *= *([^\n]+)")
+  string(STRIP "${CMAKE_MATCH_1}" _mesh)
+  if(NOT IS_ABSOLUTE "${_mesh}")
+    string(REGEX REPLACE "set mesh file *= *[^\n]+" "set mesh file = ${SOURCE_DIR}/${_mesh}" _text "${_text}")
+  endif()
+endif()
 string(REGEX MATCH "set time step *= *([0-9.eE+-]+)" _ ${_text})
 set(_k ${CMAKE_MATCH_1})
 string(REGEX REPLACE "set vtu interval *= *[0-9]+" "set vtu interval = 1" _text "${_text}")
@@ -35,7 +43,8 @@ execute_process(COMMAND ${EXE} run.prm WORKING_DIRECTORY ${_dir}
 if(NOT _rc EQUAL 0)
   message(FATAL_ERROR "${PRM} failed (exit ${_rc}):\n${_err}\n${_out}")
 endif()
-foreach(_file steps.csv solution.pvd solution_00000.pvtu solution_00001.pvtu)
+foreach(_file steps.csv solution.pvd solution_00000.pvtu solution_00001.pvtu
+              contact_00000.csv contact_00001.csv)
   if(NOT EXISTS ${_dir}/out/${_file})
     message(FATAL_ERROR "${PRM}: ${_file} was not written")
   endif()

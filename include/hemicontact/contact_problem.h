@@ -244,6 +244,15 @@ namespace hemicontact
     void
     write_performance_summary(const RunTotals &totals);
 
+    /** @name contact_output.cc */
+    /**
+     * Write contact_NNNNN.csv: one row per contact node (all ranks, sorted
+     * by coordinates) with w_nu, w_tau, sigma_nu, sigma_tau, the branches
+     * and the nodal mass m_i.
+     */
+    void
+    write_contact_csv();
+
     MPI_Comm           mpi_communicator;
     Parameters         parameters;
     ConditionalOStream pcout;

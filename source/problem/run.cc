@@ -82,7 +82,10 @@ namespace hemicontact
 
     const unsigned int interval = parameters.output.vtu_interval;
     if (interval > 0)
-      write_vtu();
+      {
+        write_vtu();
+        write_contact_csv();
+      }
     write_probes();
 
     RunTotals totals;
@@ -96,7 +99,10 @@ namespace hemicontact
         catch (const SolverFailure &failure)
           {
             if (interval > 0)
-              write_vtu();
+              {
+                write_vtu();
+                write_contact_csv();
+              }
             throw SolverFailure(std::string(failure.what()) +
                                 " The last converged state (step " +
                                 std::to_string(step_number) +
@@ -111,7 +117,10 @@ namespace hemicontact
         write_step_row(stats);
         write_probes();
         if (interval > 0 && (step_number % interval == 0 || finished()))
-          write_vtu();
+          {
+            write_vtu();
+            write_contact_csv();
+          }
         print_step(stats);
       }
 
