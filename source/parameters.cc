@@ -486,6 +486,64 @@ namespace hemicontact
   }
 
   void
+  AdaptivityParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("adaptivity");
+    prm.declare_entry("interval", "0", Patterns::Integer(0),
+                      "Adapt the mesh after every this many time steps "
+                      "(0: never). Needs 'geometry/cell type = hypercube'.");
+    prm.declare_entry(
+      "indicator", "kelly", Patterns::Selection("kelly|kelly contact"),
+      "Cell indicator: 'kelly': Kelly's jump of the normal derivative of the "
+      "velocity w_n across faces; 'kelly contact': plus, on cells with a "
+      "face on Gamma_3, 'contact weight' times sqrt(h_F sum |t_i - t_j|^2) "
+      "over the face's pairs of contact nodes, t the nodal contact traction "
+      "(large at the edge of the contact zone and at stick-slip fronts).");
+    prm.declare_entry("contact weight", "1", Patterns::Double(0),
+                      "Weight of the contact term of 'kelly contact'.");
+    prm.declare_entry("strategy", "fixed fraction",
+                      Patterns::Selection("fixed fraction|fixed number"),
+                      "'fixed fraction': refine the cells holding 'refine "
+                      "fraction' of the total indicator, coarsen those holding "
+                      "'coarsen fraction'; 'fixed number': refine/coarsen "
+                      "these fractions of the cells. Both respect 'max "
+                      "cells' (fixed fraction: no refinement once the mesh "
+                      "has that many cells).");
+    prm.declare_entry("refine fraction", "0.3", Patterns::Double(0, 1),
+                      "See 'strategy'.");
+    prm.declare_entry("coarsen fraction", "0.05", Patterns::Double(0, 1),
+                      "See 'strategy'.");
+    prm.declare_entry("max cells", "0", Patterns::Integer(0),
+                      "Upper limit of the number of cells (0: none).");
+    prm.declare_entry("min level", "0", Patterns::Integer(0, 30),
+                      "No cell is coarsened below this refinement level.");
+    prm.declare_entry("max level", "8", Patterns::Integer(0, 30),
+                      "No cell is refined beyond this refinement level.");
+    prm.leave_subsection();
+  }
+
+  void
+  AdaptivityParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("adaptivity");
+    interval         = prm.get_integer("interval");
+    indicator        = prm.get("indicator");
+    contact_weight   = prm.get_double("contact weight");
+    strategy         = prm.get("strategy");
+    refine_fraction  = prm.get_double("refine fraction");
+    coarsen_fraction = prm.get_double("coarsen fraction");
+    max_cells        = prm.get_integer("max cells");
+    min_level        = prm.get_integer("min level");
+    max_level        = prm.get_integer("max level");
+    prm.leave_subsection();
+    require(refine_fraction + coarsen_fraction <= 1,
+            "adaptivity: 'refine fraction' + 'coarsen fraction' must not "
+            "exceed 1.");
+    require(min_level <= max_level,
+            "adaptivity: 'min level' must not exceed 'max level'.");
+  }
+
+  void
   Parameters::declare(ParameterHandler &prm)
   {
     prm.declare_entry("dimension", "2", Patterns::Integer(2, 3),
@@ -498,6 +556,7 @@ namespace hemicontact
     NonlinearSolverParameters::declare(prm);
     LinearSolverParameters::declare(prm);
     OutputParameters::declare(prm);
+    AdaptivityParameters::declare(prm);
     ManufacturedParameters::declare(prm);
     ConvergenceStudyParameters::declare(prm);
   }
@@ -514,12 +573,17 @@ namespace hemicontact
     nonlinear_solver.parse(prm);
     linear_solver.parse(prm);
     output.parse(prm);
+    adaptivity.parse(prm);
     manufactured.parse(prm);
     study.parse(prm);
     prm.enter_subsection("normal law");
     normal_law_name = prm.get("law");
     prm.leave_subsection();
 
+    require(adaptivity.interval == 0 || geometry.cell_type == "hypercube",
+            "adaptivity: adaptive refinement needs 'geometry/cell type = "
+            "hypercube' (p4est meshes); set 'adaptivity/interval = 0' for "
+            "simplex meshes.");
     require(geometry.mesh_type != "rectangle" ||
               (geometry.lower_left.size() >= dimension &&
                geometry.upper_right.size() >= dimension &&

@@ -69,6 +69,19 @@ namespace hemicontact
     StepStatistics
     advance();
 
+    /**
+     * Refine and coarsen the mesh by the indicator of the 'adaptivity'
+     * parameters and move w_n, u_n to the new mesh; rebuilds dofs,
+     * constraints, matrices, contact nodes and the preconditioner. Fills
+     * the adaptation fields of @p stats (energies before and after).
+     */
+    void
+    adapt_mesh(StepStatistics &stats);
+
+    /** The cell-wise refinement indicator of the current state. */
+    Vector<float>
+    refinement_indicators() const;
+
     /** Whether the final time has been reached. */
     bool
     finished() const
@@ -212,6 +225,9 @@ namespace hemicontact
     /** @name diagnostics.cc */
     void
     update_energy_balance(const bool initial);
+    /** Kinetic rho/2|w_n|^2 and elastic 1/2 a_B(u_{n+1},u_{n+1}) energy now. */
+    std::pair<double, double>
+    stored_energy() const;
     void
     check_convexity();
     TrilinosWrappers::MPI::Vector

@@ -148,6 +148,23 @@ namespace hemicontact
     void        parse(ParameterHandler &prm);
   };
 
+  /** Adaptive mesh refinement during the time loop (hypercube meshes). */
+  struct AdaptivityParameters
+  {
+    unsigned int interval;         ///< adapt after every this many steps, 0 = never
+    std::string  indicator;        ///< "kelly" or "kelly contact"
+    double       contact_weight;   ///< weight of the Gamma_3 traction jumps
+    std::string  strategy;         ///< "fixed fraction" or "fixed number"
+    double       refine_fraction;
+    double       coarsen_fraction;
+    unsigned int max_cells;        ///< 0 = no limit
+    unsigned int min_level;
+    unsigned int max_level;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
   /** A convergence study over refinement levels (manufactured solutions). */
   struct ConvergenceStudyParameters
   {
@@ -170,6 +187,7 @@ namespace hemicontact
     NonlinearSolverParameters  nonlinear_solver;
     LinearSolverParameters     linear_solver;
     OutputParameters           output;
+    AdaptivityParameters       adaptivity;
     ManufacturedParameters     manufactured;
     ConvergenceStudyParameters study;
     /** The normal law is parsed by its own factory (see normal_law.h). */

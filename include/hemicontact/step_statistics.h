@@ -17,5 +17,13 @@ namespace hemicontact
     unsigned int n_damped_steps      = 0; ///< line-search reductions
     double       residual            = 0; ///< relative nonsmooth residual
     double       wall_seconds        = 0;
+    unsigned int n_cells             = 0; ///< of the mesh the step ran on
+    unsigned int n_dofs              = 0;
+    /** @name Mesh adaptation after this step (all zero if none) */
+    bool   adapted                   = false;
+    double kinetic_before_adaptation = 0;
+    double elastic_before_adaptation = 0;
+    double kinetic_after_adaptation  = 0;
+    double elastic_after_adaptation  = 0;
   };
 } // namespace hemicontact

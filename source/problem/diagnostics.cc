@@ -1,6 +1,8 @@
 #include <deal.II/base/mpi.h>
 
 #include <hemicontact/contact_problem.h>
+
+#include <tuple>
 #include <hemicontact/input_error.h>
 #include <hemicontact/tresca_friction.h>
 
@@ -22,22 +24,31 @@ namespace hemicontact
   }
 
   template <int dim>
+  std::pair<double, double>
+  ContactProblem<dim>::stored_energy() const
+  {
+    // rho/2 |w_n|^2 and 1/2 a_B(u_{n+1}, u_{n+1}) with u_{n+1} = u_n + k w_n
+    const TrilinosWrappers::MPI::Vector w = without_constrained(velocity);
+    TrilinosWrappers::MPI::Vector       u_next(displacement);
+    u_next.add(time_step, velocity);
+    u_next = without_constrained(u_next);
+    TrilinosWrappers::MPI::Vector tmp(locally_owned_dofs, mpi_communicator);
+    mass_matrix.vmult(tmp, w);
+    const double kinetic = 0.5 * (w * tmp);
+    elastic_matrix.vmult(tmp, u_next);
+    return {kinetic, 0.5 * (u_next * tmp)};
+  }
+
+  template <int dim>
   void
   ContactProblem<dim>::update_energy_balance(const bool initial)
   {
     TimerOutput::Scope t(timer, "energy balance");
     const double                        k = time_step;
     const TrilinosWrappers::MPI::Vector w = without_constrained(velocity);
-    TrilinosWrappers::MPI::Vector       u_next(displacement);
-    u_next.add(k, velocity);
-    u_next = without_constrained(u_next);
-
-    TrilinosWrappers::MPI::Vector tmp(locally_owned_dofs, mpi_communicator);
-    mass_matrix.vmult(tmp, w);
-    const double w_M_w = w * tmp;
-    elastic_matrix.vmult(tmp, u_next);
-    energy.kinetic = 0.5 * w_M_w;
-    energy.elastic = 0.5 * (u_next * tmp);
+    TrilinosWrappers::MPI::Vector       tmp(locally_owned_dofs, mpi_communicator);
+    std::tie(energy.kinetic, energy.elastic) = stored_energy();
+    const double w_M_w                       = 2 * energy.kinetic;
     if (initial)
       {
         energy.initial_energy = energy.total_energy();
@@ -159,6 +170,8 @@ namespace hemicontact
   ContactProblem<dim>::without_constrained(                                    \
     const TrilinosWrappers::MPI::Vector &) const;                              \
   template void ContactProblem<dim>::update_energy_balance(const bool);       \
+  template std::pair<double, double> ContactProblem<dim>::stored_energy()     \
+    const;       \
   template void ContactProblem<dim>::check_convexity();
 
   HEMICONTACT_INSTANTIATE(2)

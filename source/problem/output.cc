@@ -89,7 +89,10 @@ namespace hemicontact
            "kinetic_energy,elastic_energy,viscous_dissipation,"
            "friction_dissipation,normal_damping_dissipation,external_work,"
            "numerical_dissipation,energy_defect,relative_energy_defect,"
-           "line_search_reductions,wall_seconds\n";
+           "line_search_reductions,wall_seconds,adapted,"
+           "kinetic_before_adaptation,elastic_before_adaptation,"
+           "kinetic_after_adaptation,elastic_after_adaptation,"
+           "energy_transfer_change\n";
   }
 
   template <int dim>
@@ -239,6 +242,19 @@ namespace hemicontact
     data_out.add_data_vector(subdomain, "subdomain",
                              DataOut<dim>::type_cell_data);
 
+    Vector<float> level(discretization.triangulation->n_active_cells());
+    for (const auto &cell : discretization.triangulation->active_cell_iterators())
+      if (cell->is_locally_owned())
+        level[cell->active_cell_index()] = cell->level();
+    data_out.add_data_vector(level, "level", DataOut<dim>::type_cell_data);
+    Vector<float> indicators;
+    if (parameters.adaptivity.interval > 0)
+      {
+        indicators = refinement_indicators();
+        data_out.add_data_vector(indicators, "refinement_indicator",
+                                 DataOut<dim>::type_cell_data);
+      }
+
     data_out.build_patches(*discretization.mapping);
     const std::string pvtu = data_out.write_vtu_with_pvtu_record(
       parameters.output.directory + "/", "solution", step_number,
@@ -259,8 +275,7 @@ namespace hemicontact
       return;
     const EnergyBalance &e = energy;
     steps_file << std::setprecision(12) << s.step << "," << s.time << ","
-               << discretization.triangulation->n_global_active_cells() << ","
-               << dof_handler.n_dofs() << "," << s.newton_iterations << ","
+               << s.n_cells << "," << s.n_dofs << "," << s.newton_iterations << ","
                << s.linear_iterations << "," << s.n_separating << ","
                << s.n_normal_stick << "," << s.n_damped << "," << s.n_stick
                << "," << s.n_slip << "," << s.residual << "," << e.kinetic
@@ -268,7 +283,12 @@ namespace hemicontact
                << e.friction_dissipation << "," << e.damping_dissipation << ","
                << e.external_work << "," << e.numerical_dissipation << ","
                << e.defect() << "," << e.relative_defect() << ","
-               << s.n_damped_steps << "," << s.wall_seconds << "\n";
+               << s.n_damped_steps << "," << s.wall_seconds << ","
+               << (s.adapted ? 1 : 0) << "," << s.kinetic_before_adaptation
+               << "," << s.elastic_before_adaptation << ","
+               << s.kinetic_after_adaptation << ","
+               << s.elastic_after_adaptation << "," << e.transfer_change
+               << "\n";
     steps_file.flush();
   }
 
@@ -287,6 +307,13 @@ namespace hemicontact
              << energy.kinetic << ", elastic " << energy.elastic
              << ", energy defect < 1e-7: "
              << (energy.relative_defect() < 1e-7 ? "yes" : "no");
+        if (s.adapted)
+          line << "\n  adapted: " << discretization.triangulation->n_global_active_cells()
+               << " cells, " << dof_handler.n_dofs()
+               << " dofs; energy before " << s.kinetic_before_adaptation +
+                                               s.elastic_before_adaptation
+               << ", after " << s.kinetic_after_adaptation +
+                                  s.elastic_after_adaptation;
       }
     else
       {

@@ -44,6 +44,8 @@ namespace hemicontact
     stats.step         = step_number;
     stats.time         = time;
     stats.wall_seconds = wall.wall_time();
+    stats.n_cells      = discretization.triangulation->n_global_active_cells();
+    stats.n_dofs       = dof_handler.n_dofs();
     return stats;
   }
 
@@ -114,6 +116,9 @@ namespace hemicontact
         totals.max_newton = std::max(totals.max_newton, stats.newton_iterations);
         totals.linear_iterations += stats.linear_iterations;
         totals.step_wall_seconds += stats.wall_seconds;
+        const unsigned int adapt_every = parameters.adaptivity.interval;
+        if (adapt_every > 0 && step_number % adapt_every == 0 && !finished())
+          adapt_mesh(stats);
         write_step_row(stats);
         write_probes();
         if (interval > 0 && (step_number % interval == 0 || finished()))

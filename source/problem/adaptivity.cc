@@ -1,0 +1,150 @@
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/numerics/error_estimator.h>
+
+#include <hemicontact/contact_problem.h>
+
+#include <cmath>
+#include <set>
+
+namespace hemicontact
+{
+  template <int dim>
+  Vector<float>
+  ContactProblem<dim>::refinement_indicators() const
+  {
+    const AdaptivityParameters &settings = parameters.adaptivity;
+    TrilinosWrappers::MPI::Vector w(locally_owned_dofs, locally_relevant_dofs,
+                                   mpi_communicator);
+    w = velocity;
+    Vector<float> indicators(discretization.triangulation->n_active_cells());
+    KellyErrorEstimator<dim>::estimate(
+      *discretization.mapping, dof_handler, discretization.face_quadrature(2),
+      {}, w, indicators, ComponentMask(), nullptr, numbers::invalid_unsigned_int,
+      discretization.triangulation->locally_owned_subdomain());
+    if (settings.indicator != "kelly contact")
+      return indicators;
+
+    // the jumps of the nodal contact traction along Gamma_3, face by face
+    TrilinosWrappers::MPI::Vector t(w);
+    t = contact_traction;
+    std::set<types::global_dof_index> is_contact_node;
+    for (const ContactNode<dim> &node : contact_nodes)
+      is_contact_node.insert(node.dofs[0]);
+    const std::set<types::boundary_id> contact_ids(
+      parameters.boundary.contact_ids.begin(),
+      parameters.boundary.contact_ids.end());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              contact_ids.count(cell->face(f)->boundary_id()))
+            {
+              const auto &       face = cell->face(f);
+              double             jumps = 0;
+              const unsigned int n     = face->n_vertices();
+              for (unsigned int a = 0; a < n; ++a)
+                for (unsigned int b = a + 1; b < n; ++b)
+                  {
+                    const auto da = face->vertex_dof_index(a, 0);
+                    const auto db = face->vertex_dof_index(b, 0);
+                    if (!is_contact_node.count(da) || !is_contact_node.count(db))
+                      continue;
+                    for (unsigned int c = 0; c < dim; ++c)
+                      jumps += std::pow(t[face->vertex_dof_index(a, c)] -
+                                          t[face->vertex_dof_index(b, c)],
+                                        2);
+                  }
+              const double contact =
+                settings.contact_weight * std::sqrt(face->diameter() * jumps);
+              const unsigned int i = cell->active_cell_index();
+              indicators[i] =
+                std::sqrt(std::pow(indicators[i], 2) + contact * contact);
+            }
+    return indicators;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::adapt_mesh(StepStatistics &stats)
+  {
+    TimerOutput::Scope          t(timer, "adaptivity");
+    const AdaptivityParameters &settings = parameters.adaptivity;
+    auto *tria = dynamic_cast<parallel::distributed::Triangulation<dim> *>(
+      discretization.triangulation.get());
+    AssertThrow(tria != nullptr,
+                ExcMessage("adaptivity needs a p4est (hypercube) mesh"));
+
+    std::tie(stats.kinetic_before_adaptation,
+             stats.elastic_before_adaptation) = stored_energy();
+
+    // mark
+    const Vector<float> indicators = refinement_indicators();
+    const auto          max_cells  = settings.max_cells > 0 ?
+                                       settings.max_cells :
+                                       std::numeric_limits<unsigned int>::max();
+    if (settings.strategy == "fixed fraction")
+      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_fraction(
+        *tria, indicators,
+        tria->n_global_active_cells() < max_cells ? settings.refine_fraction :
+                                                    0.,
+        settings.coarsen_fraction);
+    else
+      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
+        *tria, indicators, settings.refine_fraction, settings.coarsen_fraction,
+        max_cells);
+    for (const auto &cell : tria->active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          if (cell->level() >= static_cast<int>(settings.max_level))
+            cell->clear_refine_flag();
+          if (cell->level() <= static_cast<int>(settings.min_level))
+            cell->clear_coarsen_flag();
+        }
+
+    // transfer w_n and u_n (everything a step needs: w_{n-1} of the next
+    // step is w_n, branches are recomputed in its first Newton iteration)
+    TrilinosWrappers::MPI::Vector w(locally_owned_dofs, locally_relevant_dofs,
+                                   mpi_communicator);
+    TrilinosWrappers::MPI::Vector u(w);
+    w = velocity;
+    u = displacement;
+    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
+      transfer(dof_handler);
+    tria->prepare_coarsening_and_refinement();
+    transfer.prepare_for_coarsening_and_refinement(
+      std::vector<const TrilinosWrappers::MPI::Vector *>{&w, &u});
+    tria->execute_coarsening_and_refinement();
+
+    // rebuild everything that lives on the mesh
+    setup_dofs();
+    assemble_constant_matrices();
+    setup_contact_nodes();
+    linear_solver.set_rigid_body_modes(dof_handler, *discretization.mapping);
+    std::vector<TrilinosWrappers::MPI::Vector *> new_fields{&velocity,
+                                                            &displacement};
+    transfer.interpolate(new_fields);
+    base_constraints.distribute(velocity);
+    base_constraints.distribute(displacement);
+    old_velocity = velocity;
+    if (!probe_points.empty())
+      probe_cache.reinit(probe_points, *discretization.triangulation,
+                         *discretization.mapping);
+
+    std::tie(stats.kinetic_after_adaptation, stats.elastic_after_adaptation) =
+      stored_energy();
+    stats.adapted = true;
+    energy.kinetic = stats.kinetic_after_adaptation;
+    energy.elastic = stats.elastic_after_adaptation;
+    energy.transfer_change +=
+      stats.kinetic_after_adaptation + stats.elastic_after_adaptation -
+      stats.kinetic_before_adaptation - stats.elastic_before_adaptation;
+  }
+
+  template Vector<float> ContactProblem<2>::refinement_indicators() const;
+  template Vector<float> ContactProblem<3>::refinement_indicators() const;
+  template void          ContactProblem<2>::adapt_mesh(StepStatistics &);
+  template void          ContactProblem<3>::adapt_mesh(StepStatistics &);
+} // namespace hemicontact
