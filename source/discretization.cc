@@ -46,7 +46,8 @@ namespace hemicontact
 
   template <int dim>
   void
-  Discretization<dim>::make_mesh(const GeometryParameters &geometry)
+  Discretization<dim>::make_mesh(const GeometryParameters &geometry,
+                                 const bool                refine)
   {
     unsigned int refinements = geometry.global_refinements;
     if (geometry.mesh_type == "rectangle")
@@ -118,7 +119,8 @@ namespace hemicontact
                                     std::string("triangles/tetrahedra")) +
                   " but 'cell type' = " + geometry.cell_type + ".");
       }
-    triangulation->refine_global(refinements);
+    if (refine)
+      triangulation->refine_global(refinements);
   }
 
   template <int dim>

@@ -31,11 +31,14 @@ namespace
          "Usage:\n"
          "  hemicontact FILE.prm            run the problem described in FILE\n"
          "  mpirun -np N hemicontact FILE   the same on N MPI ranks\n"
+         "  hemicontact --resume FILE.prm   continue the run of FILE from its\n"
+         "                                  newest checkpoint\n"
          "  hemicontact --print-parameters  print every parameter with its\n"
          "                                  default value and documentation\n"
          "  hemicontact --help              this text\n\n"
          "Exit codes: 0 success, 1 usage, 2 input error, 3 solver failure,\n"
-         "4 internal error.\n";
+         "4 internal error, 5 interrupted (SIGTERM or 'checkpoint/stop after';\n"
+         "a checkpoint was written: continue with --resume).\n";
   }
 
   int
@@ -55,15 +58,20 @@ namespace
                                           ParameterHandler::KeepDeclarationOrder);
         return 0;
       }
-    if (argc != 2 || argument.empty() || argument[0] == '-')
+    const bool        resume = argument == "--resume" && argc == 3;
+    const std::string file   = resume ? argv[2] : argument;
+    if ((argc != 2 && !resume) || file.empty() || file[0] == '-')
       {
         std::cerr << "hemicontact: expected exactly one parameter file "
-                     "(or --help / --print-parameters).\n";
+                     "(or --resume FILE, --help, --print-parameters).\n";
         return 1;
       }
 
     ParameterHandler prm;
-    const Parameters parameters = read_parameters(prm, argument);
+    const Parameters parameters =
+      resume ? read_parameters(prm, file,
+                               "subsection checkpoint\n  set resume = true\nend\n") :
+               read_parameters(prm, file);
     if (parameters.manufactured.enabled)
       {
         if (parameters.dimension == 2)
@@ -101,6 +109,12 @@ main(int argc, char **argv)
       if (root)
         std::cerr << "hemicontact: solver failure: " << e.what() << std::endl;
       return 3;
+    }
+  catch (const RunInterrupted &e)
+    {
+      if (root)
+        std::cerr << "hemicontact: interrupted: " << e.what() << std::endl;
+      return 5;
     }
   catch (const dealii::ExceptionBase &e)
     {

@@ -544,6 +544,42 @@ namespace hemicontact
   }
 
   void
+  CheckpointParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("checkpoint");
+    prm.declare_entry("interval", "0", Patterns::Integer(0),
+                      "Write a checkpoint (mesh and state, to "
+                      "OUTPUT/checkpoint/) after every this many steps; 0: "
+                      "never. The last two checkpoints are kept; each is "
+                      "written aside, then renamed. Needs 'geometry/cell type "
+                      "= hypercube'.");
+    prm.declare_entry("wall interval", "0", Patterns::Double(0),
+                      "Also write one when this many wall-clock seconds have "
+                      "passed since the last; 0: never.");
+    prm.declare_entry("stop after", "0", Patterns::Integer(0),
+                      "Stop after this many steps of this run with a "
+                      "checkpoint, as SIGTERM does (exit code 5); for job "
+                      "chunks under batch time limits. 0: run to the end.");
+    prm.declare_entry("resume", "false", Patterns::Bool(),
+                      "Continue from the newest checkpoint in OUTPUT/checkpoint "
+                      "(also: hemicontact --resume FILE.prm). steps.csv, "
+                      "probes.csv and solution.pvd are continued; the number "
+                      "of MPI ranks may differ from the interrupted run's.");
+    prm.leave_subsection();
+  }
+
+  void
+  CheckpointParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("checkpoint");
+    interval      = prm.get_integer("interval");
+    wall_interval = prm.get_double("wall interval");
+    stop_after    = prm.get_integer("stop after");
+    resume        = prm.get_bool("resume");
+    prm.leave_subsection();
+  }
+
+  void
   Parameters::declare(ParameterHandler &prm)
   {
     prm.declare_entry("dimension", "2", Patterns::Integer(2, 3),
@@ -557,6 +593,7 @@ namespace hemicontact
     LinearSolverParameters::declare(prm);
     OutputParameters::declare(prm);
     AdaptivityParameters::declare(prm);
+    CheckpointParameters::declare(prm);
     ManufacturedParameters::declare(prm);
     ConvergenceStudyParameters::declare(prm);
   }
@@ -574,6 +611,7 @@ namespace hemicontact
     linear_solver.parse(prm);
     output.parse(prm);
     adaptivity.parse(prm);
+    checkpoint.parse(prm);
     manufactured.parse(prm);
     study.parse(prm);
     prm.enter_subsection("normal law");
@@ -584,6 +622,11 @@ namespace hemicontact
             "adaptivity: adaptive refinement needs 'geometry/cell type = "
             "hypercube' (p4est meshes); set 'adaptivity/interval = 0' for "
             "simplex meshes.");
+    require((checkpoint.interval == 0 && checkpoint.wall_interval == 0 &&
+             checkpoint.stop_after == 0 && !checkpoint.resume) ||
+              geometry.cell_type == "hypercube",
+            "checkpoint: checkpoints need 'geometry/cell type = hypercube' "
+            "(p4est meshes).");
     require(geometry.mesh_type != "rectangle" ||
               (geometry.lower_left.size() >= dimension &&
                geometry.upper_right.size() >= dimension &&

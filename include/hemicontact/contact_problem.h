@@ -247,6 +247,20 @@ namespace hemicontact
     void
     print_step(const StepStatistics &stats) const;
 
+    /** @name checkpoint.cc */
+    /** Whether this mesh type can be checkpointed (p4est). */
+    bool
+    has_checkpoints() const;
+    /** Write mesh, fields and state to OUTPUT/checkpoint (aside, then renamed). */
+    void
+    write_checkpoint();
+    /** setup() from the newest checkpoint instead of the initial data. */
+    void
+    setup_from_checkpoint();
+    /** Drop the rows after the checkpoint's step from steps.csv, probes.csv. */
+    void
+    continue_tables();
+
     /** @name performance.cc */
     /** Totals over the run's steps (for the summary line and performance.csv). */
     struct RunTotals

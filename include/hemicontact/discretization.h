@@ -29,7 +29,7 @@ namespace hemicontact
 
     /** Build the coarse mesh and refine it globally. */
     void
-    make_mesh(const GeometryParameters &geometry);
+    make_mesh(const GeometryParameters &geometry, const bool refine = true);
 
     /**
      * Check that every boundary id named in @p boundary exists on the mesh

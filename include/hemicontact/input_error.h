@@ -31,6 +31,19 @@ namespace hemicontact
     {}
   };
 
+  /**
+   * The run stopped before its end time on request (SIGTERM, or
+   * 'checkpoint/stop after'), after writing a checkpoint to resume from.
+   * main() exits with code 5.
+   */
+  class RunInterrupted : public std::runtime_error
+  {
+  public:
+    explicit RunInterrupted(const std::string &message)
+      : std::runtime_error(message)
+    {}
+  };
+
   /** Throw an InputError with @p message unless @p condition holds. */
   inline void
   require(const bool condition, const std::string &message)

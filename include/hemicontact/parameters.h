@@ -165,6 +165,18 @@ namespace hemicontact
     void        parse(ParameterHandler &prm);
   };
 
+  /** Checkpoints of the time loop and resuming from them (p4est meshes). */
+  struct CheckpointParameters
+  {
+    unsigned int interval;      ///< every this many steps, 0 = never
+    double       wall_interval; ///< every this many wall seconds, 0 = never
+    unsigned int stop_after;    ///< stop (with a checkpoint) after this many steps
+    bool         resume;        ///< continue from the newest checkpoint
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
   /** A convergence study over refinement levels (manufactured solutions). */
   struct ConvergenceStudyParameters
   {
@@ -188,6 +200,7 @@ namespace hemicontact
     LinearSolverParameters     linear_solver;
     OutputParameters           output;
     AdaptivityParameters       adaptivity;
+    CheckpointParameters       checkpoint;
     ManufacturedParameters     manufactured;
     ConvergenceStudyParameters study;
     /** The normal law is parsed by its own factory (see normal_law.h). */

@@ -64,6 +64,7 @@ namespace hemicontact
   {
     const std::string &dir  = parameters.output.directory;
     std::string        error;
+    bool               write_header = true;
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
         std::error_code ec;
@@ -73,7 +74,14 @@ namespace hemicontact
                   "': " + ec.message() + ".";
         else
           {
-            steps_file.open(dir + "/steps.csv");
+            const bool continuing =
+              parameters.checkpoint.resume &&
+              std::filesystem::exists(dir + "/steps.csv");
+            if (continuing)
+              continue_tables();
+            steps_file.open(dir + "/steps.csv",
+                            continuing ? std::ios::app : std::ios::trunc);
+            write_header = !continuing;
             if (!steps_file)
               error = "cannot write to the output directory '" + dir +
                       "' (steps.csv could not be opened).";
@@ -82,7 +90,7 @@ namespace hemicontact
     error = Utilities::MPI::broadcast(mpi_communicator, error, 0);
     require(error.empty(), "output: " + error);
 
-    if (steps_file.is_open())
+    if (steps_file.is_open() && write_header)
       steps_file
         << "step,time,n_cells,n_dofs,newton_iterations,linear_iterations,"
            "n_separating,n_normal_stick,n_damped,n_stick,n_slip,residual,"
@@ -130,7 +138,13 @@ namespace hemicontact
             "output: a probe point lies outside the mesh.");
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
-        probes_file.open(parameters.output.directory + "/probes.csv");
+        const std::string file = parameters.output.directory + "/probes.csv";
+        if (parameters.checkpoint.resume && std::filesystem::exists(file))
+          {
+            probes_file.open(file, std::ios::app); // continue_tables() cut it
+            return;
+          }
+        probes_file.open(file);
         probes_file << "step,time,point";
         const char *xyz[] = {"x", "y", "z"};
         for (unsigned int d = 0; d < dim; ++d)

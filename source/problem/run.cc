@@ -5,11 +5,24 @@
 #include <hemicontact/input_error.h>
 
 #include <algorithm>
+#include <csignal>
 #include <iomanip>
 #include <sstream>
 
 namespace hemicontact
 {
+  namespace
+  {
+    /** Set by SIGTERM; the time loop checks it after every step. */
+    volatile std::sig_atomic_t termination_requested = 0;
+
+    extern "C" void
+    request_termination(int)
+    {
+      termination_requested = 1;
+    }
+  } // namespace
+
   template <int dim>
   StepStatistics
   ContactProblem<dim>::advance()
@@ -55,9 +68,15 @@ namespace hemicontact
   {
     // validate everything (mesh, boundary ids, data) before touching the
     // output directory, so that a bad input does not truncate earlier output
-    setup();
+    const CheckpointParameters &checkpoints = parameters.checkpoint;
+    if (checkpoints.resume)
+      setup_from_checkpoint();
+    else
+      setup();
     open_tables();
     setup_probes();
+    termination_requested = 0;
+    std::signal(SIGTERM, request_termination);
 
     const unsigned int n_nodes = Utilities::MPI::sum(
       static_cast<unsigned int>(std::count_if(
@@ -83,12 +102,20 @@ namespace hemicontact
             << std::endl;
 
     const unsigned int interval = parameters.output.vtu_interval;
-    if (interval > 0)
+    if (checkpoints.resume)
+      pcout << "resumed from the checkpoint of step " << step_number
+            << " (t = " << get_time() << ")" << std::endl;
+    else
       {
-        write_vtu();
-        write_contact_csv();
+        if (interval > 0)
+          {
+            write_vtu();
+            write_contact_csv();
+          }
+        write_probes();
       }
-    write_probes();
+    Timer        since_checkpoint;
+    unsigned int steps_this_run = 0;
 
     RunTotals totals;
     while (!finished())
@@ -105,11 +132,16 @@ namespace hemicontact
                 write_vtu();
                 write_contact_csv();
               }
+            if (has_checkpoints())
+              write_checkpoint();
             throw SolverFailure(std::string(failure.what()) +
                                 " The last converged state (step " +
                                 std::to_string(step_number) +
                                 ") was written to '" +
-                                parameters.output.directory + "'.");
+                                parameters.output.directory + "'" +
+                                (has_checkpoints() ?
+                                   " with a checkpoint to resume from." :
+                                   "."));
           }
         ++totals.steps;
         totals.newton_iterations += stats.newton_iterations;
@@ -127,6 +159,35 @@ namespace hemicontact
             write_contact_csv();
           }
         print_step(stats);
+        ++steps_this_run;
+
+        // checkpoints: periodic, by wall time, and on interruption (the
+        // same decision on every rank)
+        const bool interrupted =
+          Utilities::MPI::max(static_cast<int>(termination_requested),
+                              mpi_communicator) > 0 ||
+          (checkpoints.stop_after > 0 &&
+           steps_this_run == checkpoints.stop_after);
+        const bool periodic =
+          (checkpoints.interval > 0 && step_number % checkpoints.interval == 0) ||
+          (checkpoints.wall_interval > 0 &&
+           Utilities::MPI::max(since_checkpoint.wall_time(), mpi_communicator) >=
+             checkpoints.wall_interval);
+        if (has_checkpoints() && (periodic || (interrupted && !finished())))
+          {
+            write_checkpoint();
+            since_checkpoint.reset();
+            since_checkpoint.start();
+          }
+        if (interrupted && !finished())
+          throw RunInterrupted(
+            "stopped after step " + std::to_string(step_number) + " (t = " +
+            std::to_string(get_time()) + ")" +
+            (has_checkpoints() ? "; a checkpoint was written to '" +
+                                   parameters.output.directory +
+                                   "/checkpoint'; continue with "
+                                   "'hemicontact --resume FILE.prm'." :
+                                 "; no checkpoint (simplex mesh)."));
       }
 
     pcout << "done: " << n_steps << " steps, Newton iterations per step mean "

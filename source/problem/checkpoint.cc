@@ -1,0 +1,301 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/distributed/tria.h>
+
+#include <hemicontact/contact_problem.h>
+#include <hemicontact/input_error.h>
+
+#include <boost/archive/text_iarchive.hpp>
+#include <boost/archive/text_oarchive.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace hemicontact
+{
+  namespace
+  {
+    namespace fs = std::filesystem;
+
+    /** Everything of a run that is not a finite element field. */
+    struct CheckpointState
+    {
+      unsigned int                                step_number = 0;
+      double                                      time_step   = 0;
+      unsigned int                                n_steps     = 0;
+      std::vector<double>                         energy;
+      std::vector<std::pair<double, std::string>> pvd_records;
+
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &step_number &time_step &n_steps &energy &pvd_records;
+      }
+    };
+
+    std::vector<double>
+    to_vector(const EnergyBalance &e)
+    {
+      return {e.kinetic,
+              e.elastic,
+              e.initial_energy,
+              e.viscous_dissipation,
+              e.friction_dissipation,
+              e.damping_dissipation,
+              e.external_work,
+              e.numerical_dissipation,
+              e.transfer_change};
+    }
+
+    EnergyBalance
+    from_vector(const std::vector<double> &v)
+    {
+      EnergyBalance e;
+      AssertThrow(v.size() == 9, ExcMessage("corrupt checkpoint state"));
+      e.kinetic               = v[0];
+      e.elastic               = v[1];
+      e.initial_energy        = v[2];
+      e.viscous_dissipation   = v[3];
+      e.friction_dissipation  = v[4];
+      e.damping_dissipation   = v[5];
+      e.external_work         = v[6];
+      e.numerical_dissipation = v[7];
+      e.transfer_change       = v[8];
+      return e;
+    }
+
+    std::string
+    checkpoint_name(const unsigned int step)
+    {
+      std::ostringstream s;
+      s << "step-" << std::setw(6) << std::setfill('0') << step;
+      return s.str();
+    }
+
+    /** Steps of the complete checkpoints in @p dir (their .state exists). */
+    std::vector<unsigned int>
+    complete_checkpoints(const fs::path &dir)
+    {
+      std::vector<unsigned int> steps;
+      std::error_code           ec;
+      for (const auto &entry : fs::directory_iterator(dir, ec))
+        {
+          const std::string name = entry.path().filename().string();
+          if (name.size() == 17 && name.rfind("step-", 0) == 0 &&
+              name.substr(11) == ".state")
+            steps.push_back(std::stoul(name.substr(5, 6)));
+        }
+      std::sort(steps.begin(), steps.end());
+      return steps;
+    }
+
+    /**
+     * Keep the header and the rows of @p step or earlier of a CSV table
+     * whose first column is the step (what an interrupted run wrote after
+     * its last checkpoint goes), written aside, then renamed.
+     */
+    void
+    truncate_table(const fs::path &file, const unsigned int step)
+    {
+      std::ifstream in(file);
+      if (!in)
+        return;
+      const fs::path aside = file.string() + ".tmp";
+      std::ofstream  out(aside);
+      std::string    line;
+      bool           header = true;
+      while (std::getline(in, line))
+        {
+          if (!header &&
+              (line.empty() || std::stoul(line.substr(0, line.find(','))) > step))
+            continue;
+          out << line << "\n";
+          header = false;
+        }
+      out.close();
+      fs::rename(aside, file);
+    }
+  } // namespace
+
+  template <int dim>
+  bool
+  ContactProblem<dim>::has_checkpoints() const
+  {
+    return dynamic_cast<const parallel::distributed::Triangulation<dim> *>(
+             discretization.triangulation.get()) != nullptr;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::write_checkpoint()
+  {
+    TimerOutput::Scope t(timer, "checkpoint");
+    auto &tria = dynamic_cast<parallel::distributed::Triangulation<dim> &>(
+      *discretization.triangulation);
+    const fs::path     dir  = fs::path(parameters.output.directory) / "checkpoint";
+    const fs::path     aside = dir / "writing";
+    const std::string  name = checkpoint_name(step_number);
+    const bool         root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+    if (root)
+      {
+        fs::remove_all(aside);
+        fs::create_directories(aside);
+      }
+    MPI_Barrier(mpi_communicator);
+
+    // the fields: w_n, u_n and the branches (normal at the node's first
+    // dof, tangential at its second), attached to the p4est mesh
+    TrilinosWrappers::MPI::Vector branches(locally_owned_dofs, mpi_communicator);
+    for (const ContactNode<dim> &node : contact_nodes)
+      if (node.locally_owned)
+        {
+          branches[node.dofs[0]] = static_cast<double>(node.normal_branch);
+          branches[node.dofs[1]] = static_cast<double>(node.tangential_branch);
+        }
+    branches.compress(VectorOperation::insert);
+    TrilinosWrappers::MPI::Vector w(locally_owned_dofs, locally_relevant_dofs,
+                                   mpi_communicator);
+    TrilinosWrappers::MPI::Vector u(w), b(w);
+    w = velocity;
+    u = displacement;
+    b = branches;
+    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
+      transfer(dof_handler);
+    transfer.prepare_for_serialization(
+      std::vector<const TrilinosWrappers::MPI::Vector *>{&w, &u, &b});
+    tria.save((aside / (name + ".mesh")).string());
+
+    if (root)
+      {
+        CheckpointState state;
+        state.step_number = step_number;
+        state.time_step   = time_step;
+        state.n_steps     = n_steps;
+        state.energy      = to_vector(energy);
+        state.pvd_records = pvd_records;
+        {
+          std::ofstream                 out(aside / (name + ".state"));
+          boost::archive::text_oarchive archive(out);
+          archive << state;
+        }
+        // move in place, the .state last: a checkpoint without its .state
+        // (interrupted while moving) is never read
+        std::vector<fs::path> files;
+        for (const auto &entry : fs::directory_iterator(aside))
+          if (entry.path().extension() != ".state")
+            files.push_back(entry.path());
+        for (const fs::path &f : files)
+          fs::rename(f, dir / f.filename());
+        fs::rename(aside / (name + ".state"), dir / (name + ".state"));
+        fs::remove_all(aside);
+
+        // keep the last two
+        const std::vector<unsigned int> steps = complete_checkpoints(dir);
+        for (std::size_t i = 0; i + 2 < steps.size(); ++i)
+          {
+            const std::string old = checkpoint_name(steps[i]);
+            for (const auto &entry : fs::directory_iterator(dir))
+              if (entry.path().filename().string().rfind(old + ".", 0) == 0)
+                fs::remove(entry.path());
+          }
+      }
+    MPI_Barrier(mpi_communicator);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::setup_from_checkpoint()
+  {
+    TimerOutput::Scope t(timer, "setup");
+    const fs::path     dir = fs::path(parameters.output.directory) / "checkpoint";
+    const std::vector<unsigned int> steps = complete_checkpoints(dir);
+    require(!steps.empty(),
+            "checkpoint: 'resume' is set but '" + dir.string() +
+              "' holds no complete checkpoint; run without resume first (with "
+              "'checkpoint/interval' > 0).");
+    const std::string name = checkpoint_name(steps.back());
+
+    CheckpointState state;
+    {
+      std::ifstream in(dir / (name + ".state"));
+      try
+        {
+          boost::archive::text_iarchive archive(in);
+          archive >> state;
+        }
+      catch (const std::exception &e)
+        {
+          throw InputError("checkpoint: cannot read '" +
+                           (dir / (name + ".state")).string() +
+                           "': " + e.what());
+        }
+    }
+    require(std::abs(state.time_step - time_step) <= 1e-12 * time_step &&
+              state.n_steps == n_steps,
+            "checkpoint: the checkpoint was written with another time step or "
+            "end time than the parameter file now sets; resume with the "
+            "parameters of the interrupted run.");
+
+    // the coarse mesh, then the refined one with its fields
+    discretization.make_mesh(parameters.geometry, /*refine=*/false);
+    auto &tria = dynamic_cast<parallel::distributed::Triangulation<dim> &>(
+      *discretization.triangulation);
+    tria.load((dir / (name + ".mesh")).string());
+    discretization.check_boundary_ids(parameters.boundary);
+    setup_dofs();
+    assemble_constant_matrices();
+    setup_contact_nodes();
+    linear_solver.set_rigid_body_modes(dof_handler, *discretization.mapping);
+
+    TrilinosWrappers::MPI::Vector branches(locally_owned_dofs, mpi_communicator);
+    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
+      transfer(dof_handler);
+    std::vector<TrilinosWrappers::MPI::Vector *> fields{&velocity, &displacement,
+                                                        &branches};
+    transfer.deserialize(fields);
+    old_velocity = velocity;
+    TrilinosWrappers::MPI::Vector b(locally_owned_dofs, locally_relevant_dofs,
+                                   mpi_communicator);
+    b = branches;
+    for (ContactNode<dim> &node : contact_nodes)
+      {
+        node.normal_branch =
+          static_cast<NormalBranch>(std::lround(b[node.dofs[0]]));
+        node.tangential_branch =
+          static_cast<TangentialBranch>(std::lround(b[node.dofs[1]]));
+      }
+
+    step_number = state.step_number;
+    energy      = from_vector(state.energy);
+    pvd_records = state.pvd_records;
+    check_convexity();
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::continue_tables()
+  {
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+    const fs::path dir = parameters.output.directory;
+    truncate_table(dir / "steps.csv", step_number);
+    truncate_table(dir / "probes.csv", step_number);
+  }
+
+#define HEMICONTACT_INSTANTIATE(dim)                                           \
+  template bool ContactProblem<dim>::has_checkpoints() const;                 \
+  template void ContactProblem<dim>::write_checkpoint();                      \
+  template void ContactProblem<dim>::setup_from_checkpoint();                 \
+  template void ContactProblem<dim>::continue_tables();
+
+  HEMICONTACT_INSTANTIATE(2)
+  HEMICONTACT_INSTANTIATE(3)
+#undef HEMICONTACT_INSTANTIATE
+} // namespace hemicontact

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# kill_and_resume.sh EXE PRM WORKDIR SIGNAL
+# Start a run that checkpoints every 5 steps, kill it with SIGNAL (TERM or
+# KILL) at a random moment, resume it, and compare with an uninterrupted
+# run. SIGTERM must also leave a checkpoint of the step it was in (exit 5).
+set -euo pipefail
+exe=$1; prm=$2; work=$3; signal=$4
+here=$(cd "$(dirname "$0")" && pwd)
+rm -rf "$work"; mkdir -p "$work"; cd "$work"
+write_prm() { # NAME DIRECTORY
+  { cat "$prm"
+    printf 'subsection output\n  set directory = %s\n  set vtu interval = 10\n' "$2"
+    printf '  set probe points = 4, 0\n  set terminal = quiet\nend\n'
+    printf 'subsection checkpoint\n  set interval = 5\nend\n'; } > "$1"
+}
+write_prm whole.prm whole
+write_prm killed.prm killed
+"$exe" whole.prm
+
+# kill once the run is past its first checkpoint, at a random later moment
+"$exe" killed.prm 2> killed.err & pid=$!
+while kill -0 $pid 2> /dev/null && [ ! -f killed/checkpoint/step-000005.state ]; do sleep 0.02; done
+sleep "0.$(( RANDOM % 5 ))$(( RANDOM % 10 ))"
+kill -s "$signal" $pid 2> /dev/null || true
+status=0; wait $pid || status=$?
+rows=$(($(wc -l < killed/steps.csv) - 1))
+echo "killed with SIG$signal after $rows steps (exit status $status)"
+if [ "$status" -eq 0 ]; then
+  echo "(the run had finished before the signal: nothing to resume)"
+else
+  if [ "$signal" = TERM ]; then
+    [ "$status" -eq 5 ] || { echo "FAIL: SIGTERM gave exit status $status, not 5"; cat killed.err; exit 1; }
+    last=$(ls killed/checkpoint | grep '\.state$' | tail -1)
+    [ "$last" = "$(printf 'step-%06d.state' "$rows")" ] ||
+      { echo "FAIL: SIGTERM left no checkpoint of step $rows (newest: $last)"; exit 1; }
+    echo "SIGTERM wrote a checkpoint of step $rows"
+  fi
+  "$exe" --resume killed.prm
+fi
+bash "$here/compare_runs.sh" whole killed
