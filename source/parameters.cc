@@ -284,6 +284,12 @@ namespace hemicontact
     prm.declare_entry("max iterations", "50", Patterns::Integer(1),
                       "Iteration limit of one step; exceeding it stops the run "
                       "after writing the last converged state.");
+    prm.declare_entry(
+      "time step halvings", "0", Patterns::Integer(0, 10),
+      "When Newton fails in a step, retry its interval with two steps of "
+      "k/2, recursively up to this many times (reported on the terminal and "
+      "in steps.csv); 0: stop with the message and a checkpoint of the last "
+      "converged step.");
     prm.declare_entry("complementarity constant factor", "1",
                       Patterns::Double(0),
                       "The constant c of the node-wise projections is this "
@@ -306,6 +312,7 @@ namespace hemicontact
     tolerance              = prm.get_double("tolerance");
     absolute_tolerance     = prm.get_double("absolute tolerance");
     max_iterations         = prm.get_integer("max iterations");
+    time_step_halvings     = prm.get_integer("time step halvings");
     complementarity_factor = prm.get_double("complementarity constant factor");
     line_search            = prm.get_bool("line search");
     min_step_length        = prm.get_double("minimum step length");

@@ -247,6 +247,18 @@ namespace hemicontact
     void
     print_step(const StepStatistics &stats) const;
 
+    /** @name run.cc */
+    /**
+     * One interval [start, start + k]: a step of size k, or if Newton
+     * fails (and 'time step halvings' allows) two intervals of k/2.
+     */
+    StepStatistics
+    advance_interval(const double start, const double k,
+                     const unsigned int depth);
+    /** Change k and what depends on it (step matrix, AMG). */
+    void
+    set_time_step(const double k);
+
     /** @name checkpoint.cc */
     /** Whether this mesh type can be checkpointed (p4est). */
     bool

@@ -19,8 +19,10 @@ namespace hemicontact
    * steps, is zero up to the solver tolerance.
    *
    * A mesh adaptation moves w_n and u_n to the new mesh by interpolation,
-   * which changes E_n by itself; that change is summed in transfer_change
-   * and taken out of the defect, so the identity still checks the steps.
+   * and a change of the time step (halving after a Newton failure) changes
+   * u_{n+1} = u_n + k w_n; both change E_n by themselves. Those changes are
+   * summed in transfer_change and taken out of the defect, so the identity
+   * still checks the steps.
    */
   struct EnergyBalance
   {
@@ -32,7 +34,7 @@ namespace hemicontact
     double damping_dissipation   = 0; ///< sum k m_i xi_nu w_nu
     double external_work         = 0; ///< sum k <f_n, w_n>
     double numerical_dissipation = 0; ///< sum of the bracket above
-    double transfer_change       = 0; ///< sum of E after - E before adaptation
+    double transfer_change       = 0; ///< sum of E after - E before a mesh or k change
 
     double
     total_energy() const

@@ -88,6 +88,8 @@ namespace hemicontact
     double       tolerance;          ///< relative nonsmooth residual
     double       absolute_tolerance; ///< absolute floor of the residual
     unsigned int max_iterations;
+    /** How often a failing step may be retried with half the time step. */
+    unsigned int time_step_halvings;
     double       complementarity_factor; ///< c_i = factor * K_ii / m_i
     bool         line_search;
     double       min_step_length;

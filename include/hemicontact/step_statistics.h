@@ -17,6 +17,7 @@ namespace hemicontact
     unsigned int n_damped_steps      = 0; ///< line-search reductions
     double       residual            = 0; ///< relative nonsmooth residual
     double       wall_seconds        = 0;
+    unsigned int time_step_halvings  = 0; ///< sub-steps added after failures
     unsigned int n_cells             = 0; ///< of the mesh the step ran on
     unsigned int n_dofs              = 0;
     /** @name Mesh adaptation after this step (all zero if none) */

@@ -100,7 +100,7 @@ namespace hemicontact
            "line_search_reductions,wall_seconds,adapted,"
            "kinetic_before_adaptation,elastic_before_adaptation,"
            "kinetic_after_adaptation,elastic_after_adaptation,"
-           "energy_transfer_change\n";
+           "energy_transfer_change,time_step_halvings\n";
   }
 
   template <int dim>
@@ -302,7 +302,7 @@ namespace hemicontact
                << "," << s.elastic_before_adaptation << ","
                << s.kinetic_after_adaptation << ","
                << s.elastic_after_adaptation << "," << e.transfer_change
-               << "\n";
+               << "," << s.time_step_halvings << "\n";
     steps_file.flush();
   }
 

@@ -5,6 +5,7 @@
 #include <hemicontact/input_error.h>
 
 #include <algorithm>
+#include <tuple>
 #include <csignal>
 #include <iomanip>
 #include <sstream>
@@ -31,35 +32,90 @@ namespace hemicontact
     ++step_number;
     const double time = get_time();
 
-    // u_n = u_{n-1} + k w_{n-1} (left-point rule), then solve for w_n
-    old_velocity = velocity;
-    displacement.add(time_step, old_velocity);
-    assemble_load(time);
-    assemble_step_rhs();
-
     StepStatistics stats;
     try
       {
-        stats = solve_step();
+        stats = advance_interval(time - time_step, time_step, 0);
       }
     catch (const SolverFailure &failure)
       {
-        // restore the last converged state (w_{n-1}, u_{n-1})
-        displacement.add(-time_step, old_velocity);
-        velocity = old_velocity;
         --step_number;
         std::ostringstream message;
         message << "step " << step_number + 1 << " (t = " << time
                 << ") failed: " << failure.what();
         throw SolverFailure(message.str());
       }
-    update_energy_balance(/*initial=*/false);
     stats.step         = step_number;
     stats.time         = time;
     stats.wall_seconds = wall.wall_time();
     stats.n_cells      = discretization.triangulation->n_global_active_cells();
     stats.n_dofs       = dof_handler.n_dofs();
     return stats;
+  }
+
+  template <int dim>
+  StepStatistics
+  ContactProblem<dim>::advance_interval(const double       start,
+                                        const double       k,
+                                        const unsigned int depth)
+  {
+    // u_n = u_{n-1} + k w_{n-1} (left-point rule), then solve for w_n
+    old_velocity = velocity;
+    displacement.add(k, old_velocity);
+    assemble_load(start + k);
+    assemble_step_rhs();
+    try
+      {
+        const StepStatistics stats = solve_step();
+        update_energy_balance(/*initial=*/false);
+        return stats;
+      }
+    catch (const SolverFailure &failure)
+      {
+        // back to the last converged state (w_{n-1}, u_{n-1})
+        displacement.add(-k, old_velocity);
+        velocity = old_velocity;
+        if (depth >= parameters.nonlinear_solver.time_step_halvings)
+          throw;
+      }
+
+    // retry the interval as two steps of k/2 (and so on, recursively)
+    pcout << "  Newton failed with k = " << k << " on [" << start << ", "
+          << start + k << "]: two steps of k/2" << std::endl;
+    set_time_step(k / 2);
+    StepStatistics first, second;
+    try
+      {
+        first  = advance_interval(start, k / 2, depth + 1);
+        second = advance_interval(start + k / 2, k / 2, depth + 1);
+      }
+    catch (const SolverFailure &)
+      {
+        set_time_step(k);
+        throw;
+      }
+    set_time_step(k);
+    second.newton_iterations += first.newton_iterations;
+    second.linear_iterations += first.linear_iterations;
+    second.n_damped_steps += first.n_damped_steps;
+    second.time_step_halvings += 1 + first.time_step_halvings;
+    return second;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::set_time_step(const double k)
+  {
+    // everything that depends on k: the step matrix rho/k M + A and its AMG
+    // and the stored energy, whose elastic part is that of u_n + k w_n: the
+    // change of k changes E_n by itself, booked like a mesh transfer
+    const std::pair<double, double> before = stored_energy();
+    time_step                              = k;
+    assemble_constant_matrices();
+    linear_solver.set_rigid_body_modes(dof_handler, *discretization.mapping);
+    std::tie(energy.kinetic, energy.elastic) = stored_energy();
+    energy.transfer_change += energy.kinetic + energy.elastic -
+                              before.first - before.second;
   }
 
   template <int dim>
@@ -204,6 +260,9 @@ namespace hemicontact
 
 #define HEMICONTACT_INSTANTIATE(dim)                                           \
   template StepStatistics ContactProblem<dim>::advance();                     \
+  template StepStatistics ContactProblem<dim>::advance_interval(              \
+    const double, const double, const unsigned int);                           \
+  template void ContactProblem<dim>::set_time_step(const double);                     \
   template void           ContactProblem<dim>::run();
 
   HEMICONTACT_INSTANTIATE(2)
