@@ -204,16 +204,17 @@ namespace hemicontact
         totals.max_newton = std::max(totals.max_newton, stats.newton_iterations);
         totals.linear_iterations += stats.linear_iterations;
         totals.step_wall_seconds += stats.wall_seconds;
-        const unsigned int adapt_every = parameters.adaptivity.interval;
-        if (adapt_every > 0 && step_number % adapt_every == 0 && !finished())
-          adapt_mesh(stats);
-        write_step_row(stats);
+        // the fields on the mesh the step ran on, then (maybe) a new mesh
         write_probes();
         if (interval > 0 && (step_number % interval == 0 || finished()))
           {
             write_vtu();
             write_contact_csv();
           }
+        const unsigned int adapt_every = parameters.adaptivity.interval;
+        if (adapt_every > 0 && step_number % adapt_every == 0 && !finished())
+          adapt_mesh(stats);
+        write_step_row(stats);
         print_step(stats);
         ++steps_this_run;
 
