@@ -2,7 +2,7 @@
 
     /usr/bin/python3 jupyter-notes/make_contact_boundary_notebook.py
 """
-import json, pathlib
+from notebook_writer import write_notebook
 
 cells = [
 ("markdown", """# The contact boundary Γ3: tractions and velocities
@@ -173,15 +173,4 @@ plt.close(fig)
 print(sorted(p.name for p in figures.glob(f"{tag}-contact-*.png")))"""),
 ]
 
-nb = {"nbformat": 4, "nbformat_minor": 5,
-      "metadata": {"kernelspec": {"name": "python3", "display_name": "Python 3", "language": "python"},
-                   "language_info": {"name": "python"}},
-      "cells": []}
-for i, (kind, text) in enumerate(cells):
-    cell = {"cell_type": kind, "metadata": {}, "source": text, "id": f"cell-{i}"}
-    if kind == "code":
-        cell.update({"outputs": [], "execution_count": None})
-    nb["cells"].append(cell)
-path = pathlib.Path(__file__).with_name("contact_boundary.ipynb")
-path.write_text(json.dumps(nb, indent=1))
-print("wrote", path)
+write_notebook(cells, "contact_boundary")

@@ -2,7 +2,7 @@
 
     /usr/bin/python3 jupyter-notes/make_monotone_vs_nonmonotone_notebook.py
 """
-import json, pathlib
+from notebook_writer import write_notebook
 
 cells = [
 ("markdown", """# Monotone vs nonmonotone normal law
@@ -146,15 +146,4 @@ plt.close(fig)
 print(sorted(p.name for p in figures.glob("compare-law-*.png")))"""),
 ]
 
-nb = {"nbformat": 4, "nbformat_minor": 5,
-      "metadata": {"kernelspec": {"name": "python3", "display_name": "Python 3", "language": "python"},
-                   "language_info": {"name": "python"}},
-      "cells": []}
-for i, (kind, text) in enumerate(cells):
-    cell = {"cell_type": kind, "metadata": {}, "source": text, "id": f"cell-{i}"}
-    if kind == "code":
-        cell.update({"outputs": [], "execution_count": None})
-    nb["cells"].append(cell)
-path = pathlib.Path(__file__).with_name("monotone_vs_nonmonotone.ipynb")
-path.write_text(json.dumps(nb, indent=1))
-print("wrote", path)
+write_notebook(cells, "monotone_vs_nonmonotone")

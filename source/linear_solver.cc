@@ -73,6 +73,12 @@ namespace hemicontact
                   }
               }
         }
+    clear_preconditioners();
+  }
+
+  void
+  LinearSolver::clear_preconditioners()
+  {
     amg.reset();
     step_amg.reset();
     contact_amg.reset();
@@ -145,8 +151,7 @@ namespace hemicontact
   unsigned int
   LinearSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
                       TrilinosWrappers::MPI::Vector &       x,
-                      const TrilinosWrappers::MPI::Vector & b,
-                      const bool reuse_preconditioner)
+                      const TrilinosWrappers::MPI::Vector & b)
   {
     if (parameters.type == "direct")
       {
@@ -158,8 +163,7 @@ namespace hemicontact
         return 1;
       }
 
-    if (!reuse_preconditioner || amg == nullptr)
-      amg = make_amg(matrix);
+    amg = make_amg(matrix);
     SolverControl control(parameters.max_iterations,
                           std::max(parameters.relative_tolerance * b.l2_norm(),
                                    1e-300));

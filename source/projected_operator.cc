@@ -25,11 +25,24 @@ namespace hemicontact
     const Tensor<2, dim> &                          stiffness)
   {
     NodeBlock block;
+    block.dofs = dofs;
     for (unsigned int c = 0; c < dim; ++c)
       block.local_index[c] = owned->index_within_set(dofs[c]);
     block.projector = projector;
     block.stiffness = projector * stiffness * projector;
     blocks.push_back(block);
+  }
+
+  template <int dim>
+  void
+  ProjectedOperator<dim>::add_stiffness_to(
+    TrilinosWrappers::SparseMatrix &matrix) const
+  {
+    for (const NodeBlock &block : blocks)
+      for (unsigned int a = 0; a < dim; ++a)
+        for (unsigned int b = 0; b < dim; ++b)
+          if (block.stiffness[a][b] != 0)
+            matrix.add(block.dofs[a], block.dofs[b], block.stiffness[a][b]);
   }
 
   template <int dim>

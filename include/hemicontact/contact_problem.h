@@ -157,6 +157,9 @@ namespace hemicontact
     /** @name setup.cc */
     void
     make_mesh();
+    /** Dofs, constraints, constant matrices, contact nodes, AMG modes. */
+    void
+    setup_on_current_mesh();
     void
     setup_dofs();
     void
@@ -184,6 +187,13 @@ namespace hemicontact
     {
       return parameters.linear_solver.type == "direct" ||
              parameters.linear_solver.newton_operator == "assembled";
+    }
+    /** Whether newton_matrix is used (assembled, or K0 + contact for an AMG rebuild). */
+    bool
+    needs_newton_matrix() const
+    {
+      return assembles_newton_matrix() ||
+             parameters.linear_solver.preconditioner_rebuild_factor > 0;
     }
     StepStatistics
     solve_step();

@@ -39,14 +39,12 @@ namespace hemicontact
      * Solve @p matrix x = b to the relative tolerance of the parameters
      * (starting from the given x). Returns the number of Krylov iterations
      * (1 for the direct solver). Throws SolverFailure if CG does not
-     * converge. With @p reuse_preconditioner the AMG hierarchy of the
-     * previous call is kept (the caller guarantees the same matrix).
+     * converge. The AMG hierarchy is built for @p matrix on every call.
      */
     unsigned int
     solve(const TrilinosWrappers::SparseMatrix &matrix,
           TrilinosWrappers::MPI::Vector &       x,
-          const TrilinosWrappers::MPI::Vector & b,
-          const bool reuse_preconditioner = false);
+          const TrilinosWrappers::MPI::Vector & b);
 
     /**
      * Solve @p matrix x = b with CG and the AMG hierarchy of the step
@@ -103,6 +101,13 @@ namespace hemicontact
      */
     const TrilinosWrappers::PreconditionAMG &
     step_preconditioner(const TrilinosWrappers::SparseMatrix &step_matrix);
+
+    /**
+     * Forget every AMG hierarchy (the matrices changed, e.g. with the time
+     * step); the next solve builds them anew.
+     */
+    void
+    clear_preconditioners();
 
     /** Wall seconds spent in AMG set-ups so far. */
     double

@@ -47,6 +47,10 @@ namespace hemicontact
     add_node(const std::array<types::global_dof_index, dim> &dofs,
              const Tensor<2, dim> &projector, const Tensor<2, dim> &stiffness);
 
+    /** matrix(i_a, i_b) += (Pi L Pi)_ab at every node block (owned rows). */
+    void
+    add_stiffness_to(TrilinosWrappers::SparseMatrix &matrix) const;
+
     /** v := Pi v (owned entries only; no communication). */
     void
     project(TrilinosWrappers::MPI::Vector &v) const;
@@ -59,6 +63,7 @@ namespace hemicontact
   private:
     struct NodeBlock
     {
+      std::array<types::global_dof_index, dim> dofs;
       std::array<unsigned int, dim> local_index; ///< into the owned range
       Tensor<2, dim>                projector;
       Tensor<2, dim>                stiffness; ///< Pi L Pi

@@ -119,10 +119,7 @@ namespace hemicontact
     tria->execute_coarsening_and_refinement();
 
     // rebuild everything that lives on the mesh
-    setup_dofs();
-    assemble_constant_matrices();
-    setup_contact_nodes();
-    linear_solver.set_rigid_body_modes(dof_handler, *discretization.mapping);
+    setup_on_current_mesh();
     std::vector<TrilinosWrappers::MPI::Vector *> new_fields{&velocity,
                                                             &displacement};
     transfer.interpolate(new_fields);

@@ -249,10 +249,7 @@ namespace hemicontact
       *discretization.triangulation);
     tria.load((dir / (name + ".mesh")).string());
     discretization.check_boundary_ids(parameters.boundary);
-    setup_dofs();
-    assemble_constant_matrices();
-    setup_contact_nodes();
-    linear_solver.set_rigid_body_modes(dof_handler, *discretization.mapping);
+    setup_on_current_mesh();
 
     TrilinosWrappers::MPI::Vector branches(locally_owned_dofs, mpi_communicator);
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>

@@ -207,7 +207,6 @@ namespace hemicontact
     // g = b - (contact force - L_i w) at the nodes
     ProjectedOperator<dim>        op(step_matrix, locally_owned_dofs);
     TrilinosWrappers::MPI::Vector rhs(step_rhs);
-    std::vector<Tensor<2, dim>>   node_stiffness(contact_nodes.size());
     {
       TimerOutput::Scope t(timer, "active set update");
       for (unsigned int k = 0; k < contact_nodes.size(); ++k)
@@ -221,7 +220,6 @@ namespace hemicontact
                  NodeContact::constrained_directions(node))
               projector -= outer_product(e, e);
             op.add_node(node.dofs, projector, lin.matrix);
-            node_stiffness[k] = projector * lin.matrix * projector;
 
             Tensor<1, dim> w_node;
             for (unsigned int c = 0; c < dim; ++c)
@@ -240,17 +238,7 @@ namespace hemicontact
         // K0 plus the nodal stiffness: a copy of the values and dim x dim
         // additions, no cell loop
         newton_matrix.copy_from(step_matrix);
-        for (unsigned int k = 0; k < contact_nodes.size(); ++k)
-          if (contact_nodes[k].locally_owned)
-            {
-              const ContactNode<dim> &node = contact_nodes[k];
-              const Tensor<2, dim> &  stiffness = node_stiffness[k];
-              for (unsigned int a = 0; a < dim; ++a)
-                for (unsigned int b = 0; b < dim; ++b)
-                  if (stiffness[a][b] != 0)
-                    newton_matrix.add(node.dofs[a], node.dofs[b],
-                                      stiffness[a][b]);
-            }
+        op.add_stiffness_to(newton_matrix);
         newton_matrix.compress(VectorOperation::add);
         linear_solver.rebuild_contact_preconditioner(newton_matrix);
       }

@@ -52,10 +52,7 @@ namespace hemicontact
   {
     TimerOutput::Scope t(timer, "setup");
     make_mesh();
-    setup_dofs();
-    assemble_constant_matrices();
-    setup_contact_nodes();
-    linear_solver.set_rigid_body_modes(dof_handler, *discretization.mapping);
+    setup_on_current_mesh();
     initialize_state();
     check_convexity();
   }
@@ -66,6 +63,16 @@ namespace hemicontact
   {
     discretization.make_mesh(parameters.geometry);
     discretization.check_boundary_ids(parameters.boundary);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::setup_on_current_mesh()
+  {
+    setup_dofs();
+    assemble_constant_matrices();
+    setup_contact_nodes();
+    linear_solver.set_rigid_body_modes(dof_handler, *discretization.mapping);
   }
 
   template <int dim>
@@ -88,8 +95,10 @@ namespace hemicontact
                                       mpi_communicator));
     sparsity.compress();
     for (TrilinosWrappers::SparseMatrix *m :
-         {&mass_matrix, &step_matrix, &elastic_matrix, &newton_matrix})
+         {&mass_matrix, &step_matrix, &elastic_matrix})
       m->reinit(sparsity);
+    if (needs_newton_matrix())
+      newton_matrix.reinit(sparsity);
 
     for (TrilinosWrappers::MPI::Vector *v :
          {&velocity, &old_velocity, &displacement, &load, &step_rhs,
@@ -262,6 +271,7 @@ namespace hemicontact
                                                ProblemData<dim>, MPI_Comm);   \
   template void ContactProblem<dim>::setup();                                 \
   template void ContactProblem<dim>::make_mesh();                             \
+  template void ContactProblem<dim>::setup_on_current_mesh();                 \
   template void ContactProblem<dim>::setup_dofs();                            \
   template void ContactProblem<dim>::setup_base_constraints();                \
   template void ContactProblem<dim>::setup_contact_nodes();                   \
