@@ -33,12 +33,15 @@ namespace hemicontact
       }
     else
       {
+        // Only the smoothing that p4est's 2:1 (face and corner) balance
+        // enforces globally anyway: the other smoothing rules (e.g.
+        // eliminate_unrefined_islands) are applied by each rank to its own
+        // cells with the flags of one ghost layer, so chains of them stop at
+        // partition boundaries and the mesh would depend on the number of
+        // ranks (doc/adaptivity.md).
         triangulation =
           std::make_unique<parallel::distributed::Triangulation<dim>>(
-            comm,
-            typename Triangulation<dim>::MeshSmoothing(
-              Triangulation<dim>::smoothing_on_refinement |
-              Triangulation<dim>::smoothing_on_coarsening));
+            comm, Triangulation<dim>::limit_level_difference_at_vertices);
         fe      = std::make_unique<FESystem<dim>>(FE_Q<dim>(1), dim);
         mapping = std::make_unique<MappingQ<dim>>(1);
       }
