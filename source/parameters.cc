@@ -510,12 +510,21 @@ namespace hemicontact
                       "Weight of the contact term of 'kelly contact'.");
     prm.declare_entry("strategy", "fixed fraction",
                       Patterns::Selection("fixed fraction|fixed number"),
-                      "'fixed fraction': refine the cells holding 'refine "
-                      "fraction' of the total indicator, coarsen those holding "
-                      "'coarsen fraction'; 'fixed number': refine/coarsen "
-                      "these fractions of the cells. Both respect 'max "
-                      "cells' (fixed fraction: no refinement once the mesh "
-                      "has that many cells).");
+                      "'fixed fraction': refine the fewest cells with the "
+                      "largest indicators that hold at least 'refine "
+                      "fraction' of the sum of all indicators, coarsen the "
+                      "most cells with the smallest indicators that hold at "
+                      "most 'coarsen fraction' of it; 'fixed number': "
+                      "refine/coarsen these fractions of the cells. Either "
+                      "way a cut between two indicators that differ by less "
+                      "than a relative 1e-5 moves to the nearest cut that "
+                      "does not (fewer refined or coarsened cells first), at "
+                      "most max(8, cells/1000) cells away (if there is none, "
+                      "to the widest gap within that distance), so "
+                      "round-off and solver tolerances do not change the "
+                      "mesh (the same on any number of MPI ranks). Both "
+                      "respect 'max cells' (fixed fraction: no refinement "
+                      "once the mesh has that many cells).");
     prm.declare_entry("refine fraction", "0.3", Patterns::Double(0, 1),
                       "See 'strategy'.");
     prm.declare_entry("coarsen fraction", "0.05", Patterns::Double(0, 1),

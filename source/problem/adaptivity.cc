@@ -1,13 +1,16 @@
-#include <deal.II/distributed/grid_refinement.h>
 #include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_refinement.h>
 #include <deal.II/numerics/error_estimator.h>
 
 #include <hemicontact/contact_problem.h>
+#include <hemicontact/marking.h>
 
 #include <cmath>
+#include <limits>
 #include <set>
+#include <vector>
 
 namespace hemicontact
 {
@@ -80,28 +83,43 @@ namespace hemicontact
     std::tie(stats.kinetic_before_adaptation,
              stats.elastic_before_adaptation) = stored_energy();
 
-    // mark
+    // mark: thresholds from all indicators, sorted, so the same on any
+    // number of ranks (see marking_thresholds())
     const Vector<float> indicators = refinement_indicators();
-    const auto          max_cells  = settings.max_cells > 0 ?
-                                       settings.max_cells :
-                                       std::numeric_limits<unsigned int>::max();
-    if (settings.strategy == "fixed fraction")
-      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_fraction(
-        *tria, indicators,
-        tria->n_global_active_cells() < max_cells ? settings.refine_fraction :
-                                                    0.,
-        settings.coarsen_fraction);
-    else
-      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
-        *tria, indicators, settings.refine_fraction, settings.coarsen_fraction,
-        max_cells);
+    std::vector<float>  owned;
+    for (const auto &cell : tria->active_cell_iterators())
+      if (cell->is_locally_owned())
+        owned.push_back(indicators[cell->active_cell_index()]);
+    std::vector<float> all;
+    for (const std::vector<float> &part :
+         Utilities::MPI::all_gather(mpi_communicator, owned))
+      all.insert(all.end(), part.begin(), part.end());
+    const types::global_cell_index n_cells = all.size();
+    const types::global_cell_index max_cells =
+      settings.max_cells > 0 ?
+        settings.max_cells :
+        std::numeric_limits<types::global_cell_index>::max();
+    double refine_fraction  = settings.refine_fraction;
+    double coarsen_fraction = settings.coarsen_fraction;
+    if (settings.strategy == "fixed number")
+      std::tie(refine_fraction, coarsen_fraction) =
+        GridRefinement::adjust_refine_and_coarsen_number_fraction<dim>(
+          n_cells, max_cells, refine_fraction, coarsen_fraction);
+    else if (n_cells >= max_cells)
+      refine_fraction = 0;
+    const MarkingThresholds thresholds = marking_thresholds(
+      std::move(all), settings.strategy, refine_fraction, coarsen_fraction);
     for (const auto &cell : tria->active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          if (cell->level() >= static_cast<int>(settings.max_level))
-            cell->clear_refine_flag();
-          if (cell->level() <= static_cast<int>(settings.min_level))
-            cell->clear_coarsen_flag();
+          const double indicator = indicators[cell->active_cell_index()];
+          const int    level     = cell->level();
+          if (indicator > thresholds.refine &&
+              level < static_cast<int>(settings.max_level))
+            cell->set_refine_flag();
+          else if (indicator < thresholds.coarsen &&
+                   level > static_cast<int>(settings.min_level))
+            cell->set_coarsen_flag();
         }
 
     // transfer w_n and u_n (everything a step needs: w_{n-1} of the next
