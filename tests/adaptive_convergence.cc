@@ -12,8 +12,9 @@
 //   fitted slopes of E_V and E_u are at least the uniform ones less 0.05
 //   (E_H is dominated by the time error here, the same k on both meshes:
 //   its rate against dofs only follows the growth of the dofs);
-// - at the finest level the adaptive E_V and E_u lie below the uniform
-//   errors at the adaptive mean dofs (log-log interpolated or extrapolated).
+// - at the finest level the adaptive E_V and E_u lie below 0.95 times the
+//   uniform errors at the adaptive mean dofs (log-log interpolated or
+//   extrapolated; about 0.87 and 0.80 when written).
 #include <hemicontact/convergence_study.h>
 #include <hemicontact/normal_law.h>
 #include <hemicontact/parameters.h>
@@ -169,9 +170,9 @@ main(int argc, char **argv)
       const double ratio =
         adaptive.back().errors.*e /
         uniform_at(uniform, e, adaptive.back().mean_dofs);
-      out() << name << " below the uniform error at the same dofs: "
-            << yes_no(ratio < 1) << std::endl;
-      if (ratio >= 1)
+      out() << name << " below 0.95 times the uniform error at the same dofs: "
+            << yes_no(ratio < 0.95) << std::endl;
+      if (ratio >= 0.95)
         numbers << "  " << name << ": adaptive / uniform " << ratio << "\n";
     }
   // the numbers only when a check fails (not reproducible to the last digit)
