@@ -477,7 +477,16 @@ namespace hemicontact
                       "refines the mesh once per level with the time step "
                       "fixed; 'k' halves the time step per level on the fixed "
                       "mesh; 'coupled' does both (k = c h). Level 0 uses "
-                      "'geometry/global refinements' and 'time/time step'.");
+                      "'geometry/global refinements' and 'time/time step'. "
+                      "Adaptive ('adaptivity/interval' > 0): each level "
+                      "adapts the mesh as a run does, and 'h' and 'coupled' "
+                      "raise 'adaptivity/max level' by one and multiply "
+                      "'adaptivity/max cells' by 2^dim per level, along "
+                      "with the global refinements of the starting mesh; "
+                      "the table then gives the mean and maximum dofs over "
+                      "the steps (convergence.csv: mean_dofs, max_dofs) and "
+                      "for 'h' and 'coupled' the orders -log(error "
+                      "ratio)/log(mean dofs ratio) (O(h) is 1/dim).");
     prm.declare_entry("levels", "4", Patterns::Integer(1, 12),
                       "Number of levels.");
     prm.leave_subsection();

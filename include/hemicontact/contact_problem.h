@@ -78,6 +78,14 @@ namespace hemicontact
     void
     adapt_mesh(StepStatistics &stats);
 
+    /**
+     * Call adapt_mesh() if it is due after the step just taken: every
+     * 'adaptivity/interval' steps (never if 0), and not after the last
+     * step. Returns whether the mesh was adapted.
+     */
+    bool
+    adapt_mesh_if_due(StepStatistics &stats);
+
     /** The cell-wise refinement indicator of the current state. */
     Vector<float>
     refinement_indicators() const;

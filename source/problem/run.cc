@@ -119,6 +119,17 @@ namespace hemicontact
   }
 
   template <int dim>
+  bool
+  ContactProblem<dim>::adapt_mesh_if_due(StepStatistics &stats)
+  {
+    const unsigned int every = parameters.adaptivity.interval;
+    if (every == 0 || step_number % every != 0 || finished())
+      return false;
+    adapt_mesh(stats);
+    return true;
+  }
+
+  template <int dim>
   void
   ContactProblem<dim>::run()
   {
@@ -211,9 +222,7 @@ namespace hemicontact
             write_vtu();
             write_contact_csv();
           }
-        const unsigned int adapt_every = parameters.adaptivity.interval;
-        if (adapt_every > 0 && step_number % adapt_every == 0 && !finished())
-          adapt_mesh(stats);
+        adapt_mesh_if_due(stats);
         write_step_row(stats);
         print_step(stats);
         ++steps_this_run;
@@ -264,6 +273,7 @@ namespace hemicontact
   template StepStatistics ContactProblem<dim>::advance_interval(              \
     const double, const double, const unsigned int);                           \
   template void ContactProblem<dim>::set_time_step(const double);                     \
+  template bool ContactProblem<dim>::adapt_mesh_if_due(StepStatistics &);    \
   template void           ContactProblem<dim>::run();
 
   HEMICONTACT_INSTANTIATE(2)

@@ -10,11 +10,13 @@
 #include <hemicontact/input_error.h>
 #include <hemicontact/manufactured_solution.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 
 namespace hemicontact
 {
@@ -95,145 +97,255 @@ namespace hemicontact
           h = std::max(h, cell->diameter());
       return Utilities::MPI::max(h, comm);
     }
+
+    /** The sums over the steps of one level that make its LevelResult. */
+    struct LevelSums
+    {
+      ErrorNorms   errors;
+      double       sum_V = 0, sum_V_H1 = 0, sum_dofs = 0;
+      unsigned int newton = 0, max_newton = 0, n_steps = 0, max_dofs = 0;
+      double       branch[5] = {0, 0, 0, 0, 0};
+
+      /** Add step @p s (of length @p k) with its errors @p e. */
+      void
+      add(const StepStatistics &s, const StepErrors &e, const double k)
+      {
+        errors.E_H    = std::max(errors.E_H, std::sqrt(e.w_L2));
+        errors.E_u    = std::max(errors.E_u, std::sqrt(e.u_V));
+        errors.E_u_H1 = std::max(errors.E_u_H1, std::sqrt(e.u_H1));
+        sum_V += k * e.w_V;
+        sum_V_H1 += k * e.w_H1;
+        newton += s.newton_iterations;
+        max_newton = std::max(max_newton, s.newton_iterations);
+        sum_dofs += s.n_dofs;
+        max_dofs = std::max(max_dofs, s.n_dofs);
+        ++n_steps;
+        const unsigned int counts[5] = {s.n_separating, s.n_normal_stick,
+                                        s.n_damped, s.n_stick, s.n_slip};
+        for (unsigned int b = 0; b < 5; ++b)
+          branch[b] += counts[b];
+      }
+
+      /** Everything but h, k, n_dofs and the wall time. */
+      LevelResult
+      result() const
+      {
+        LevelResult r;
+        r.n_steps                = n_steps;
+        r.errors                 = errors;
+        r.errors.E_V             = std::sqrt(sum_V);
+        r.errors.E_V_H1          = std::sqrt(sum_V_H1);
+        r.mean_dofs              = sum_dofs / n_steps;
+        r.max_dofs               = max_dofs;
+        r.mean_newton_iterations = double(newton) / n_steps;
+        r.max_newton_iterations  = max_newton;
+        const double n_pairs_normal = branch[0] + branch[1] + branch[2];
+        for (unsigned int b = 0; b < 5; ++b)
+          r.branch_share[b] = branch[b] / n_pairs_normal;
+        return r;
+      }
+    };
+
+    /**
+     * Run one level with parameters @p p: every step's errors on the mesh
+     * it ran on, then (if due) an adaptation of the mesh as in run().
+     */
+    template <int dim>
+    LevelResult
+    run_level(const Parameters &p, ParameterHandler &prm, MPI_Comm comm)
+    {
+      Timer                            wall;
+      const std::unique_ptr<NormalLaw> law = create_normal_law(prm);
+      const ManufacturedSolution<dim>  exact(p, *law);
+      ContactProblem<dim> problem(p, create_normal_law(prm),
+                                  exact.make_problem_data(), comm);
+      problem.setup();
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(problem.get_dof_handler(),
+                                              relevant);
+      LevelSums sums;
+      while (!problem.finished())
+        {
+          StepStatistics s = problem.advance();
+          sums.add(s, step_errors(problem, exact, s.time, relevant, comm),
+                   problem.get_time_step());
+          if (problem.adapt_mesh_if_due(s))
+            DoFTools::extract_locally_relevant_dofs(problem.get_dof_handler(),
+                                                    relevant);
+        }
+      LevelResult result = sums.result();
+      result.h            = mesh_size(problem.get_dof_handler(), comm);
+      result.k            = problem.get_time_step();
+      result.n_dofs       = problem.get_dof_handler().n_dofs();
+      result.wall_seconds = wall.wall_time();
+      return result;
+    }
+
+    /** Open convergence.csv in the output directory and write its header. */
+    std::ofstream
+    open_csv(const Parameters &parameters)
+    {
+      std::filesystem::create_directories(parameters.output.directory);
+      std::ofstream csv(parameters.output.directory + "/convergence.csv");
+      require(static_cast<bool>(csv),
+              "output: cannot write convergence.csv in '" +
+                parameters.output.directory + "'.");
+      // new columns go at the end: readers select columns by name or position
+      csv << "level,h,k,n_dofs,n_steps,E_H,E_V,E_u,E_V_H1,E_u_H1,"
+             "mean_newton_iterations,max_newton_iterations,wall_seconds,"
+             "share_separating,share_normal_stick,share_damped,"
+             "share_stick,share_slip,mean_dofs,max_dofs\n";
+      return csv;
+    }
+
+    void
+    write_csv_row(std::ofstream &csv, const unsigned int level,
+                  const LevelResult &r)
+    {
+      const ErrorNorms &e = r.errors;
+      csv << std::setprecision(10) << level << "," << r.h << "," << r.k << ","
+          << r.n_dofs << "," << r.n_steps << "," << e.E_H << "," << e.E_V
+          << "," << e.E_u << "," << e.E_V_H1 << "," << e.E_u_H1 << ","
+          << r.mean_newton_iterations << "," << r.max_newton_iterations << ","
+          << r.wall_seconds;
+      for (const double share : r.branch_share)
+        csv << "," << share;
+      csv << "," << r.mean_dofs << "," << r.max_dofs << "\n";
+      csv.flush();
+    }
+
+    void
+    print_branch_shares(const unsigned int level, const LevelResult &r)
+    {
+      const double *share = r.branch_share;
+      std::cout << "level " << level << ": " << r.n_steps
+                << " steps, share of (node, step) pairs: separating "
+                << std::fixed << std::setprecision(3) << share[0]
+                << ", normal stick " << share[1] << ", damped " << share[2]
+                << ", stick " << share[3] << ", slip " << share[4]
+                << std::defaultfloat << std::endl;
+    }
+
+    /**
+     * One row of the table; an adaptive study has the mean and maximum dofs
+     * over the steps instead of the final mesh's.
+     */
+    void
+    add_table_row(ConvergenceTable &table, const unsigned int level,
+                  const LevelResult &r, const bool adaptive)
+    {
+      table.add_value("level", level);
+      table.add_value("h", r.h);
+      table.add_value("k", r.k);
+      if (adaptive)
+        {
+          table.add_value("mean dofs",
+                          static_cast<unsigned int>(std::round(r.mean_dofs)));
+          table.add_value("max dofs", r.max_dofs);
+        }
+      else
+        table.add_value("dofs", r.n_dofs);
+      table.add_value("steps", r.n_steps);
+      table.add_value("E_H", r.errors.E_H);
+      table.add_value("E_V", r.errors.E_V);
+      table.add_value("E_u", r.errors.E_u);
+      table.add_value("E_V(H1)", r.errors.E_V_H1);
+      table.add_value("E_u(H1)", r.errors.E_u_H1);
+      table.add_value("newton", r.mean_newton_iterations);
+    }
+
+    /**
+     * Formats and orders: log2 of the error ratio between levels, or
+     * -log(error ratio) / log(mean dofs ratio) if @p against_dofs (the
+     * table has the column "mean dofs").
+     */
+    void
+    format_table(ConvergenceTable &table, const unsigned int n_levels,
+                 const bool against_dofs)
+    {
+      for (const char *column : {"E_H", "E_V", "E_u", "E_V(H1)", "E_u(H1)"})
+        {
+          table.set_scientific(column, true);
+          table.set_precision(column, 3);
+          if (n_levels > 1 && against_dofs)
+            table.evaluate_convergence_rates(
+              column, "mean dofs", ConvergenceTable::reduction_rate_log2, 1);
+          else if (n_levels > 1)
+            table.evaluate_convergence_rates(
+              column, ConvergenceTable::reduction_rate_log2);
+        }
+      table.set_scientific("h", true);
+      table.set_scientific("k", true);
+      table.set_precision("h", 3);
+      table.set_precision("k", 3);
+      table.set_precision("newton", 2);
+    }
   } // namespace
+
+  Parameters
+  study_parameters(const Parameters &parameters, const unsigned int level)
+  {
+    Parameters         p    = parameters;
+    const std::string &type = parameters.study.type;
+    if (type == "h" || type == "coupled")
+      {
+        p.geometry.global_refinements += level;
+        if (p.adaptivity.interval > 0)
+          {
+            // the adaptive mesh may grow as the uniform one does
+            p.adaptivity.max_level += level;
+            p.adaptivity.max_cells = static_cast<unsigned int>(std::min(
+              std::ldexp(double(p.adaptivity.max_cells),
+                         parameters.dimension * level),
+              double(std::numeric_limits<unsigned int>::max())));
+          }
+      }
+    if (type == "k" || type == "coupled")
+      p.time.time_step /= std::pow(2., level);
+    return p;
+  }
 
   template <int dim>
   std::vector<LevelResult>
   run_convergence_study(const Parameters &parameters, ParameterHandler &prm,
                         MPI_Comm comm)
   {
-    std::vector<LevelResult> results;
-    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+    const bool root    = Utilities::MPI::this_mpi_process(comm) == 0;
+    const bool verbose = root && parameters.output.terminal != "quiet";
     const std::string &type     = parameters.study.type;
     const unsigned int n_levels = type == "single" ? 1 : parameters.study.n_levels;
+    const bool         adaptive = parameters.adaptivity.interval > 0;
+    // a 'k' study keeps its orders per halving of k
+    const bool against_dofs = adaptive && (type == "h" || type == "coupled");
 
     std::ofstream csv;
     if (root)
-      {
-        std::filesystem::create_directories(parameters.output.directory);
-        csv.open(parameters.output.directory + "/convergence.csv");
-        require(static_cast<bool>(csv),
-                "output: cannot write convergence.csv in '" +
-                  parameters.output.directory + "'.");
-        csv << "level,h,k,n_dofs,n_steps,E_H,E_V,E_u,E_V_H1,E_u_H1,"
-               "mean_newton_iterations,max_newton_iterations,wall_seconds,"
-               "share_separating,share_normal_stick,share_damped,"
-               "share_stick,share_slip\n";
-      }
+      csv = open_csv(parameters);
 
-    ConvergenceTable table;
+    std::vector<LevelResult> results;
+    ConvergenceTable         table;
     for (unsigned int level = 0; level < n_levels; ++level)
       {
-        Parameters p = parameters;
+        Parameters p      = study_parameters(parameters, level);
         p.output.terminal = "quiet";
-        if (type == "h" || type == "coupled")
-          p.geometry.global_refinements += level;
-        if (type == "k" || type == "coupled")
-          p.time.time_step /= std::pow(2., level);
-
-        Timer                           wall;
-        const std::unique_ptr<NormalLaw> law = create_normal_law(prm);
-        const ManufacturedSolution<dim>  exact(p, *law);
-        ContactProblem<dim> problem(p, create_normal_law(prm),
-                                    exact.make_problem_data(), comm);
-        problem.setup();
-        IndexSet relevant;
-        DoFTools::extract_locally_relevant_dofs(problem.get_dof_handler(),
-                                                relevant);
-
-        ErrorNorms   errors;
-        double       sum_V = 0, sum_V_H1 = 0;
-        unsigned int newton = 0, max_newton = 0, n_steps = 0;
-        double       branch[5] = {0, 0, 0, 0, 0};
-        while (!problem.finished())
-          {
-            const StepStatistics s = problem.advance();
-            const StepErrors     e =
-              step_errors(problem, exact, s.time, relevant, comm);
-            errors.E_H = std::max(errors.E_H, std::sqrt(e.w_L2));
-            errors.E_u = std::max(errors.E_u, std::sqrt(e.u_V));
-            errors.E_u_H1 = std::max(errors.E_u_H1, std::sqrt(e.u_H1));
-            sum_V += problem.get_time_step() * e.w_V;
-            sum_V_H1 += problem.get_time_step() * e.w_H1;
-            newton += s.newton_iterations;
-            max_newton = std::max(max_newton, s.newton_iterations);
-            ++n_steps;
-            const unsigned int counts[5] = {s.n_separating, s.n_normal_stick,
-                                            s.n_damped, s.n_stick, s.n_slip};
-            for (unsigned int b = 0; b < 5; ++b)
-              branch[b] += counts[b];
-          }
-        errors.E_V    = std::sqrt(sum_V);
-        errors.E_V_H1 = std::sqrt(sum_V_H1);
-        const double n_pairs_normal  = branch[0] + branch[1] + branch[2];
-        const double seconds         = wall.wall_time();
-        const double h = mesh_size(problem.get_dof_handler(), comm);
-        const double k = problem.get_time_step();
-
-        LevelResult result;
-        result.h                      = h;
-        result.k                      = k;
-        result.n_dofs                 = problem.get_dof_handler().n_dofs();
-        result.n_steps                = n_steps;
-        result.errors                 = errors;
-        result.mean_newton_iterations = double(newton) / n_steps;
-        for (unsigned int b = 0; b < 5; ++b)
-          result.branch_share[b] = branch[b] / n_pairs_normal;
-        results.push_back(result);
-
-        table.add_value("level", level);
-        table.add_value("h", h);
-        table.add_value("k", k);
-        table.add_value("dofs", problem.get_dof_handler().n_dofs());
-        table.add_value("steps", n_steps);
-        table.add_value("E_H", errors.E_H);
-        table.add_value("E_V", errors.E_V);
-        table.add_value("E_u", errors.E_u);
-        table.add_value("E_V(H1)", errors.E_V_H1);
-        table.add_value("E_u(H1)", errors.E_u_H1);
-        table.add_value("newton", double(newton) / n_steps);
+        results.push_back(run_level<dim>(p, prm, comm));
+        add_table_row(table, level, results.back(), adaptive);
         if (root)
-          {
-            csv << std::setprecision(10) << level << "," << h << "," << k
-                << "," << problem.get_dof_handler().n_dofs() << "," << n_steps
-                << "," << errors.E_H << "," << errors.E_V << "," << errors.E_u
-                << "," << errors.E_V_H1 << "," << errors.E_u_H1 << ","
-                << double(newton) / n_steps << "," << max_newton << ","
-                << seconds;
-            for (unsigned int b = 0; b < 5; ++b)
-              csv << "," << branch[b] / n_pairs_normal;
-            csv << "\n";
-            csv.flush();
-            if (parameters.output.terminal != "quiet")
-              std::cout << "level " << level << ": " << n_steps
-                        << " steps, share of (node, step) pairs: separating "
-                        << std::fixed << std::setprecision(3)
-                        << branch[0] / n_pairs_normal << ", normal stick "
-                        << branch[1] / n_pairs_normal << ", damped "
-                        << branch[2] / n_pairs_normal << ", stick "
-                        << branch[3] / n_pairs_normal << ", slip "
-                        << branch[4] / n_pairs_normal
-                        << std::defaultfloat << std::endl;
-          }
+          write_csv_row(csv, level, results.back());
+        if (verbose)
+          print_branch_shares(level, results.back());
       }
 
-    for (const char *column : {"E_H", "E_V", "E_u", "E_V(H1)", "E_u(H1)"})
+    format_table(table, n_levels, against_dofs);
+    if (verbose)
       {
-        table.set_scientific(column, true);
-        table.set_precision(column, 3);
-        if (n_levels > 1)
-          table.evaluate_convergence_rates(column,
-                                           ConvergenceTable::reduction_rate_log2);
-      }
-    table.set_scientific("h", true);
-    table.set_scientific("k", true);
-    table.set_precision("h", 3);
-    table.set_precision("k", 3);
-    table.set_precision("newton", 2);
-    if (root && parameters.output.terminal != "quiet")
-      {
-        std::cout << "convergence study '" << type << "' (orders: log2 of the "
-                  << "error ratio between levels)\n";
+        if (against_dofs)
+          std::cout << "convergence study '" << type << "', adaptive (orders: "
+                    << "-log(error ratio)/log(mean dofs ratio) between "
+                    << "levels; O(h) is " << 1. / dim << ")\n";
+        else
+          std::cout << "convergence study '" << type << "' (orders: log2 of "
+                    << "the error ratio between levels)\n";
         table.write_text(std::cout, TableHandler::org_mode_table);
       }
     return results;
