@@ -536,8 +536,11 @@ namespace hemicontact
                       "once the mesh has that many cells).");
     prm.declare_entry("refine fraction", "0.3", Patterns::Double(0, 1),
                       "See 'strategy'.");
-    prm.declare_entry("coarsen fraction", "0.05", Patterns::Double(0, 1),
-                      "See 'strategy'.");
+    prm.declare_entry(
+      "coarsen fraction", "0.05", Patterns::Double(0, 1),
+      "See 'strategy'. Each coarsening interpolates u_n and w_n onto the "
+      "coarser cells, and these errors add up over a dynamic run "
+      "(doc/adaptivity.md); 0 refines only.");
     prm.declare_entry("max cells", "0", Patterns::Integer(0),
                       "Upper limit of the number of cells (0: none).");
     prm.declare_entry("min level", "0", Patterns::Integer(0, 30),
