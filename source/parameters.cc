@@ -349,6 +349,14 @@ namespace hemicontact
     prm.declare_entry("maximum forcing term", "0.1", Patterns::Double(0, 1),
                       "Largest Eisenstat-Walker forcing term eta_k.");
     prm.declare_entry(
+      "exact solve when settled", "true", Patterns::Bool(),
+      "With 'eisenstat-walker': a Newton iteration in which no contact node "
+      "changed branch solves to the Newton tolerance (0.1 times 'nonlinear "
+      "solver/tolerance' times the load) instead of eta_k. With the branches "
+      "settled the step is smooth (linear for a piecewise linear law), so one "
+      "accurate solve usually ends it; loose solves would add 1-3 Newton "
+      "iterations per step (doc/performance.md).");
+    prm.declare_entry(
       "preconditioner rebuild factor", "0", Patterns::Double(0),
       "Projected operator: the AMG hierarchy (first of rho/k M + A) is "
       "rebuilt from rho/k M + A plus the current nodal contact stiffness once "
@@ -375,6 +383,7 @@ namespace hemicontact
     newton_operator       = prm.get("newton operator");
     forcing_term          = prm.get("forcing term");
     maximum_forcing_term  = prm.get_double("maximum forcing term");
+    exact_solve_when_settled = prm.get_bool("exact solve when settled");
     preconditioner_rebuild_factor =
       prm.get_double("preconditioner rebuild factor");
     relative_tolerance    = prm.get_double("relative tolerance");

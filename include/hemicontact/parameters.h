@@ -108,6 +108,8 @@ namespace hemicontact
     /** "eisenstat-walker" or "fixed" Krylov tolerance. */
     std::string  forcing_term;
     double       maximum_forcing_term;
+    /** Solve to the Newton tolerance once no node changes branch. */
+    bool         exact_solve_when_settled;
     /** Rebuild the AMG when Krylov work per decade exceeds this factor. */
     double       preconditioner_rebuild_factor;
     double       relative_tolerance;

@@ -359,7 +359,8 @@ namespace hemicontact
 
         // inexact Newton: the Krylov tolerance follows the decrease of the
         // nonsmooth residual (Eisenstat-Walker, choice 2), but never asks for
-        // more than the Newton tolerance needs
+        // more than the Newton tolerance needs; once no node changes branch
+        // the step is smooth and is solved to the tolerance at once
         if (iteration > 0)
           {
             const double previous_forcing = forcing;
@@ -371,8 +372,10 @@ namespace hemicontact
           }
         previous_res = res;
         const bool inexact = lin_settings.forcing_term == "eisenstat-walker";
+        const bool settled =
+          lin_settings.exact_solve_when_settled && n_changed == 0;
         stats.linear_iterations += solve_newton_system(
-          w, w_ghosted, mult, inexact ? forcing : 0.,
+          w, w_ghosted, mult, inexact && !settled ? forcing : 0.,
           inexact ? 0.1 * target : 0., trial);
         {
           TimerOutput::Scope t(timer, "line search");
