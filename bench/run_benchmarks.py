@@ -2,7 +2,8 @@
 """Performance benchmark of hemicontact (not part of CI's pass/fail).
 
 Runs fixed cases -- the default 2D example and its 3D version at three
-successive refinements, solver variants on the middle 3D level, and a large
+successive refinements, once at the examples' time step and once with the
+time step halved with h, solver variants on the middle levels, and a large
 3D case (811,923 dofs) on 1 and 2 MPI ranks -- with 'performance summary =
 true', reads each run's performance.csv and prints one table plus the growth
 exponents of the time per step against the number of dofs. Every figure is
@@ -26,20 +27,31 @@ EXE = os.path.join(ROOT, "build", "hemicontact")
 
 
 def case(name, base, refinements, end_time=1.0, ranks=1, subdivisions=None,
-         solver=None):
+         solver=None, time_step=None, group=None):
     return dict(name=name, base=base, refinements=refinements,
                 end_time=end_time, ranks=ranks, subdivisions=subdivisions,
-                solver=solver or {})
+                solver=solver or {}, time_step=time_step, group=group)
 
 
 def cases(quick, skip_large, large_steps):
     result = []
     levels_2d = [3, 4, 5] if quick else [4, 5, 6]
     levels_3d = [1, 2, 3] if quick else [2, 3, 4]
+    # h refined at the examples' k = 0.01 ...
     for r in levels_2d:
-        result.append(case(f"2d-r{r}", "block_2d.prm", r))
+        result.append(case(f"2d-r{r}", "block_2d.prm", r, group="2D, fixed k"))
     for r in levels_3d:
-        result.append(case(f"3d-r{r}", "block_3d.prm", r))
+        result.append(case(f"3d-r{r}", "block_3d.prm", r, group="3D, fixed k"))
+    # ... and h and k refined together (k = 0.01 on the first level, halved
+    # with h, as the O(k + h) scheme is refined): a stick-slip front then
+    # crosses the same number of nodes per step on every level
+    for dim, levels in ((2, levels_2d), (3, levels_3d)):
+        for r in levels[1:]:
+            result.append(case(f"{dim}d-r{r}-k{r - levels[0]}", f"block_{dim}d.prm",
+                               r, time_step=0.01 / 2 ** (r - levels[0]),
+                               group=f"{dim}D, k ~ h"))
+        result.append(dict(result[[c["name"] for c in result].index(
+            f"{dim}d-r{levels[0]}")], group=f"{dim}D, k ~ h", shared=True))
     # the trade-off of reusing the AMG of the step matrix, and of inexact
     # Newton, on the middle 3D level
     middle = levels_3d[1]
@@ -51,6 +63,11 @@ def cases(quick, skip_large, large_steps):
                                "block_3d.prm", middle,
                                solver={"newton operator": operator,
                                        "forcing term": forcing}))
+    # Eisenstat-Walker also for the iterations whose branches have settled
+    for name, base, r in (("2d", "block_2d.prm", levels_2d[1]),
+                          ("3d", "block_3d.prm", middle)):
+        result.append(case(f"{name}-r{r}-loose-when-settled", base, r,
+                           solver={"exact solve when settled": "false"}))
     if not skip_large and not quick:
         # 160 x 40 x 40 hexahedra: 811,923 dofs; the first steps
         for ranks in (1, 2):
@@ -66,8 +83,11 @@ def write_prm(c, directory):
                  c["refinements"])
     if c["subdivisions"]:
         lines.append("  set subdivisions = %s\n" % c["subdivisions"])
-    lines.append("end\nsubsection time\n  set end time = %g\nend\n" %
+    lines.append("end\nsubsection time\n  set end time = %g\n" %
                  c["end_time"])
+    if c["time_step"]:
+        lines.append("  set time step = %g\n" % c["time_step"])
+    lines.append("end\n")
     lines.append("subsection linear solver\n")
     for key, value in c["solver"].items():
         lines.append("  set %s = %s\n" % (key, value))
@@ -160,9 +180,16 @@ def main():
                  "(cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && "
                  "cmake --build build -j2)")
 
-    rows = [run(c, args.work, args.reuse) for c in cases(args.quick, args.skip_large, args.large_steps)]
+    all_cases = cases(args.quick, args.skip_large, args.large_steps)
+    rows = [run(c, args.work, args.reuse) for c in all_cases
+            if not c.get("shared")]
     for r in rows:
         r["peak_memory_bytes"] /= 2 ** 20
+    by_name = {r["case"]: r for r in rows}
+    groups = {}
+    for c in all_cases:
+        if c["group"]:
+            groups.setdefault(c["group"], []).append(by_name[c["name"]])
 
     print("\nTime split columns are seconds summed over the run; 'ratio' is "
           "s/step over one solve\nof the step matrix (AMG set-up + CG) "
@@ -175,22 +202,25 @@ def main():
         print(" ".join(fmt % r[key] for key, _, fmt in COLUMNS))
 
     summary = []
-    for prefix in ("2d-r", "3d-r"):
-        levels = [r for r in rows if r["case"].startswith(prefix) and
-                  r["case"].count("-") == 1]
+    for group, levels in groups.items():
         if len(levels) >= 2:
+            levels = sorted(levels, key=lambda r: r["n_dofs"])
             p = growth_exponent(levels)
-            summary.append((f"growth exponent p of s/step ~ dofs^p ({prefix[:2]})", p))
+            summary.append((f"growth exponent p of s/step ~ dofs^p ({group})", p))
             means = [r["newton_mean"] for r in levels]
-            summary.append((f"Newton mean spread max-min ({prefix[:2]})",
+            summary.append((f"Newton mean per level ({group})",
+                            " / ".join("%.2f" % m for m in means)))
+            summary.append((f"Newton mean spread max-min ({group})",
                             max(means) - min(means)))
     large = {r["mpi_ranks"]: r for r in rows if "large" in r["case"]}
     if 1 in large and 2 in large:
         summary.append(("speed-up 2 ranks vs 1 (large case, s/step)",
                         large[1]["wall_per_step"] / large[2]["wall_per_step"]))
     print()
+    def text(value, digits):
+        return value if isinstance(value, str) else f"{value:.{digits}f}"
     for name, value in summary:
-        print(f"{name}: {value:.3f}")
+        print(f"{name}: {text(value, 3)}")
 
     os.makedirs(os.path.dirname(args.output), exist_ok=True)
     with open(args.output, "w", newline="") as f:
@@ -199,7 +229,7 @@ def main():
         writer.writeheader()
         writer.writerows(rows)
         for name, value in summary:
-            f.write(f"# {name}: {value:.4f}\n")
+            f.write(f"# {name}: {text(value, 4)}\n")
     print(f"\nwritten to {args.output}")
 
 

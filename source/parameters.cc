@@ -298,6 +298,15 @@ namespace hemicontact
                       "Backtracking on the step energy J_n.");
     prm.declare_entry("minimum step length", "1e-3", Patterns::Double(0, 1),
                       "Smallest damping factor tried by the line search.");
+    prm.declare_entry(
+      "initial guess", "extrapolated",
+      Patterns::Selection("extrapolated|previous"),
+      "Where Newton starts in a step: 'extrapolated': w_{n-1} + "
+      "k_n/k_{n-1} (w_{n-1} - w_{n-2}), so the first active set already "
+      "follows moving contact and stick-slip fronts (the first step, and the "
+      "first after an adaptation or a resume, start from w_{n-1}); "
+      "'previous': w_{n-1}. The converged w_n is the same either way, to the "
+      "tolerance.");
     prm.declare_entry("strict convexity check", "false", Patterns::Bool(),
                       "If the per-step convexity condition fails for the "
                       "chosen time step: stop with an error (true) or warn "
@@ -316,6 +325,7 @@ namespace hemicontact
     complementarity_factor = prm.get_double("complementarity constant factor");
     line_search            = prm.get_bool("line search");
     min_step_length        = prm.get_double("minimum step length");
+    initial_guess          = prm.get("initial guess");
     strict_convexity_check = prm.get_bool("strict convexity check");
     prm.leave_subsection();
     require(complementarity_factor > 0,
@@ -346,7 +356,7 @@ namespace hemicontact
       "'eisenstat-walker': reduce the linear residual by eta_k = "
       "0.9 (r_k/r_{k-1})^2 (capped by 'maximum forcing term', never below "
       "what the Newton tolerance needs); 'fixed': 'relative tolerance'.");
-    prm.declare_entry("maximum forcing term", "0.1", Patterns::Double(0, 1),
+    prm.declare_entry("maximum forcing term", "0.01", Patterns::Double(0, 1),
                       "Largest Eisenstat-Walker forcing term eta_k.");
     prm.declare_entry(
       "exact solve when settled", "true", Patterns::Bool(),

@@ -354,6 +354,8 @@ namespace hemicontact
     double        convexity_bound = 0;
 
     double       time_step   = 0;
+    /** Length of the last converged step (0: none yet). */
+    double       last_step_length = 0;
     unsigned int n_steps     = 0;
     unsigned int step_number = 0;
 

@@ -93,6 +93,9 @@ namespace hemicontact
     double       complementarity_factor; ///< c_i = factor * K_ii / m_i
     bool         line_search;
     double       min_step_length;
+    /** "extrapolated" (w_{n-1} + k_n/k_{n-1} (w_{n-1} - w_{n-2})) or
+     * "previous" (w_{n-1}): where Newton starts. */
+    std::string  initial_guess;
     bool         strict_convexity_check;
 
     static void declare(ParameterHandler &prm);

@@ -59,15 +59,27 @@ namespace hemicontact
                                         const double       k,
                                         const unsigned int depth)
   {
-    // u_n = u_{n-1} + k w_{n-1} (left-point rule), then solve for w_n
+    // u_n = u_{n-1} + k w_{n-1} (left-point rule), then solve for w_n,
+    // starting from the linear extrapolation of w_{n-2}, w_{n-1}; the trend
+    // is zero after the start, an adaptation or a resume (old_velocity =
+    // velocity there)
+    TrilinosWrappers::MPI::Vector trend(velocity);
+    trend -= old_velocity;
     old_velocity = velocity;
     displacement.add(k, old_velocity);
+    if (parameters.nonlinear_solver.initial_guess == "extrapolated" &&
+        last_step_length > 0)
+      {
+        velocity.add(k / last_step_length, trend);
+        base_constraints.distribute(velocity);
+      }
     assemble_load(start + k);
     assemble_step_rhs();
     try
       {
         const StepStatistics stats = solve_step();
         update_energy_balance(/*initial=*/false);
+        last_step_length = k;
         return stats;
       }
     catch (const SolverFailure &failure)
