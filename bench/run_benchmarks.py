@@ -27,10 +27,11 @@ EXE = os.path.join(ROOT, "build", "hemicontact")
 
 
 def case(name, base, refinements, end_time=1.0, ranks=1, subdivisions=None,
-         solver=None, time_step=None, group=None):
+         solver=None, time_step=None, group=None, nonlinear=None):
     return dict(name=name, base=base, refinements=refinements,
                 end_time=end_time, ranks=ranks, subdivisions=subdivisions,
-                solver=solver or {}, time_step=time_step, group=group)
+                solver=solver or {}, time_step=time_step, group=group,
+                nonlinear=nonlinear or {})
 
 
 def cases(quick, skip_large, large_steps):
@@ -63,11 +64,14 @@ def cases(quick, skip_large, large_steps):
                                "block_3d.prm", middle,
                                solver={"newton operator": operator,
                                        "forcing term": forcing}))
-    # Eisenstat-Walker also for the iterations whose branches have settled
+    # the warm starts off (the defaults until 2026-11-22): Newton from
+    # w_{n-1}, Eisenstat-Walker up to 0.1 also once the branches have settled
     for name, base, r in (("2d", "block_2d.prm", levels_2d[1]),
                           ("3d", "block_3d.prm", middle)):
-        result.append(case(f"{name}-r{r}-loose-when-settled", base, r,
-                           solver={"exact solve when settled": "false"}))
+        result.append(case(f"{name}-r{r}-cold-start", base, r,
+                           solver={"exact solve when settled": "false",
+                                   "maximum forcing term": "0.1"},
+                           nonlinear={"initial guess": "previous"}))
     if not skip_large and not quick:
         # 160 x 40 x 40 hexahedra: 811,923 dofs; the first steps
         for ranks in (1, 2):
@@ -88,7 +92,10 @@ def write_prm(c, directory):
     if c["time_step"]:
         lines.append("  set time step = %g\n" % c["time_step"])
     lines.append("end\n")
-    lines.append("subsection linear solver\n")
+    lines.append("subsection nonlinear solver\n")
+    for key, value in c["nonlinear"].items():
+        lines.append("  set %s = %s\n" % (key, value))
+    lines.append("end\nsubsection linear solver\n")
     for key, value in c["solver"].items():
         lines.append("  set %s = %s\n" % (key, value))
     lines.append("end\nsubsection output\n  set directory = %s\n"
