@@ -536,6 +536,15 @@ namespace hemicontact
       "(large at the edge of the contact zone and at stick-slip fronts).");
     prm.declare_entry("contact weight", "1", Patterns::Double(0),
                       "Weight of the contact term of 'kelly contact'.");
+    prm.declare_entry(
+      "pre-refinement steps", "0", Patterns::Integer(0),
+      "After this many steps (adapting as usual), start the run again, "
+      "once, from t = 0 and the initial state on the mesh reached, and go "
+      "on adapting from there (as deal.II's step-26), so that the errors of "
+      "the early steps on the coarse start mesh do not stay in the solution "
+      "(doc/adaptivity.md); 0: never. steps.csv, the probes and the output "
+      "files hold both parts (the step numbers start again at 1). Needs "
+      "'interval' > 0; not with checkpoints or manufactured solutions.");
     prm.declare_entry("strategy", "fixed fraction",
                       Patterns::Selection("fixed fraction|fixed number"),
                       "'fixed fraction': refine the fewest cells with the "
@@ -576,6 +585,7 @@ namespace hemicontact
     interval         = prm.get_integer("interval");
     indicator        = prm.get("indicator");
     contact_weight   = prm.get_double("contact weight");
+    pre_refinement_steps = prm.get_integer("pre-refinement steps");
     strategy         = prm.get("strategy");
     refine_fraction  = prm.get_double("refine fraction");
     coarsen_fraction = prm.get_double("coarsen fraction");
@@ -669,6 +679,12 @@ namespace hemicontact
             "adaptivity: adaptive refinement needs 'geometry/cell type = "
             "hypercube' (p4est meshes); set 'adaptivity/interval = 0' for "
             "simplex meshes.");
+    require(adaptivity.pre_refinement_steps == 0 ||
+              (adaptivity.interval > 0 && !manufactured.enabled &&
+               checkpoint.interval == 0 && checkpoint.wall_interval == 0 &&
+               checkpoint.stop_after == 0 && !checkpoint.resume),
+            "adaptivity: 'pre-refinement steps' > 0 needs 'interval' > 0 and "
+            "works neither with checkpoints nor with manufactured solutions.");
     require((checkpoint.interval == 0 && checkpoint.wall_interval == 0 &&
              checkpoint.stop_after == 0 && !checkpoint.resume) ||
               geometry.cell_type == "hypercube",

@@ -161,6 +161,7 @@ namespace hemicontact
     unsigned int interval;         ///< adapt after every this many steps, 0 = never
     std::string  indicator;        ///< "kelly" or "kelly contact"
     double       contact_weight;   ///< weight of the Gamma_3 traction jumps
+    unsigned int pre_refinement_steps; ///< restart from t = 0 after these, 0 = never
     std::string  strategy;         ///< "fixed fraction" or "fixed number"
     double       refine_fraction;
     double       coarsen_fraction;

@@ -148,6 +148,11 @@ namespace hemicontact
     // validate everything (mesh, boundary ids, data) before touching the
     // output directory, so that a bad input does not truncate earlier output
     const CheckpointParameters &checkpoints = parameters.checkpoint;
+    require(parameters.adaptivity.pre_refinement_steps <= n_steps,
+            "adaptivity: 'pre-refinement steps' (" +
+              std::to_string(parameters.adaptivity.pre_refinement_steps) +
+              ") exceeds the number of time steps (" +
+              std::to_string(n_steps) + ").");
     if (checkpoints.resume)
       setup_from_checkpoint();
     else
@@ -197,6 +202,7 @@ namespace hemicontact
     unsigned int steps_this_run = 0;
 
     RunTotals totals;
+    bool      restarted = false; // by 'adaptivity/pre-refinement steps'
     while (!finished())
       {
         StepStatistics stats;
@@ -238,6 +244,25 @@ namespace hemicontact
         write_step_row(stats);
         print_step(stats);
         ++steps_this_run;
+
+        // pre-refinement: once, start again from t = 0 on the mesh reached
+        if (!restarted &&
+            step_number == parameters.adaptivity.pre_refinement_steps)
+          {
+            restarted = true;
+            initialize_state();
+            pcout << "pre-refinement: restart from t = 0 on "
+                  << discretization.triangulation->n_global_active_cells()
+                  << " cells, " << dof_handler.n_dofs() << " dofs"
+                  << std::endl;
+            write_probes();
+            if (interval > 0)
+              {
+                write_vtu();
+                write_contact_csv();
+              }
+            continue;
+          }
 
         // checkpoints: periodic, by wall time, and on interruption (the
         // same decision on every rank)
