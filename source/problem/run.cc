@@ -258,6 +258,9 @@ namespace hemicontact
             write_probes();
             if (interval > 0)
               {
+                // the series shows the restarted run; its files replace
+                // those of the same steps before the restart
+                pvd_records.clear();
                 write_vtu();
                 write_contact_csv();
               }
