@@ -4,12 +4,7 @@
 // matrix with the contact constraints eliminated, and as the direct solver:
 // 15 steps of the short 2D and 3D block runs, in which stick, slip, damped
 // and separating nodes all occur, compared in the final velocity.
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/parameters.h>
-
-#include <fstream>
-#include <sstream>
-
+#include "block_run.h"
 #include "tests.h"
 
 using namespace hemicontact;
@@ -20,21 +15,9 @@ namespace
   TrilinosWrappers::MPI::Vector
   run(const std::string &file, const std::string &solver)
   {
-    std::ifstream     in(file);
-    std::stringstream text;
-    text << in.rdbuf()
-         << "subsection time\n  set end time = 0.15\nend\n"
-         << "subsection output\n  set directory = output-" << dim
-         << "d\n  set terminal = quiet\nend\n"
-         << "subsection linear solver\n" << solver << "end\n";
-    ParameterHandler prm;
-    const Parameters parameters = read_parameters_from_string(prm, text.str());
-    ContactProblem<dim> problem(parameters, create_normal_law(prm),
-                                MPI_COMM_WORLD);
-    problem.setup();
-    while (!problem.finished())
-      problem.advance();
-    return problem.get_velocity();
+    return run_block<dim>(file, "subsection linear solver\n" + solver +
+                                  "end\n")
+      .velocity;
   }
 
   template <int dim>

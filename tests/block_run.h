@@ -1,0 +1,39 @@
+#pragma once
+// Shared by the tests that rerun the short block examples with different
+// solver settings: run 0.15 time units of a .prm plus extra settings and
+// return the final velocity and the Newton iterations it took.
+#include <hemicontact/contact_problem.h>
+#include <hemicontact/parameters.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+struct BlockRun
+{
+  dealii::TrilinosWrappers::MPI::Vector velocity;
+  unsigned int                          newton_iterations = 0;
+};
+
+template <int dim>
+BlockRun
+run_block(const std::string &file, const std::string &settings)
+{
+  using namespace hemicontact;
+  std::ifstream     in(file);
+  std::stringstream text;
+  text << in.rdbuf() << "subsection time\n  set end time = 0.15\nend\n"
+       << "subsection output\n  set directory = output-" << dim
+       << "d\n  set terminal = quiet\nend\n"
+       << settings;
+  dealii::ParameterHandler prm;
+  const Parameters parameters = read_parameters_from_string(prm, text.str());
+  ContactProblem<dim> problem(parameters, create_normal_law(prm),
+                              MPI_COMM_WORLD);
+  problem.setup();
+  BlockRun result;
+  while (!problem.finished())
+    result.newton_iterations += problem.advance().newton_iterations;
+  result.velocity = problem.get_velocity();
+  return result;
+}
