@@ -75,8 +75,8 @@ ADAPTIVE = {
         "indicator": "kelly contact", "contact weight": 0.25,
         "refine fraction": 0.3, "coarsen fraction": 0, "min level": "start"},
     # (the variants 'kelly energy', 'kelly stress' and 'indicator
-    # accumulation' of doc/adaptivity.md were measured with the code of
-    # branch adapt-w-experiments, commit ca4b092, and not kept)
+    # accumulation' of doc/adaptivity.md were measured with an experimental
+    # build that was not merged)
     # restart from t = 0 on the mesh after this many steps (step-26)
     "kelly-f03-nocoarsen-minstart-pre20": {
         "indicator": "kelly", "pre-refinement steps": 20,
