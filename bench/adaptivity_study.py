@@ -40,6 +40,10 @@ EXE = os.path.join(ROOT, "build", "hemicontact")
 TIMES = [0.3, 0.5, 0.7, 0.9]
 LOWER, UPPER = (0., 0.), (4., 1.)  # the 2D block
 
+# refine fraction 0.3, no coarsening, never coarser than the starting mesh
+REFINE_ONLY = {"refine fraction": 0.3, "coarsen fraction": 0,
+               "min level": "start"}
+
 # the adaptive settings compared (all start from the coarsest uniform mesh)
 ADAPTIVE = {
     # coarsening allowed down to level 1
@@ -63,48 +67,27 @@ ADAPTIVE = {
                                       "coarsen fraction": 0.02,
                                       "min level": "start", "interval": 10},
     # refinement only
-    "kelly-f03-nocoarsen-minstart": {"indicator": "kelly",
-                                     "refine fraction": 0.3,
-                                     "coarsen fraction": 0,
-                                     "min level": "start"},
+    "kelly-f03-nocoarsen-minstart": {"indicator": "kelly", **REFINE_ONLY},
     "kelly-contact-f03-nocoarsen-minstart": {"indicator": "kelly contact",
-                                             "refine fraction": 0.3,
-                                             "coarsen fraction": 0,
-                                             "min level": "start"},
+                                             **REFINE_ONLY},
     "kelly-contact-w025-f03-nocoarsen-minstart": {
-        "indicator": "kelly contact", "contact weight": 0.25,
-        "refine fraction": 0.3, "coarsen fraction": 0, "min level": "start"},
+        "indicator": "kelly contact", "contact weight": 0.25, **REFINE_ONLY},
     # (the variants 'kelly energy', 'kelly stress' and 'indicator
     # accumulation' of doc/adaptivity.md were measured with an experimental
     # build that was not merged)
     # restart from t = 0 on the mesh after this many steps (step-26)
     "kelly-f03-nocoarsen-minstart-pre20": {
-        "indicator": "kelly", "pre-refinement steps": 20,
-        "refine fraction": 0.3, "coarsen fraction": 0, "min level": "start"},
-    "kelly-contact-f03-nocoarsen-minstart-pre50": {
-        "indicator": "kelly contact", "pre-refinement steps": 50,
-        "refine fraction": 0.3, "coarsen fraction": 0, "min level": "start"},
-    "kelly-contact-f03-nocoarsen-minstart-pre30": {
-        "indicator": "kelly contact", "pre-refinement steps": 30,
-        "refine fraction": 0.3, "coarsen fraction": 0, "min level": "start"},
-    "kelly-contact-f03-nocoarsen-minstart-pre70": {
-        "indicator": "kelly contact", "pre-refinement steps": 70,
-        "refine fraction": 0.3, "coarsen fraction": 0, "min level": "start"},
-    "kelly-contact-w05-f03-nocoarsen-minstart-pre50": {
-        "indicator": "kelly contact", "contact weight": 0.5,
-        "pre-refinement steps": 50,
-        "refine fraction": 0.3, "coarsen fraction": 0, "min level": "start"},
-    "kelly-contact-w2-f03-nocoarsen-minstart-pre50": {
-        "indicator": "kelly contact", "contact weight": 2,
-        "pre-refinement steps": 50,
-        "refine fraction": 0.3, "coarsen fraction": 0, "min level": "start"},
-    "kelly-contact-f03-nocoarsen-minstart-pre100": {
-        "indicator": "kelly contact", "pre-refinement steps": 100,
-        "refine fraction": 0.3, "coarsen fraction": 0, "min level": "start"},
+        "indicator": "kelly", "pre-refinement steps": 20, **REFINE_ONLY},
+    **{f"kelly-contact-f03-nocoarsen-minstart-pre{p}": {
+        "indicator": "kelly contact", "pre-refinement steps": p,
+        **REFINE_ONLY} for p in (30, 50, 70, 100)},
+    **{f"kelly-contact-w{name}-f03-nocoarsen-minstart-pre50": {
+        "indicator": "kelly contact", "contact weight": weight,
+        "pre-refinement steps": 50, **REFINE_ONLY}
+       for name, weight in (("05", 0.5), ("2", 2))},
     # a cell budget: no refinement once the mesh has this many cells
     "kelly-f03-nocoarsen-minstart-maxcells8192": {
-        "indicator": "kelly", "max cells": 8192,
-        "refine fraction": 0.3, "coarsen fraction": 0, "min level": "start"},
+        "indicator": "kelly", "max cells": 8192, **REFINE_ONLY},
 }
 
 
