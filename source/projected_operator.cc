@@ -1,3 +1,5 @@
+#include <deal.II/base/symmetric_tensor.h>
+
 #include <hemicontact/projected_operator.h>
 
 namespace hemicontact
@@ -5,9 +7,11 @@ namespace hemicontact
   template <int dim>
   ProjectedOperator<dim>::ProjectedOperator(
     const TrilinosWrappers::SparseMatrix &step_matrix,
-    const IndexSet &                      locally_owned_dofs)
+    const IndexSet &                      locally_owned_dofs,
+    const double                          stiff_threshold)
     : step_matrix(&step_matrix)
     , owned(&locally_owned_dofs)
+    , stiff_threshold(stiff_threshold)
   {}
 
   template <int dim>
@@ -30,6 +34,29 @@ namespace hemicontact
       block.local_index[c] = owned->index_within_set(dofs[c]);
     block.projector = projector;
     block.stiffness = projector * stiffness * projector;
+    block.soft_projector = projector;
+    if (stiff_threshold > 0)
+      {
+        Tensor<1, dim> k0_diagonal;
+        for (unsigned int c = 0; c < dim; ++c)
+          k0_diagonal[c] = step_matrix->diag_element(dofs[c]);
+        // the stiffness is symmetric: split it along its eigenvectors
+        for (const auto &eigenpair : eigenvectors(symmetrize(block.stiffness)))
+          {
+            const double          mu = eigenpair.first;
+            const Tensor<1, dim> &v  = eigenpair.second;
+            double                d  = 0;
+            for (unsigned int c = 0; c < dim; ++c)
+              d += v[c] * v[c] * k0_diagonal[c];
+            if (mu > stiff_threshold * d)
+              {
+                const Tensor<2, dim> vv = outer_product(v, v);
+                block.soft_projector -= vv;
+                block.stiff_inverse += vv / (mu + d);
+                block.has_stiff_directions = true;
+              }
+          }
+      }
     blocks.push_back(block);
   }
 
@@ -59,6 +86,52 @@ namespace hemicontact
         for (unsigned int c = 0; c < dim; ++c)
           values[block.local_index[c]] = y[c];
       }
+  }
+
+  template <int dim>
+  void
+  ProjectedOperator<dim>::project_soft(TrilinosWrappers::MPI::Vector &v) const
+  {
+    double *values = v.begin();
+    for (const NodeBlock &block : blocks)
+      {
+        Tensor<1, dim> x;
+        for (unsigned int c = 0; c < dim; ++c)
+          x[c] = values[block.local_index[c]];
+        const Tensor<1, dim> y = block.soft_projector * x;
+        for (unsigned int c = 0; c < dim; ++c)
+          values[block.local_index[c]] = y[c];
+      }
+  }
+
+  template <int dim>
+  void
+  ProjectedOperator<dim>::add_stiff_inverse(
+    TrilinosWrappers::MPI::Vector &      dst,
+    const TrilinosWrappers::MPI::Vector &src) const
+  {
+    const double *x   = src.begin();
+    double *      out = dst.begin();
+    for (const NodeBlock &block : blocks)
+      if (block.has_stiff_directions)
+        {
+          Tensor<1, dim> v;
+          for (unsigned int c = 0; c < dim; ++c)
+            v[c] = x[block.local_index[c]];
+          const Tensor<1, dim> y = block.stiff_inverse * v;
+          for (unsigned int c = 0; c < dim; ++c)
+            out[block.local_index[c]] += y[c];
+        }
+  }
+
+  template <int dim>
+  unsigned int
+  ProjectedOperator<dim>::n_stiff_nodes() const
+  {
+    unsigned int n = 0;
+    for (const NodeBlock &block : blocks)
+      n += block.has_stiff_directions ? 1 : 0;
+    return n;
   }
 
   template <int dim>
@@ -99,9 +172,10 @@ namespace hemicontact
     const TrilinosWrappers::MPI::Vector &src) const
   {
     projected_src = src;
-    op.project(projected_src);
+    op.project_soft(projected_src);
     amg.vmult(dst, projected_src);
-    op.project(dst);
+    op.project_soft(dst);
+    op.add_stiff_inverse(dst, src);
   }
 
   template class ProjectedOperator<2>;

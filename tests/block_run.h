@@ -1,7 +1,7 @@
 #pragma once
 // Shared by the tests that rerun the short block examples with different
 // solver settings: run 0.15 time units of a .prm plus extra settings and
-// return the final velocity and the Newton iterations it took.
+// return the final velocity and the Newton and Krylov iterations it took.
 #include <hemicontact/contact_problem.h>
 #include <hemicontact/parameters.h>
 
@@ -13,6 +13,7 @@ struct BlockRun
 {
   dealii::TrilinosWrappers::MPI::Vector velocity;
   unsigned int                          newton_iterations = 0;
+  unsigned int                          linear_iterations = 0;
 };
 
 template <int dim>
@@ -33,7 +34,11 @@ run_block(const std::string &file, const std::string &settings)
   problem.setup();
   BlockRun result;
   while (!problem.finished())
-    result.newton_iterations += problem.advance().newton_iterations;
+    {
+      const StepStatistics step = problem.advance();
+      result.newton_iterations += step.newton_iterations;
+      result.linear_iterations += step.linear_iterations;
+    }
   result.velocity = problem.get_velocity();
   return result;
 }

@@ -115,6 +115,8 @@ namespace hemicontact
     bool         exact_solve_when_settled;
     /** Rebuild the AMG when Krylov work per decade exceeds this factor. */
     double       preconditioner_rebuild_factor;
+    /** Split contact directions stiffer than this times K0 off the AMG. */
+    double       stiff_contact_threshold;
     double       relative_tolerance;
     unsigned int max_iterations;
     double       aggregation_threshold;

@@ -31,9 +31,14 @@ namespace hemicontact
   class ProjectedOperator
   {
   public:
-    /** @p step_matrix must outlive this object. */
+    /**
+     * @p step_matrix must outlive this object. A positive
+     * @p stiff_threshold makes add_node() split off the node's stiff
+     * directions for the preconditioner (see ProjectedPreconditioner).
+     */
     ProjectedOperator(const TrilinosWrappers::SparseMatrix &step_matrix,
-                      const IndexSet &                      locally_owned_dofs);
+                      const IndexSet &                      locally_owned_dofs,
+                      const double                          stiff_threshold = 0);
 
     /** Forget all node blocks (every node becomes unconstrained). */
     void
@@ -55,6 +60,26 @@ namespace hemicontact
     void
     project(TrilinosWrappers::MPI::Vector &v) const;
 
+    /**
+     * v := (Pi - S) v, S the node-wise projector onto the stiff directions
+     * (owned entries only). Without a stiff threshold, the same as project().
+     */
+    void
+    project_soft(TrilinosWrappers::MPI::Vector &v) const;
+
+    /**
+     * dst += sum_i S_i (L_i + D_i)^{-1} S_i src at every node with stiff
+     * directions, D_i the diagonal of K0 at the node: the nodal (Jacobi)
+     * inverse on the stiff directions.
+     */
+    void
+    add_stiff_inverse(TrilinosWrappers::MPI::Vector &      dst,
+                      const TrilinosWrappers::MPI::Vector &src) const;
+
+    /** Number of owned nodes with at least one stiff direction. */
+    unsigned int
+    n_stiff_nodes() const;
+
     /** dst = Pi (K0 + sum L_i) Pi src. */
     void
     vmult(TrilinosWrappers::MPI::Vector &      dst,
@@ -67,10 +92,16 @@ namespace hemicontact
       std::array<unsigned int, dim> local_index; ///< into the owned range
       Tensor<2, dim>                projector;
       Tensor<2, dim>                stiffness; ///< Pi L Pi
+      /** Pi - S: Pi without the stiff directions. */
+      Tensor<2, dim> soft_projector;
+      /** S (L + D)^{-1} S on the stiff directions (eigenvectors of L). */
+      Tensor<2, dim> stiff_inverse;
+      bool           has_stiff_directions = false;
     };
 
     const TrilinosWrappers::SparseMatrix *step_matrix;
     const IndexSet *                      owned;
+    double                                stiff_threshold;
     std::vector<NodeBlock>                blocks;
     mutable TrilinosWrappers::MPI::Vector projected_src;
   };
@@ -79,6 +110,18 @@ namespace hemicontact
    * Pi P Pi for a symmetric preconditioner P of K0 (the AMG hierarchy of the
    * step matrix, built once per mesh): a symmetric preconditioner on
    * range(Pi) for ProjectedOperator.
+   *
+   * With a stiff threshold theta > 0 the operator splits off, at each node,
+   * the eigendirections v of L_i whose stiffness exceeds theta times that of
+   * K0 (v.L v > theta v.D v, D the diagonal of K0 at the node): the slip
+   * stiffness F_b c/(|q| - F_b) near a stick-slip front, which P, built
+   * without it, cannot see. The preconditioner becomes
+   *
+   *   (Pi - S) P (Pi - S) + sum_i S_i (L_i + D_i)^{-1} S_i,
+   *
+   * a block-diagonal (additive) splitting: the AMG treats the stiff
+   * directions as constrained, and a nodal solve handles them. Both parts
+   * are node-wise, so an application costs what Pi P Pi costs.
    */
   template <int dim>
   class ProjectedPreconditioner

@@ -205,7 +205,8 @@ namespace hemicontact
     // the constrained quadratic problem of this iteration: minimise
     // 1/2 x.K x - g.x over range(Pi), with K = K0 + sum L_i and
     // g = b - (contact force - L_i w) at the nodes
-    ProjectedOperator<dim>        op(step_matrix, locally_owned_dofs);
+    ProjectedOperator<dim>        op(step_matrix, locally_owned_dofs,
+                              parameters.linear_solver.stiff_contact_threshold);
     TrilinosWrappers::MPI::Vector rhs(step_rhs);
     {
       TimerOutput::Scope t(timer, "active set update");
