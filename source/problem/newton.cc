@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <hemicontact/backtracking.h>
 #include <hemicontact/contact_problem.h>
 #include <hemicontact/input_error.h>
 
@@ -146,19 +147,14 @@ namespace hemicontact
       std::abs(slope) + std::abs(curvature) + std::abs(nodal_0) + 1e-300;
 
     TrilinosWrappers::MPI::Vector candidate(w);
-    double                        theta = 1;
-    for (; theta >= parameters.nonlinear_solver.min_step_length; theta /= 2)
-      {
+    const double theta = backtracking_step_length(
+      [&](const double t) {
         candidate = w;
-        candidate.add(theta, direction);
-        const double change = theta * slope + 0.5 * theta * theta * curvature +
-                              nodal_energy(candidate) - nodal_0;
-        if (change <= 1e-12 * scale)
-          break;
-        ++n_reductions;
-      }
-    if (theta < parameters.nonlinear_solver.min_step_length)
-      theta = 1; // no decrease found: take the full active-set step
+        candidate.add(t, direction);
+        return t * slope + 0.5 * t * t * curvature + nodal_energy(candidate) -
+               nodal_0;
+      },
+      scale, parameters.nonlinear_solver.min_step_length, n_reductions);
     w.add(theta, direction);
     return theta;
   }
