@@ -73,6 +73,12 @@ def cases(quick, skip_large, large_steps):
                            solver={"exact solve when settled": "false",
                                    "maximum forcing term": "0.1"},
                            nonlinear={"initial guess": "previous"}))
+    # the AMG of K0 alone, without the stiff contact directions split off
+    # (the default until the fifth session)
+    for r in levels_3d:
+        result.append(case(f"3d-r{r}-no-split", "block_3d.prm", r,
+                           solver={"stiff contact threshold": "0"},
+                           group="3D, fixed k, no stiff split"))
     if not skip_large and not quick:
         # 160 x 40 x 40 hexahedra: 811,923 dofs; the first steps
         for ranks in (1, 2):

@@ -1,3 +1,4 @@
+#include <deal.II/base/function_lib.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/numbers.h>
 #include <deal.II/base/utilities.h>
@@ -6,6 +7,7 @@
 #include <hemicontact/input_error.h>
 #include <hemicontact/problem_data.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -74,6 +76,20 @@ namespace hemicontact
       require(!e.empty(), "data: '" + parameter_name +
                             "' has an empty component in '" + expression +
                             "'.");
+
+    // constant data (e.g. the default zero body force) need no parser: a
+    // ConstantFunction evaluates without muparser's per-thread lookup, and
+    // a ZeroFunction lets the assembly skip the integral
+    if (std::all_of(expressions.begin(), expressions.end(), is_number))
+      {
+        std::vector<double> values;
+        for (const std::string &e : expressions)
+          values.push_back(Utilities::string_to_double(e));
+        if (std::all_of(values.begin(), values.end(),
+                        [](const double v) { return v == 0; }))
+          return std::make_unique<Functions::ZeroFunction<dim>>(n_components);
+        return std::make_unique<Functions::ConstantFunction<dim>>(values);
+      }
 
     const std::string variables =
       dim == 2 ? std::string("x,y,t") : std::string("x,y,z,t");

@@ -128,6 +128,12 @@ main(int argc, char **argv)
   check<2>("slip", "rho/k*V*(1-y/H); 0", "0; -" + side + "*mv*V/H",
            "mv*V/H + Fb; -a/2", "V*(1-y); 0");
 
+  // the same with the contact traction given as plain numbers (constant
+  // data take the Functions::ConstantFunction path, not muparser)
+  check<2>("slip, numeric contact traction", "rho/k*V*(1-y/H); 0",
+           "0; -" + side + "*mv*V/H",
+           num(mu_v * V / H + Fb) + "; " + num(-a / 2), "V*(1-y); 0");
+
   // stick: tangential load below F_b, normal multiplier inside [0, a]
   check<2>("stick", "0", "0", "0.5*Fb; -a/2", "0");
 

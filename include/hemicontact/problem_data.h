@@ -68,7 +68,9 @@ namespace hemicontact
    * A FunctionParser for one parameter, with the variables x, y[, z], t and
    * the user constants (plus pi). @p n_components expressions are expected;
    * a single number is broadcast to every component. @p parameter_name is
-   * used in error messages.
+   * used in error messages. Numbers only give a Functions::ConstantFunction
+   * (a Functions::ZeroFunction if all are zero), which the load assembly
+   * skips.
    */
   template <int dim>
   std::unique_ptr<Function<dim>>

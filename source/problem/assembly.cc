@@ -110,28 +110,47 @@ namespace hemicontact
       parameters.boundary.contact_ids.begin(),
       parameters.boundary.contact_ids.end());
 
+    // zero data (the default body force, an unloaded contact boundary)
+    // contribute nothing: skip their integrals
+    const auto is_zero = [](const Function<dim> *f) {
+      return dynamic_cast<const Functions::ZeroFunction<dim> *>(f) != nullptr;
+    };
+    const bool body_force = !is_zero(data.body_force.get());
+    const bool surface_traction =
+      !is_zero(data.surface_traction.get()) ||
+      data.surface_traction_with_normal != nullptr;
+    const bool contact_traction =
+      !is_zero(data.contact_traction.get()) ||
+      data.contact_traction_with_normal != nullptr;
+
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          fe_values.reinit(cell);
           cell_load = 0;
-          data.body_force->vector_value_list(fe_values.get_quadrature_points(),
-                                             values);
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            for (unsigned int i = 0; i < n; ++i)
-              {
-                const unsigned int c = fe.system_to_component_index(i).first;
-                cell_load(i) += values[q](c) *
-                                fe_values.shape_value_component(i, q, c) *
-                                fe_values.JxW(q);
-              }
+          if (body_force)
+            {
+              fe_values.reinit(cell);
+              data.body_force->vector_value_list(
+                fe_values.get_quadrature_points(), values);
+              for (const unsigned int q : fe_values.quadrature_point_indices())
+                for (unsigned int i = 0; i < n; ++i)
+                  {
+                    const unsigned int c =
+                      fe.system_to_component_index(i).first;
+                    cell_load(i) += values[q](c) *
+                                    fe_values.shape_value_component(i, q, c) *
+                                    fe_values.JxW(q);
+                  }
+            }
 
           for (const unsigned int f : cell->face_indices())
             if (cell->face(f)->at_boundary())
               {
                 const types::boundary_id id = cell->face(f)->boundary_id();
-                const bool on_traction = traction_ids.count(id) > 0;
-                const bool on_contact  = contact_ids.count(id) > 0;
+                const bool on_traction =
+                  surface_traction && traction_ids.count(id) > 0;
+                const bool on_contact =
+                  !on_traction && contact_traction && contact_ids.count(id) > 0;
                 if (!on_traction && !on_contact)
                   continue;
                 const Function<dim> *traction =
@@ -163,6 +182,8 @@ namespace hemicontact
                                       fe_face.JxW(q);
                     }
               }
+          if (cell_load.linfty_norm() == 0)
+            continue;
           cell->get_dof_indices(dofs);
           base_constraints.distribute_local_to_global(cell_load, dofs, load);
         }
