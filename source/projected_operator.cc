@@ -74,7 +74,9 @@ namespace hemicontact
 
   template <int dim>
   void
-  ProjectedOperator<dim>::project(TrilinosWrappers::MPI::Vector &v) const
+  ProjectedOperator<dim>::apply_node_tensors(
+    TrilinosWrappers::MPI::Vector &v,
+    Tensor<2, dim> NodeBlock::*    tensor) const
   {
     double *values = v.begin();
     for (const NodeBlock &block : blocks)
@@ -82,7 +84,7 @@ namespace hemicontact
         Tensor<1, dim> x;
         for (unsigned int c = 0; c < dim; ++c)
           x[c] = values[block.local_index[c]];
-        const Tensor<1, dim> y = block.projector * x;
+        const Tensor<1, dim> y = block.*tensor * x;
         for (unsigned int c = 0; c < dim; ++c)
           values[block.local_index[c]] = y[c];
       }
@@ -90,18 +92,16 @@ namespace hemicontact
 
   template <int dim>
   void
+  ProjectedOperator<dim>::project(TrilinosWrappers::MPI::Vector &v) const
+  {
+    apply_node_tensors(v, &NodeBlock::projector);
+  }
+
+  template <int dim>
+  void
   ProjectedOperator<dim>::project_soft(TrilinosWrappers::MPI::Vector &v) const
   {
-    double *values = v.begin();
-    for (const NodeBlock &block : blocks)
-      {
-        Tensor<1, dim> x;
-        for (unsigned int c = 0; c < dim; ++c)
-          x[c] = values[block.local_index[c]];
-        const Tensor<1, dim> y = block.soft_projector * x;
-        for (unsigned int c = 0; c < dim; ++c)
-          values[block.local_index[c]] = y[c];
-      }
+    apply_node_tensors(v, &NodeBlock::soft_projector);
   }
 
   template <int dim>

@@ -42,3 +42,14 @@ run_block(const std::string &file, const std::string &settings)
   result.velocity = problem.get_velocity();
   return result;
 }
+
+/** "agree to 1e-7" if |a - b| <= 1e-7 |b| (l2 norms), else "DIFFER". */
+inline std::string
+agreement(const dealii::TrilinosWrappers::MPI::Vector &a,
+          const dealii::TrilinosWrappers::MPI::Vector &b)
+{
+  dealii::TrilinosWrappers::MPI::Vector difference(a);
+  difference -= b;
+  return difference.l2_norm() <= 1e-7 * b.l2_norm() ? "agree to 1e-7" :
+                                                      "DIFFER";
+}

@@ -99,6 +99,11 @@ namespace hemicontact
       bool           has_stiff_directions = false;
     };
 
+    /** v_i := T_i v_i at every node block, T_i = block.*tensor. */
+    void
+    apply_node_tensors(TrilinosWrappers::MPI::Vector &v,
+                       Tensor<2, dim> NodeBlock::*    tensor) const;
+
     const TrilinosWrappers::SparseMatrix *step_matrix;
     const IndexSet *                      owned;
     double                                stiff_threshold;
