@@ -125,16 +125,6 @@ namespace hemicontact
   }
 
   template <int dim>
-  unsigned int
-  ProjectedOperator<dim>::n_stiff_nodes() const
-  {
-    unsigned int n = 0;
-    for (const NodeBlock &block : blocks)
-      n += block.has_stiff_directions ? 1 : 0;
-    return n;
-  }
-
-  template <int dim>
   void
   ProjectedOperator<dim>::vmult(TrilinosWrappers::MPI::Vector &      dst,
                                 const TrilinosWrappers::MPI::Vector &src) const

@@ -76,10 +76,6 @@ namespace hemicontact
     add_stiff_inverse(TrilinosWrappers::MPI::Vector &      dst,
                       const TrilinosWrappers::MPI::Vector &src) const;
 
-    /** Number of owned nodes with at least one stiff direction. */
-    unsigned int
-    n_stiff_nodes() const;
-
     /** dst = Pi (K0 + sum L_i) Pi src. */
     void
     vmult(TrilinosWrappers::MPI::Vector &      dst,
