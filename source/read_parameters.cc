@@ -1,0 +1,105 @@
+// Reading a parameter file: declare every entry, parse the file (or a
+// string) and turn deal.II's exceptions into one-paragraph InputErrors.
+#include <deal.II/base/exceptions.h>
+
+#include <hemicontact/input_error.h>
+#include <hemicontact/normal_law.h>
+#include <hemicontact/parameters.h>
+
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+namespace hemicontact
+{
+  void
+  declare_all_parameters(ParameterHandler &prm)
+  {
+    Parameters::declare(prm);
+    declare_normal_law_parameters(prm);
+  }
+
+  namespace
+  {
+    /**
+     * The message of a deal.II exception without its stack trace, with
+     * its line breaks and indentation collapsed into one paragraph.
+     */
+    std::string
+    message_of(const ExceptionBase &e)
+    {
+      std::ostringstream s;
+      e.print_info(s);
+      std::string message;
+      for (const char c : s.str())
+        if (std::isspace(static_cast<unsigned char>(c)))
+          {
+            if (!message.empty() && message.back() != ' ')
+              message += ' ';
+          }
+        else
+          message += c;
+      while (!message.empty() && message.back() == ' ')
+        message.pop_back();
+      return message;
+    }
+
+    template <typename ParseFunction>
+    Parameters
+    read_with(ParameterHandler &prm, const std::string &source,
+              const ParseFunction &parse)
+    {
+      declare_all_parameters(prm);
+      try
+        {
+          parse();
+        }
+      catch (const ExceptionBase &e)
+        {
+          throw InputError("cannot read the parameter file " + source + ": " +
+                           message_of(e));
+        }
+      Parameters parameters;
+      try
+        {
+          parameters.parse(prm);
+        }
+      catch (const ExceptionBase &e)
+        {
+          throw InputError("invalid value in the parameter file " + source +
+                           ": " + message_of(e));
+        }
+      return parameters;
+    }
+  } // namespace
+
+  Parameters
+  read_parameters(ParameterHandler &prm, const std::string &filename)
+  {
+    return read_parameters(prm, filename, "");
+  }
+
+  Parameters
+  read_parameters(ParameterHandler &prm, const std::string &filename,
+                  const std::string &overrides)
+  {
+    {
+      std::ifstream probe(filename);
+      require(static_cast<bool>(probe),
+              "cannot open the parameter file '" + filename +
+                "': no such file or not readable.");
+    }
+    return read_with(prm, "'" + filename + "'", [&]() {
+      prm.parse_input(filename);
+      if (!overrides.empty())
+        prm.parse_input_from_string(overrides);
+    });
+  }
+
+  Parameters
+  read_parameters_from_string(ParameterHandler &prm, const std::string &text)
+  {
+    return read_with(prm, "(string)",
+                     [&]() { prm.parse_input_from_string(text); });
+  }
+} // namespace hemicontact
