@@ -53,7 +53,6 @@ namespace hemicontact
                 const Tensor<2, dim> vv = outer_product(v, v);
                 block.soft_projector -= vv;
                 block.stiff_inverse += vv / (mu + d);
-                block.has_stiff_directions = true;
               }
           }
       }
@@ -106,22 +105,31 @@ namespace hemicontact
 
   template <int dim>
   void
-  ProjectedOperator<dim>::add_stiff_inverse(
+  ProjectedOperator<dim>::add_node_tensors(
     TrilinosWrappers::MPI::Vector &      dst,
-    const TrilinosWrappers::MPI::Vector &src) const
+    const TrilinosWrappers::MPI::Vector &src,
+    Tensor<2, dim> NodeBlock::*          tensor) const
   {
     const double *x   = src.begin();
     double *      out = dst.begin();
     for (const NodeBlock &block : blocks)
-      if (block.has_stiff_directions)
-        {
-          Tensor<1, dim> v;
-          for (unsigned int c = 0; c < dim; ++c)
-            v[c] = x[block.local_index[c]];
-          const Tensor<1, dim> y = block.stiff_inverse * v;
-          for (unsigned int c = 0; c < dim; ++c)
-            out[block.local_index[c]] += y[c];
-        }
+      {
+        Tensor<1, dim> v;
+        for (unsigned int c = 0; c < dim; ++c)
+          v[c] = x[block.local_index[c]];
+        const Tensor<1, dim> y = block.*tensor * v;
+        for (unsigned int c = 0; c < dim; ++c)
+          out[block.local_index[c]] += y[c];
+      }
+  }
+
+  template <int dim>
+  void
+  ProjectedOperator<dim>::add_stiff_inverse(
+    TrilinosWrappers::MPI::Vector &      dst,
+    const TrilinosWrappers::MPI::Vector &src) const
+  {
+    add_node_tensors(dst, src, &NodeBlock::stiff_inverse);
   }
 
   template <int dim>
@@ -132,18 +140,7 @@ namespace hemicontact
     projected_src = src;
     project(projected_src);
     step_matrix->vmult(dst, projected_src);
-
-    const double *x   = projected_src.begin();
-    double *      out = dst.begin();
-    for (const NodeBlock &block : blocks)
-      {
-        Tensor<1, dim> v;
-        for (unsigned int c = 0; c < dim; ++c)
-          v[c] = x[block.local_index[c]];
-        const Tensor<1, dim> contact = block.stiffness * v;
-        for (unsigned int c = 0; c < dim; ++c)
-          out[block.local_index[c]] += contact[c];
-      }
+    add_node_tensors(dst, projected_src, &NodeBlock::stiffness);
     project(dst);
   }
 

@@ -90,10 +90,16 @@ namespace hemicontact
       Tensor<2, dim>                stiffness; ///< Pi L Pi
       /** Pi - S: Pi without the stiff directions. */
       Tensor<2, dim> soft_projector;
-      /** S (L + D)^{-1} S on the stiff directions (eigenvectors of L). */
+      /** S (L + D)^{-1} S on the stiff directions (eigenvectors of L); zero
+       *  at nodes without stiff directions. */
       Tensor<2, dim> stiff_inverse;
-      bool           has_stiff_directions = false;
     };
+
+    /** dst_i += T_i src_i at every node block, T_i = block.*tensor. */
+    void
+    add_node_tensors(TrilinosWrappers::MPI::Vector &      dst,
+                     const TrilinosWrappers::MPI::Vector &src,
+                     Tensor<2, dim> NodeBlock::*          tensor) const;
 
     /** v_i := T_i v_i at every node block, T_i = block.*tensor. */
     void

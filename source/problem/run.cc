@@ -63,12 +63,18 @@ namespace hemicontact
     // starting from the linear extrapolation of w_{n-2}, w_{n-1}; the trend
     // is zero after the start, an adaptation or a resume (old_velocity =
     // velocity there)
-    TrilinosWrappers::MPI::Vector trend(velocity);
-    trend -= old_velocity;
+    const bool extrapolate =
+      parameters.nonlinear_solver.initial_guess == "extrapolated" &&
+      last_step_length > 0;
+    TrilinosWrappers::MPI::Vector trend;
+    if (extrapolate)
+      {
+        trend = velocity;
+        trend -= old_velocity;
+      }
     old_velocity = velocity;
     displacement.add(k, old_velocity);
-    if (parameters.nonlinear_solver.initial_guess == "extrapolated" &&
-        last_step_length > 0)
+    if (extrapolate)
       {
         velocity.add(k / last_step_length, trend);
         base_constraints.distribute(velocity);
