@@ -38,6 +38,20 @@ namespace hemicontact
       return NormalBranch::stick;
     }
 
+    NormalBranch
+    gradual_normal_branch(const NormalBranch current,
+                          const NormalBranch predicted,
+                          const NormalLaw &  law)
+    {
+      const bool jumps =
+        law.jump() > 0 &&
+        ((current == NormalBranch::separating &&
+         predicted == NormalBranch::damped) ||
+        (current == NormalBranch::damped &&
+         predicted == NormalBranch::separating));
+      return jumps ? NormalBranch::stick : predicted;
+    }
+
     template <int dim>
     TangentialBranch
     tangential_branch(const ContactNode<dim> &node,

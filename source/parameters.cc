@@ -305,6 +305,13 @@ namespace hemicontact
       "first after an adaptation or a resume, start from w_{n-1}); "
       "'previous': w_{n-1}. The converged w_n is the same either way, to the "
       "tolerance.");
+    prm.declare_entry(
+      "gradual normal branch changes", "true", Patterns::Bool(),
+      "A node that the complementarity function would move from separating "
+      "straight to damped, or back, is held at normal stick (w_nu = 0) for "
+      "that Newton iteration. Stops groups of nodes at the edge of a lifting "
+      "contact zone from alternating between free and damped; the converged "
+      "solution is the same. Laws without a jump (a = 0) are not affected.");
     prm.declare_entry("strict convexity check", "false", Patterns::Bool(),
                       "If the per-step convexity condition fails for the "
                       "chosen time step: stop with an error (true) or warn "
@@ -324,6 +331,7 @@ namespace hemicontact
     line_search            = prm.get_bool("line search");
     min_step_length        = prm.get_double("minimum step length");
     initial_guess          = prm.get("initial guess");
+    gradual_normal_branches = prm.get_bool("gradual normal branch changes");
     strict_convexity_check = prm.get_bool("strict convexity check");
     prm.leave_subsection();
     require(complementarity_factor > 0,

@@ -2,11 +2,13 @@
 // decisions and complementarity functions at and around the kinks
 // (s + c w_nu = 0 and = a, |lambda + c w_tau| = F_b), the Tresca projection
 // onto the friction disk, the elimination of constrained directions, the
-// tangent basis, and the slip linearisation against a difference quotient.
+// tangent basis, the slip linearisation against a difference quotient, and
+// the gradual normal branch changes (separating <-> damped via stick).
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <hemicontact/contact_node.h>
 #include <hemicontact/normal_laws/exponential_law.h>
+#include <hemicontact/normal_laws/linear_damping_law.h>
 #include <hemicontact/tresca_friction.h>
 
 #include <cmath>
@@ -85,6 +87,26 @@ main()
                   << ", C_nu = "
                   << NodeContact::normal_complementarity(node, m, law) << "\n";
       }
+
+  // a Newton iteration's normal branch: separating <-> damped passes through
+  // stick for a law with a jump, not for one without
+  {
+    const LinearDampingLaw no_jump(2.);
+    const NormalBranch     all[] = {NormalBranch::separating,
+                                NormalBranch::stick,
+                                NormalBranch::damped};
+    std::cout << "gradual normal branches (current -> predicted: a = 1 / a = 0):\n";
+    for (const NormalBranch current : all)
+      for (const NormalBranch predicted : all)
+        std::cout << "  " << name(current) << " -> " << name(predicted)
+                  << ": "
+                  << name(NodeContact::gradual_normal_branch(current, predicted,
+                                                             law))
+                  << " / "
+                  << name(NodeContact::gradual_normal_branch(current, predicted,
+                                                             no_jump))
+                  << "\n";
+  }
 
   // tangential branches around |lambda + c w_tau| = F_b = 0.3
   std::cout << "tangential branches (F_b = 0.3, c = 10):\n";

@@ -86,6 +86,22 @@ namespace hemicontact
     normal_branch(const ContactNode<dim> &node, const NodeMultipliers<dim> &m,
                   const NormalLaw &law);
 
+    /**
+     * The normal branch a Newton iteration uses when the complementarity
+     * function moves a node from @p current to @p predicted: the prediction,
+     * except that a jump between separating and damped passes through
+     * normal stick, the branch between them. Without this, groups of nodes
+     * at the edge of a lifting contact zone can alternate between free and
+     * damped for several iterations. Near a solution the two branches are
+     * never adjacent (the gap a > 0 lies between them), so the converged
+     * branches are the complementarity function's own. A law without a
+     * jump (a = 0) has no branch between them: the prediction is returned.
+     */
+    NormalBranch
+    gradual_normal_branch(const NormalBranch current,
+                          const NormalBranch predicted,
+                          const NormalLaw &  law);
+
     /** Branch from |lambda + c w_tau| against F_b. */
     template <int dim>
     TangentialBranch

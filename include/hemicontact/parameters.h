@@ -96,6 +96,8 @@ namespace hemicontact
     /** "extrapolated" (w_{n-1} + k_n/k_{n-1} (w_{n-1} - w_{n-2})) or
      * "previous" (w_{n-1}): where Newton starts. */
     std::string  initial_guess;
+    /** Separating <-> damped passes through normal stick (one iteration). */
+    bool         gradual_normal_branches;
     bool         strict_convexity_check;
 
     static void declare(ParameterHandler &prm);

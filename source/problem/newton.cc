@@ -307,8 +307,10 @@ namespace hemicontact
         for (unsigned int k = 0; k < contact_nodes.size(); ++k)
           {
             ContactNode<dim> &node = contact_nodes[k];
-            const NormalBranch nb =
-              NodeContact::normal_branch(node, mult[k], *law);
+            NormalBranch nb = NodeContact::normal_branch(node, mult[k], *law);
+            if (settings.gradual_normal_branches && iteration > 0)
+              nb = NodeContact::gradual_normal_branch(node.normal_branch, nb,
+                                                      *law);
             const TangentialBranch tb =
               NodeContact::tangential_branch(node, mult[k]);
             if (node.locally_owned &&
