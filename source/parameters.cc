@@ -307,9 +307,10 @@ namespace hemicontact
       "tolerance.");
     prm.declare_entry(
       "gradual normal branch changes", "true", Patterns::Bool(),
-      "A node that the complementarity function would move from separating "
-      "straight to damped, or back, is held at normal stick (w_nu = 0) for "
-      "that Newton iteration. Stops groups of nodes at the edge of a lifting "
+      "From the second Newton iteration of a step on, a node that the "
+      "complementarity function would move from separating straight to "
+      "damped, or back, is held at normal stick (w_nu = 0) for that "
+      "iteration. Stops groups of nodes at the edge of a lifting "
       "contact zone from alternating between free and damped; the converged "
       "solution is the same. Laws without a jump (a = 0) are not affected.");
     prm.declare_entry("strict convexity check", "false", Patterns::Bool(),

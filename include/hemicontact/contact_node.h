@@ -87,8 +87,9 @@ namespace hemicontact
                   const NormalLaw &law);
 
     /**
-     * The normal branch a Newton iteration uses when the complementarity
-     * function moves a node from @p current to @p predicted: the prediction,
+     * The normal branch a Newton iteration (after the first of a step)
+     * uses when the complementarity function moves a node from @p current
+     * to @p predicted: the prediction,
      * except that a jump between separating and damped passes through
      * normal stick, the branch between them. Without this, groups of nodes
      * at the edge of a lifting contact zone can alternate between free and

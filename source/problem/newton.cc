@@ -308,6 +308,8 @@ namespace hemicontact
           {
             ContactNode<dim> &node = contact_nodes[k];
             NormalBranch nb = NodeContact::normal_branch(node, mult[k], *law);
+            // not in the first iteration: its "current" branches are the
+            // previous step's, or the default of a new mesh
             if (settings.gradual_normal_branches && iteration > 0)
               nb = NodeContact::gradual_normal_branch(node.normal_branch, nb,
                                                       *law);
