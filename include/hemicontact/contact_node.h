@@ -89,14 +89,14 @@ namespace hemicontact
     /**
      * The normal branch a Newton iteration (after the first of a step)
      * uses when the complementarity function moves a node from @p current
-     * to @p predicted: the prediction,
-     * except that a jump between separating and damped passes through
-     * normal stick, the branch between them. Without this, groups of nodes
-     * at the edge of a lifting contact zone can alternate between free and
-     * damped for several iterations. Near a solution the two branches are
-     * never adjacent (the gap a > 0 lies between them), so the converged
-     * branches are the complementarity function's own. A law without a
-     * jump (a = 0) has no branch between them: the prediction is returned.
+     * to @p predicted: the prediction, except that a jump between
+     * separating and damped passes through normal stick, the branch between
+     * them. Without this, groups of nodes at the edge of a lifting contact
+     * zone can alternate between free and damped for several iterations.
+     * Near a solution the two branches are never adjacent (the gap a > 0
+     * lies between them), so the converged branches are the
+     * complementarity function's own. A law without a jump (a = 0) has no
+     * branch between them: the prediction is returned.
      */
     NormalBranch
     gradual_normal_branch(const NormalBranch current,
