@@ -20,9 +20,13 @@ pre_refinement_mean_dofs).
   /usr/bin/python3 bench/adaptivity_study.py                 # 2D, ~1.5 h from scratch
   /usr/bin/python3 bench/adaptivity_study.py --dim 3         # 3D, ~5 min
   /usr/bin/python3 bench/adaptivity_study.py --reuse         # re-read runs
+  /usr/bin/python3 bench/adaptivity_study.py --dim 3 --reference 5 \
+      --coarsest 2 --max-levels 3,4 --only kelly --executable /tmp/hemicontact
+        # a finer reference, adaptive runs from 2 refinements (named
+        # '-from2'), one variant, a copy of the binary (build/ may change)
 
 prints the errors and ratios (also as the Markdown table of doc/adaptivity.md)
-and writes bench/results/adaptivity[_3d].csv
+and writes bench/results/adaptivity[_3d][-fromN].csv
 """
 import argparse
 import glob
@@ -210,6 +214,7 @@ def print_markdown(table, fields):
 
 
 def main():
+    global EXE
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--dim", type=int, default=2, choices=(2, 3))
     parser.add_argument("--reference", type=int, default=None,
@@ -220,14 +225,23 @@ def main():
                         help="comma-separated adaptive variants to run")
     parser.add_argument("--reuse", action="store_true",
                         help="reuse finished runs in the work directory")
+    parser.add_argument("--coarsest", type=int, default=None,
+                        help="refinements of the adaptive runs' starting mesh "
+                        "(2D: 3, 3D: 1); another value is named in the case")
+    parser.add_argument("--executable", default=EXE,
+                        help="the hemicontact binary (default build/hemicontact;"
+                        " a copy lets the build directory change meanwhile)")
     args = parser.parse_args()
+    EXE = args.executable
 
     dim = args.dim
     base = "block_%dd.prm" % dim
     work = os.path.join(ROOT, "bench", "work",
                         "adaptivity" + ("" if dim == 2 else "_3d"))
     reference_level = args.reference or (8 if dim == 2 else 4)
-    coarsest = 3 if dim == 2 else 1
+    default_coarsest = 3 if dim == 2 else 1
+    coarsest = args.coarsest or default_coarsest
+    start = "" if coarsest == default_coarsest else "-from%d" % coarsest
     uniform_levels = range(coarsest, reference_level)
     max_levels = [int(v) for v in (args.max_levels or
                                    ("5,6,7" if dim == 2 else "2,3")).split(",")]
@@ -244,7 +258,8 @@ def main():
             adaptivity.update(settings)
             if adaptivity["min level"] == "start":
                 adaptivity["min level"] = coarsest
-            cases.append(("adaptive-%s-L%d" % (variant, max_level), coarsest,
+            cases.append(("adaptive-%s%s-L%d" % (variant, start, max_level),
+                          coarsest,
                           adaptivity))
     grids = reference_grids(reference, reference_level) if dim == 2 else None
     rows = []
@@ -274,8 +289,8 @@ def main():
                 ["dof_ratio_" + f for f in fields]].to_string(
                      index=False, float_format=lambda v: "%.3e" % v))
     print_markdown(table, fields)
-    out = os.path.join(ROOT, "bench", "results",
-                       "adaptivity%s.csv" % ("" if dim == 2 else "_3d"))
+    out = os.path.join(ROOT, "bench", "results", "adaptivity%s%s.csv" %
+                       ("" if dim == 2 else "_3d", start))
     os.makedirs(os.path.dirname(out), exist_ok=True)
     table.to_csv(out, index=False)
     print("written to", out)
