@@ -19,7 +19,7 @@ iterations per step. The replayed runs bound from below what any better
 prediction of the branches at the start of a step can achieve with the
 same Newton tolerance and start.
 
-  /usr/bin/python3 bench/branch_oracle.py            # ~15 min with the build
+  /usr/bin/python3 bench/branch_oracle.py            # ~12 min with the build
   /usr/bin/python3 bench/branch_oracle.py --only '^2d'
 
 writes bench/results/branch_oracle.csv
@@ -38,13 +38,17 @@ PATCH = os.path.join(ROOT, "bench", "experiments", "branch_oracle.patch")
 
 
 def build(scratch):
-    """The patched executable, built from git HEAD in @p scratch."""
-    source = os.path.join(scratch, "source-tree")
-    binary = os.path.join(scratch, "build", "hemicontact")
+    """The patched executable, built from git HEAD in @p scratch (one build
+    per commit, so a later commit never runs an older binary)."""
+    commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "HEAD"],
+                            check=True, capture_output=True,
+                            text=True).stdout.strip()
+    source = os.path.join(scratch, commit, "source-tree")
+    binary = os.path.join(scratch, commit, "build", "hemicontact")
     if os.path.exists(binary):
         return binary
     os.makedirs(source, exist_ok=True)
-    archive = subprocess.run(["git", "-C", ROOT, "archive", "HEAD"],
+    archive = subprocess.run(["git", "-C", ROOT, "archive", commit],
                              check=True, capture_output=True).stdout
     subprocess.run(["tar", "-x", "-C", source], input=archive, check=True)
     subprocess.run(["patch", "-p1", "-d", source, "-i", PATCH], check=True,
