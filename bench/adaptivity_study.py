@@ -76,6 +76,14 @@ ADAPTIVE = {
                                              **REFINE_ONLY},
     "kelly-contact-w025-f03-nocoarsen-minstart": {
         "indicator": "kelly contact", "contact weight": 0.25, **REFINE_ONLY},
+    # the residual indicator, with coarsening as 'kelly', refinement only,
+    # and refinement only with a restart after 50 steps
+    "residual": {"indicator": "residual", "refine fraction": 0.5,
+                 "coarsen fraction": 0.02},
+    "residual-f03-nocoarsen-minstart": {"indicator": "residual",
+                                        **REFINE_ONLY},
+    "residual-f03-nocoarsen-minstart-pre50": {
+        "indicator": "residual", "pre-refinement steps": 50, **REFINE_ONLY},
     # (the variants 'kelly energy', 'kelly stress' and 'indicator
     # accumulation' of doc/adaptivity.md were measured with an experimental
     # build that was not merged)

@@ -545,14 +545,22 @@ namespace hemicontact
                       "Adapt the mesh after every this many time steps "
                       "(0: never). Needs 'geometry/cell type = hypercube'.");
     prm.declare_entry(
-      "indicator", "kelly", Patterns::Selection("kelly|kelly contact"),
+      "indicator", "kelly",
+      Patterns::Selection("kelly|kelly contact|residual"),
       "Cell indicator: 'kelly': Kelly's jump of the normal derivative of the "
       "velocity w_n across faces; 'kelly contact': plus, on cells with a "
       "face on Gamma_3, 'contact weight' times sqrt(h_F sum |t_i - t_j|^2) "
       "over the face's pairs of contact nodes, t the nodal contact traction "
-      "(large at the edge of the contact zone and at stick-slip fronts).");
+      "(large at the edge of the contact zone and at stick-slip fronts); "
+      "'residual': the residual of the step in the cell, h_K^2 |f0 - rho/k "
+      "(w_n - w_{n-1}) + div sigma_h|^2, plus half of h_F |[sigma_h nu]|^2 "
+      "on each interior face, h_F |f2 - sigma_h nu|^2 on Gamma_2 (zero "
+      "traction on unlisted boundaries) and 'contact weight'^2 h_F |f3 - "
+      "sigma_h nu - xi_h|^2 on Gamma_3, sigma_h = A eps(w_n) + B eps(u_n) "
+      "and xi_h the nodal contact traction (square root of the sum).");
     prm.declare_entry("contact weight", "1", Patterns::Double(0),
-                      "Weight of the contact term of 'kelly contact'.");
+                      "Weight of the contact term of 'kelly contact' and "
+                      "'residual'.");
     prm.declare_entry(
       "pre-refinement steps", "0", Patterns::Integer(0),
       "After this many steps (adapting as usual), start the run again, "

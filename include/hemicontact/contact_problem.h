@@ -90,6 +90,17 @@ namespace hemicontact
     Vector<float>
     refinement_indicators() const;
 
+    /**
+     * The residual indicator of the step just solved (residual_indicator.cc):
+     * eta_K^2 = h_K^2 |f0 - rho/k (w_n - w_{n-1}) + div sigma_h|^2_K
+     * + 1/2 sum h_F |[sigma_h nu]|^2_F over interior faces + h_F |f2 -
+     * sigma_h nu|^2_F on Neumann faces + 'contact weight'^2 h_F |f3 -
+     * sigma_h nu - xi_h|^2_F on Gamma_3, sigma_h = A eps(w_n) + B eps(u_n),
+     * xi_h the nodal contact traction.
+     */
+    Vector<float>
+    residual_indicators() const;
+
     /** Whether the final time has been reached. */
     bool
     finished() const

@@ -163,7 +163,7 @@ namespace hemicontact
   struct AdaptivityParameters
   {
     unsigned int interval;         ///< adapt after every this many steps, 0 = never
-    std::string  indicator;        ///< "kelly" or "kelly contact"
+    std::string  indicator;        ///< "kelly", "kelly contact", "residual"
     double       contact_weight;   ///< weight of the Gamma_3 traction jumps
     unsigned int pre_refinement_steps; ///< restart from t = 0 after these, 0 = never
     std::string  strategy;         ///< "fixed fraction" or "fixed number"

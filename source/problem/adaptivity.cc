@@ -19,6 +19,8 @@ namespace hemicontact
   ContactProblem<dim>::refinement_indicators() const
   {
     const AdaptivityParameters &settings = parameters.adaptivity;
+    if (settings.indicator == "residual")
+      return residual_indicators();
     TrilinosWrappers::MPI::Vector w(locally_owned_dofs, locally_relevant_dofs,
                                    mpi_communicator);
     w = velocity;
