@@ -19,7 +19,8 @@ range).
       --set "max cells=160"                                # a variant
 
 Writes bench/results/adaptive_mms.csv (one row per study and level) and
-bench/results/adaptive_mms_rates.csv (the fitted slopes); the runs go to
+bench/results/adaptive_mms_rates.csv (the fitted slopes), with "-NAME"
+before ".csv" for a --name other than "adaptive"; the runs go to
 bench/work/adaptive_mms/NAME.
 """
 import argparse
@@ -121,11 +122,13 @@ def main():
                [c for e in ERRORS for c in (e, "rate_" + e)] +
                ["vs_uniform_" + e for e in ERRORS] + ["wall_seconds"])
     os.makedirs(RESULTS, exist_ok=True)
-    table[columns].to_csv(os.path.join(RESULTS, "adaptive_mms.csv"),
-                          index=False, float_format="%.6g")
+    suffix = "" if args.name == "adaptive" else "-" + args.name
+    table[columns].to_csv(
+        os.path.join(RESULTS, "adaptive_mms%s.csv" % suffix), index=False,
+        float_format="%.6g")
     fits = pd.DataFrame(fits)
-    fits.to_csv(os.path.join(RESULTS, "adaptive_mms_rates.csv"), index=False,
-                float_format="%.4f")
+    fits.to_csv(os.path.join(RESULTS, "adaptive_mms_rates%s.csv" % suffix),
+                index=False, float_format="%.4f")
 
     pd.set_option("display.width", 200)
     print("errors and rates against the mean dofs (rate: -log(E ratio) / "

@@ -84,6 +84,11 @@ ADAPTIVE = {
                                         **REFINE_ONLY},
     "residual-f03-nocoarsen-minstart-pre50": {
         "indicator": "residual", "pre-refinement steps": 50, **REFINE_ONLY},
+    "residual-pre50": {"indicator": "residual", "refine fraction": 0.5,
+                       "coarsen fraction": 0.02, "pre-refinement steps": 50},
+    "residual-w4-f03-nocoarsen-minstart-pre50": {
+        "indicator": "residual", "contact weight": 4,
+        "pre-refinement steps": 50, **REFINE_ONLY},
     # (the variants 'kelly energy', 'kelly stress' and 'indicator
     # accumulation' of doc/adaptivity.md were measured with an experimental
     # build that was not merged)

@@ -142,6 +142,31 @@ namespace hemicontact
   }
 
   template <int dim>
+  void
+  ProblemData<dim>::boundary_traction(
+    const bool                         on_traction,
+    const std::vector<Point<dim>> &    points,
+    const std::vector<Tensor<1, dim>> &normals,
+    std::vector<Vector<double>> &      values) const
+  {
+    const NormalTraction &with_normal = on_traction ?
+                                          surface_traction_with_normal :
+                                          contact_traction_with_normal;
+    if (!with_normal)
+      {
+        (on_traction ? surface_traction : contact_traction)
+          ->vector_value_list(points, values);
+        return;
+      }
+    for (unsigned int q = 0; q < points.size(); ++q)
+      {
+        const Tensor<1, dim> g = with_normal(points[q], normals[q], time);
+        for (unsigned int c = 0; c < dim; ++c)
+          values[q](c) = g[c];
+      }
+  }
+
+  template <int dim>
   ProblemData<dim>
   make_problem_data(const DataParameters &data)
   {

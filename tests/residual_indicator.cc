@@ -76,6 +76,18 @@ end
           << (error < 1e-6 ? "yes" : "no") << "\n";
   }
 
+  /** A set-up problem from the parameters @p text (and their normal law). */
+  std::unique_ptr<ContactProblem<2>>
+  set_up(const std::string &text)
+  {
+    ParameterHandler prm;
+    const Parameters parameters = read_parameters_from_string(prm, text);
+    auto             problem    = std::make_unique<ContactProblem<2>>(
+      parameters, create_normal_law(prm), MPI_COMM_WORLD);
+    problem->setup();
+    return problem;
+  }
+
   /** sqrt(h_F int_F (x - 3)^2) on the face of @p cell on y = 0 right of
    *  x = 3, else 0. */
   template <typename Cell>
@@ -123,11 +135,8 @@ subsection adaptivity
   set max level        = 5
 end
 )";
-    ParameterHandler  prm;
-    const Parameters  parameters = read_parameters_from_string(prm, text);
-    ContactProblem<2> problem(parameters, create_normal_law(prm),
-                              MPI_COMM_WORLD);
-    problem.setup();
+    const auto problem_pointer = set_up(text);
+    ContactProblem<2> &problem = *problem_pointer;
     const auto expected = [](const auto &cell) {
       return expected_contact_term(cell);
     };
@@ -152,11 +161,8 @@ subsection data
   set initial displacement = 0; x - abs(x - 2) + 2
 end
 )";
-    ParameterHandler  prm;
-    const Parameters  parameters = read_parameters_from_string(prm, text);
-    ContactProblem<2> problem(parameters, create_normal_law(prm),
-                              MPI_COMM_WORLD);
-    problem.setup();
+    const auto problem_pointer = set_up(text);
+    ContactProblem<2> &problem = *problem_pointer;
     const auto expected = [](const auto &cell) {
       const double h = cell->face(0)->diameter();
       return std::abs(std::abs(cell->center()[0] - 2) - h / 2) < 1e-12 ?

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/lac/vector.h>
 
 #include <hemicontact/parameters.h>
 
@@ -9,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace hemicontact
 {
@@ -46,6 +48,17 @@ namespace hemicontact
     /** Set the time of every time-dependent function. */
     void
     set_time(const double t);
+
+    /**
+     * f2 (@p on_traction) or f3 at the quadrature points of a boundary face
+     * with their outward normals, at the time last set: the normal-dependent
+     * form if there is one, else the Function.
+     */
+    void
+    boundary_traction(const bool                         on_traction,
+                      const std::vector<Point<dim>> &    points,
+                      const std::vector<Tensor<1, dim>> &normals,
+                      std::vector<Vector<double>> &      values) const;
   };
 
   /**

@@ -153,25 +153,11 @@ namespace hemicontact
                   !on_traction && contact_traction && contact_ids.count(id) > 0;
                 if (!on_traction && !on_contact)
                   continue;
-                const Function<dim> *traction =
-                  on_traction ? data.surface_traction.get() :
-                                data.contact_traction.get();
-                const auto &with_normal =
-                  on_traction ? data.surface_traction_with_normal :
-                                data.contact_traction_with_normal;
                 fe_face.reinit(cell, f);
-                if (with_normal)
-                  for (const unsigned int q : fe_face.quadrature_point_indices())
-                    {
-                      const Tensor<1, dim> g =
-                        with_normal(fe_face.quadrature_point(q),
-                                    fe_face.normal_vector(q), time);
-                      for (unsigned int c = 0; c < dim; ++c)
-                        face_values[q](c) = g[c];
-                    }
-                else
-                  traction->vector_value_list(fe_face.get_quadrature_points(),
-                                              face_values);
+                data.boundary_traction(on_traction,
+                                       fe_face.get_quadrature_points(),
+                                       fe_face.get_normal_vectors(),
+                                       face_values);
                 for (const unsigned int q : fe_face.quadrature_point_indices())
                   for (unsigned int i = 0; i < n; ++i)
                     {

@@ -80,7 +80,7 @@ namespace hemicontact
     const std::set<types::boundary_id> contact_ids(
       parameters.boundary.contact_ids.begin(),
       parameters.boundary.contact_ids.end());
-    const double rho = material.density(), time = data.time;
+    const double rho = material.density();
     const double contact_weight = parameters.adaptivity.contact_weight;
 
     const auto stress = [&](const Tensor<2, dim> &grad_w,
@@ -136,26 +136,11 @@ namespace hemicontact
                   fe_face[v].get_function_gradients(u, u_grads);
                   for (auto &g : g_values)
                     g = 0;
-                  const auto &with_normal =
-                    on_traction ? data.surface_traction_with_normal :
-                                  data.contact_traction_with_normal;
                   if (on_traction || on_contact)
-                    {
-                      if (with_normal)
-                        for (unsigned int q = 0; q < n_f; ++q)
-                          {
-                            const Tensor<1, dim> g =
-                              with_normal(fe_face.quadrature_point(q),
-                                          fe_face.normal_vector(q), time);
-                            for (unsigned int c = 0; c < dim; ++c)
-                              g_values[q](c) = g[c];
-                          }
-                      else
-                        (on_traction ? data.surface_traction :
-                                       data.contact_traction)
-                          ->vector_value_list(fe_face.get_quadrature_points(),
-                                              g_values);
-                    }
+                    data.boundary_traction(on_traction,
+                                           fe_face.get_quadrature_points(),
+                                           fe_face.get_normal_vectors(),
+                                           g_values);
                   if (on_contact)
                     fe_face[v].get_function_values(xi, xi_values);
                   double boundary_residual = 0;
