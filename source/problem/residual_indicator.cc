@@ -3,8 +3,8 @@
 
 #include <hemicontact/contact_problem.h>
 
+#include <algorithm>
 #include <cmath>
-#include <set>
 #include <vector>
 
 namespace hemicontact
@@ -71,16 +71,12 @@ namespace hemicontact
     std::vector<Tensor<1, dim>> xi_values(n_f);
     std::vector<Vector<double>> g_values(n_f, Vector<double>(dim));
 
-    const std::set<types::boundary_id> clamped_ids(
-      parameters.boundary.clamped_ids.begin(),
-      parameters.boundary.clamped_ids.end());
-    const std::set<types::boundary_id> traction_ids(
-      parameters.boundary.traction_ids.begin(),
-      parameters.boundary.traction_ids.end());
-    const std::set<types::boundary_id> contact_ids(
-      parameters.boundary.contact_ids.begin(),
-      parameters.boundary.contact_ids.end());
-    const double rho = material.density();
+    const BoundaryParameters &boundary = parameters.boundary;
+    const auto is_in = [](const std::vector<unsigned int> &ids,
+                          const types::boundary_id         id) {
+      return std::find(ids.begin(), ids.end(), id) != ids.end();
+    };
+    const double rho            = material.density();
     const double contact_weight = parameters.adaptivity.contact_weight;
 
     const auto stress = [&](const Tensor<2, dim> &grad_w,
@@ -126,11 +122,11 @@ namespace hemicontact
                   // h_F |g - sigma_h nu - xi_h|^2 with g = f2 (or f3, or 0),
                   // xi_h only on Gamma_3; nothing on Gamma_1
                   const types::boundary_id id = face->boundary_id();
-                  if (clamped_ids.count(id))
+                  if (is_in(boundary.clamped_ids, id))
                     continue;
-                  const bool on_traction = traction_ids.count(id) > 0;
+                  const bool on_traction = is_in(boundary.traction_ids, id);
                   const bool on_contact =
-                    !on_traction && contact_ids.count(id) > 0;
+                    !on_traction && is_in(boundary.contact_ids, id);
                   fe_face.reinit(cell, f);
                   fe_face[v].get_function_gradients(w, w_grads);
                   fe_face[v].get_function_gradients(u, u_grads);
