@@ -92,18 +92,7 @@ namespace hemicontact
           }
       }
 
-    // Div(2 mu eps(v) + lambda div v I)_i = mu lap v_i + (mu+lambda) d_i div v
-    const auto div_of = [&](const Tensor<3, dim> &h, const double mu,
-                            const double lambda) {
-      Tensor<1, dim> result;
-      for (int i = 0; i < dim; ++i)
-        for (int j = 0; j < dim; ++j)
-          result[i] += mu * h[i][j][j] + (mu + lambda) * h[j][i][j];
-      return result;
-    };
-    v.div_sigma =
-      div_of(hessian_w, material.mu_viscous(), material.lambda_viscous()) +
-      div_of(hessian_u, material.mu_elastic(), material.lambda_elastic());
+    v.div_sigma = material.stress_divergence(hessian_w, hessian_u);
     return v;
   }
 

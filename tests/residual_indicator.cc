@@ -39,8 +39,8 @@ subsection output
 end
 )";
 
-  /** Largest |eta_K - expected(cell)| over all cells, and how many cells
-   *  had a nonzero expected value and a hanging face. */
+  /** Print whether every eta_K equals expected(cell) within 1e-6, with the
+   *  numbers of cells with a hanging face and with a nonzero expectation. */
   template <typename Expected>
   void
   compare(const ContactProblem<2> &problem, const Expected &expected,

@@ -52,6 +52,26 @@ namespace hemicontact
       return viscous_stress(eps_w) + elastic_stress(eps_u);
     }
 
+    /**
+     * Div sigma = Div(A eps(w) + B eps(u)) from the Hessians of w and u
+     * ([component][i][j]): for each isotropic part, Div(2 mu eps(v) +
+     * lambda div v I)_i = mu lap v_i + (mu + lambda) d_i div v.
+     */
+    Tensor<1, dim>
+    stress_divergence(const Tensor<3, dim> &hessian_w,
+                      const Tensor<3, dim> &hessian_u) const
+    {
+      const auto part = [](const Tensor<3, dim> &h, const double mu,
+                           const double lambda) {
+        Tensor<1, dim> result;
+        for (int i = 0; i < dim; ++i)
+          for (int j = 0; j < dim; ++j)
+            result[i] += mu * h[i][j][j] + (mu + lambda) * h[j][i][j];
+        return result;
+      };
+      return part(hessian_w, mu_v, lambda_v) + part(hessian_u, mu_e, lambda_e);
+    }
+
     /** von Mises equivalent stress sqrt(3/2 dev(s):dev(s)) (of the 3D
      *  embedding in plane strain). */
     static double

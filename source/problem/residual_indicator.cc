@@ -9,23 +9,6 @@
 
 namespace hemicontact
 {
-  namespace
-  {
-    /** div(2 mu eps(v) + lambda tr(eps(v)) I) from the Hessians of v. */
-    template <int dim>
-    Tensor<1, dim>
-    divergence_of_stress(const Tensor<3, dim> &hessian, const double mu,
-                         const double lambda)
-    {
-      Tensor<1, dim> div;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          div[i] += mu * (hessian[i][j][j] + hessian[j][i][j]) +
-                    lambda * hessian[j][j][i];
-      return div;
-    }
-  } // namespace
-
   template <int dim>
   Vector<float>
   ContactProblem<dim>::residual_indicators() const
@@ -104,10 +87,7 @@ namespace hemicontact
             {
               Tensor<1, dim> r =
                 -rho / time_step * (w_values[q] - w_old_values[q]) +
-                divergence_of_stress(w_hessians[q], material.mu_viscous(),
-                                     material.lambda_viscous()) +
-                divergence_of_stress(u_hessians[q], material.mu_elastic(),
-                                     material.lambda_elastic());
+                material.stress_divergence(w_hessians[q], u_hessians[q]);
               for (unsigned int c = 0; c < dim; ++c)
                 r[c] += f_values[q](c);
               cell_residual += r.norm_square() * fe_values.JxW(q);
