@@ -14,6 +14,8 @@ also written to bench/results/benchmark.csv (or --output).
   /usr/bin/python3 bench/run_benchmarks.py --quick    # small levels only
   /usr/bin/python3 bench/run_benchmarks.py --only '^3d-r[234]' --repeat 3
                                     # chosen cases, fastest of 3 runs each
+  /usr/bin/python3 bench/run_benchmarks.py --levels-3d 3,4,5 --only '^3d-r[345]$'
+                                    # the 3D levels one finer (r5: 431k dofs)
 
 Needs a Release build in build/ (cmake -S . -B build -DCMAKE_BUILD_TYPE=Release).
 """
@@ -37,10 +39,10 @@ def case(name, base, refinements, end_time=1.0, ranks=1, subdivisions=None,
                 nonlinear=nonlinear or {})
 
 
-def cases(quick, skip_large, large_steps):
+def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None):
     result = []
-    levels_2d = [3, 4, 5] if quick else [4, 5, 6]
-    levels_3d = [1, 2, 3] if quick else [2, 3, 4]
+    levels_2d = levels_2d or ([3, 4, 5] if quick else [4, 5, 6])
+    levels_3d = levels_3d or ([1, 2, 3] if quick else [2, 3, 4])
     # h refined at the examples' k = 0.01 ...
     for r in levels_2d:
         result.append(case(f"2d-r{r}", "block_2d.prm", r, group="2D, fixed k"))
@@ -82,12 +84,22 @@ def cases(quick, skip_large, large_steps):
         result.append(case(f"3d-r{r}-no-split", "block_3d.prm", r,
                            solver={"stiff contact threshold": "0"},
                            group="3D, fixed k, no stiff split"))
+    # the AMG of K0 alone, not built with the contact constraints of the
+    # first Newton solve (the default until the ninth session)
+    for r in levels_3d:
+        result.append(case(f"3d-r{r}-plain-amg", "block_3d.prm", r,
+                           solver={"constrained preconditioner": "false"},
+                           group="3D, fixed k, plain AMG"))
     if not skip_large and not quick:
         # 160 x 40 x 40 hexahedra: 811,923 dofs; the first steps
         for ranks in (1, 2):
             result.append(case(f"3d-large-np{ranks}", "block_3d.prm", 3,
                                end_time=0.01 * large_steps, ranks=ranks,
                                subdivisions="20, 5, 5"))
+        result.append(case("3d-large-np1-plain-amg", "block_3d.prm", 3,
+                           end_time=0.01 * large_steps,
+                           subdivisions="20, 5, 5",
+                           solver={"constrained preconditioner": "false"}))
     return result
 
 
@@ -185,6 +197,12 @@ def main():
                         help="leave out the ~0.8M-dof 3D case")
     parser.add_argument("--large-steps", type=int, default=20,
                         help="time steps of the large case (default 20)")
+    parser.add_argument("--levels-2d", default=None,
+                        help="the three 2D refinements, e.g. 4,5,6 (default; "
+                        "3,4,5 with --quick)")
+    parser.add_argument("--levels-3d", default=None,
+                        help="the three 3D refinements, e.g. 2,3,4 (default; "
+                        "1,2,3 with --quick); 3,4,5 takes ~15 min more")
     parser.add_argument("--reuse", action="store_true",
                         help="reuse the results of cases already in --work")
     parser.add_argument("--repeat", type=int, default=1,
@@ -205,7 +223,10 @@ def main():
                  "(cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && "
                  "cmake --build build -j2)")
 
-    all_cases = cases(args.quick, args.skip_large, args.large_steps)
+    def levels(text):
+        return [int(x) for x in text.split(",")] if text else None
+    all_cases = cases(args.quick, args.skip_large, args.large_steps,
+                      levels(args.levels_2d), levels(args.levels_3d))
     if args.only:
         all_cases = [c for c in all_cases if re.search(args.only, c["name"])]
     to_run = [c for c in all_cases if not c.get("shared")]

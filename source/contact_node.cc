@@ -170,6 +170,16 @@ namespace hemicontact
     }
 
     template <int dim>
+    Tensor<2, dim>
+    free_projector(const ContactNode<dim> &node)
+    {
+      Tensor<2, dim> projector = unit_symmetric_tensor<dim>();
+      for (const Tensor<1, dim> &e : constrained_directions(node))
+        projector -= outer_product(e, e);
+      return projector;
+    }
+
+    template <int dim>
     std::vector<
       std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>>
     eliminate(const std::vector<Tensor<1, dim>> &directions)
@@ -241,6 +251,7 @@ namespace hemicontact
     const Tensor<1, dim> &);                                                   \
   template std::vector<Tensor<1, dim>> constrained_directions(                \
     const ContactNode<dim> &);                                                 \
+  template Tensor<2, dim> free_projector(const ContactNode<dim> &);           \
   template std::vector<                                                        \
     std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>>     \
   eliminate(const std::vector<Tensor<1, dim>> &);

@@ -82,12 +82,14 @@ namespace hemicontact
     amg.reset();
     step_amg.reset();
     contact_amg.reset();
+    contact_preconditioner_retired = false;
     reference_work_per_decade = 0;
     lost_seconds              = 0;
   }
 
   std::unique_ptr<TrilinosWrappers::PreconditionAMG>
-  LinearSolver::make_amg(const TrilinosWrappers::SparseMatrix &matrix)
+  LinearSolver::make_amg(const TrilinosWrappers::SparseMatrix &matrix,
+                         const std::vector<double> *          modes)
   {
     Assert(n_modes > 0, ExcMessage("set_rigid_body_modes() was not called."));
     Timer timer;
@@ -102,7 +104,9 @@ namespace hemicontact
     data.set_parameters(ml_list, unused_modes, matrix);
     ml_list.set("null space: type", "pre-computed");
     ml_list.set("null space: dimension", static_cast<int>(n_modes));
-    ml_list.set("null space: vectors", rigid_body_modes.data());
+    ml_list.set("null space: vectors",
+                modes ? const_cast<double *>(modes->data()) :
+                        rigid_body_modes.data());
 
     auto result = std::make_unique<TrilinosWrappers::PreconditionAMG>();
     result->initialize(matrix, ml_list);
@@ -188,6 +192,16 @@ namespace hemicontact
                   control);
   }
 
+  void
+  LinearSolver::rebuild_contact_preconditioner(
+    const TrilinosWrappers::SparseMatrix &contact_matrix,
+    const std::function<void(std::vector<double> &, unsigned int)> &modify_modes)
+  {
+    std::vector<double> modes(rigid_body_modes);
+    modify_modes(modes, n_modes);
+    contact_amg = make_amg(contact_matrix, &modes);
+  }
+
   template <int dim>
   unsigned int
   LinearSolver::solve_projected(const ProjectedOperator<dim> &        op,
@@ -225,15 +239,16 @@ namespace hemicontact
   bool
   LinearSolver::contact_preconditioner_is_stale() const
   {
+    // the first build of a mesh at once with 'constrained preconditioner':
+    // the AMG of K0 alone does not see the constraints
+    if (contact_preconditioner_retired)
+      return false;
     const double factor = parameters.preconditioner_rebuild_factor;
-    return factor > 0 && lost_seconds > factor * last_setup_seconds;
-  }
-
-  void
-  LinearSolver::rebuild_contact_preconditioner(
-    const TrilinosWrappers::SparseMatrix &contact_matrix)
-  {
-    contact_amg = make_amg(contact_matrix);
+    const bool   lost_too_much =
+      factor > 0 && lost_seconds > factor * last_setup_seconds;
+    if (contact_amg == nullptr)
+      return parameters.constrained_preconditioner || lost_too_much;
+    return lost_too_much;
   }
 
   template unsigned int

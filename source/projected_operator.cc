@@ -26,7 +26,8 @@ namespace hemicontact
   ProjectedOperator<dim>::add_node(
     const std::array<types::global_dof_index, dim> &dofs,
     const Tensor<2, dim> &                          projector,
-    const Tensor<2, dim> &                          stiffness)
+    const Tensor<2, dim> &                          stiffness,
+    const Tensor<2, dim> &                          amg_constrained)
   {
     NodeBlock block;
     block.dofs = dofs;
@@ -35,40 +36,80 @@ namespace hemicontact
     block.projector = projector;
     block.stiffness = projector * stiffness * projector;
     block.soft_projector = projector;
+
+    Tensor<2, dim> k0_diagonal;
+    for (unsigned int c = 0; c < dim; ++c)
+      k0_diagonal[c][c] = step_matrix->diag_element(dofs[c]);
+    // the nodal (Jacobi) inverse on the unit direction v, which the AMG
+    // then no longer sees
+    auto split_off = [&](const Tensor<1, dim> &v) {
+      const Tensor<2, dim> vv = outer_product(v, v);
+      block.soft_projector -= vv;
+      block.stiff_inverse +=
+        vv / (v * (block.stiffness * v) + v * (k0_diagonal * v));
+    };
     if (stiff_threshold > 0)
+      // the stiffness is symmetric: split it along its eigenvectors
+      for (const auto &eigenpair : eigenvectors(symmetrize(block.stiffness)))
+        if (eigenpair.first >
+            stiff_threshold *
+              (eigenpair.second * (k0_diagonal * eigenpair.second)))
+          split_off(eigenpair.second);
+    block.preconditioner_constrained = unit_symmetric_tensor<dim>() - projector;
+
+    // free directions that the AMG was built to treat as constrained
+    if (amg_constrained.norm() > 0)
       {
-        Tensor<1, dim> k0_diagonal;
-        for (unsigned int c = 0; c < dim; ++c)
-          k0_diagonal[c] = step_matrix->diag_element(dofs[c]);
-        // the stiffness is symmetric: split it along its eigenvectors
-        for (const auto &eigenpair : eigenvectors(symmetrize(block.stiffness)))
-          {
-            const double          mu = eigenpair.first;
-            const Tensor<1, dim> &v  = eigenpair.second;
-            double                d  = 0;
-            for (unsigned int c = 0; c < dim; ++c)
-              d += v[c] * v[c] * k0_diagonal[c];
-            if (mu > stiff_threshold * d)
-              {
-                const Tensor<2, dim> vv = outer_product(v, v);
-                block.soft_projector -= vv;
-                block.stiff_inverse += vv / (mu + d);
-              }
-          }
+        const Tensor<2, dim> overlap =
+          block.soft_projector * amg_constrained * block.soft_projector;
+        for (const auto &eigenpair : eigenvectors(symmetrize(overlap)))
+          if (eigenpair.first > 0.5)
+            split_off(eigenpair.second);
       }
     blocks.push_back(block);
   }
 
   template <int dim>
   void
-  ProjectedOperator<dim>::add_stiffness_to(
-    TrilinosWrappers::SparseMatrix &matrix) const
+  ProjectedOperator<dim>::add_constraint_penalty_to(
+    TrilinosWrappers::SparseMatrix &matrix, const double gamma) const
   {
     for (const NodeBlock &block : blocks)
-      for (unsigned int a = 0; a < dim; ++a)
-        for (unsigned int b = 0; b < dim; ++b)
-          if (block.stiffness[a][b] != 0)
-            matrix.add(block.dofs[a], block.dofs[b], block.stiffness[a][b]);
+      {
+        double d = 0;
+        for (unsigned int c = 0; c < dim; ++c)
+          d += step_matrix->diag_element(block.dofs[c]) / dim;
+        for (unsigned int c = 0; c < dim; ++c)
+          if (block.preconditioner_constrained[c][c] > 0)
+            matrix.add(block.dofs[c], block.dofs[c],
+                       gamma * d * block.preconditioner_constrained[c][c]);
+      }
+  }
+
+  template <int dim>
+  void
+  ProjectedOperator<dim>::project_out_preconditioner_constraints(
+    std::vector<double> &modes, const unsigned int n_modes) const
+  {
+    const std::size_t n_owned = modes.size() / n_modes;
+    for (const NodeBlock &block : blocks)
+      for (unsigned int m = 0; m < n_modes; ++m)
+        {
+          Tensor<1, dim> x;
+          for (unsigned int c = 0; c < dim; ++c)
+            x[c] = modes[m * n_owned + block.local_index[c]];
+          const Tensor<1, dim> y = x - block.preconditioner_constrained * x;
+          for (unsigned int c = 0; c < dim; ++c)
+            modes[m * n_owned + block.local_index[c]] = y[c];
+        }
+  }
+
+  template <int dim>
+  const Tensor<2, dim> &
+  ProjectedOperator<dim>::preconditioner_constraints(const unsigned int i) const
+  {
+    AssertIndexRange(i, blocks.size());
+    return blocks[i].preconditioner_constrained;
   }
 
   template <int dim>

@@ -148,6 +148,15 @@ namespace hemicontact
     std::vector<Tensor<1, dim>>
     constrained_directions(const ContactNode<dim> &node);
 
+    /**
+     * The orthogonal projector Pi_i onto the directions that the node's
+     * constrained branches leave free: I minus the sum of e e over
+     * constrained_directions().
+     */
+    template <int dim>
+    Tensor<2, dim>
+    free_projector(const ContactNode<dim> &node);
+
     /** An orthonormal basis of the plane orthogonal to @p normal. */
     template <int dim>
     std::array<Tensor<1, dim>, dim - 1>

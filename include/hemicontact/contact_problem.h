@@ -207,13 +207,20 @@ namespace hemicontact
       return parameters.linear_solver.type == "direct" ||
              parameters.linear_solver.newton_operator == "assembled";
     }
-    /** Whether newton_matrix is used (assembled, or K0 + contact for an AMG rebuild). */
+    /** Whether newton_matrix is used (assembled, or the matrix of a constrained AMG). */
     bool
     needs_newton_matrix() const
     {
       return assembles_newton_matrix() ||
+             parameters.linear_solver.constrained_preconditioner ||
              parameters.linear_solver.preconditioner_rebuild_factor > 0;
     }
+    /**
+     * The share of contact nodes with a free direction that the constrained
+     * AMG in use treats as constrained (amg_constrained_directions).
+     */
+    double
+    constrained_amg_mismatch() const;
     StepStatistics
     solve_step();
     void
@@ -359,6 +366,11 @@ namespace hemicontact
     TrilinosWrappers::MPI::Vector contact_traction;
 
     std::vector<ContactNode<dim>> contact_nodes; ///< locally relevant nodes
+    /**
+     * Per contact node, the directions the rebuilt AMG (LinearSolver's
+     * contact preconditioner) treats as constrained; valid while it exists.
+     */
+    std::vector<Tensor<2, dim>> amg_constrained_directions;
 
     LinearSolver  linear_solver;
     EnergyBalance energy;

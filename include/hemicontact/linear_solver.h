@@ -12,6 +12,7 @@
 #include <hemicontact/parameters.h>
 #include <hemicontact/projected_operator.h>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -76,23 +77,49 @@ namespace hemicontact
                     const double                          absolute_tolerance);
 
     /**
-     * Whether rebuilding the AMG hierarchy from the current contact matrix
-     * would now pay off: the Krylov time lost since the last build, against
-     * the first solve after it (iterations per decade of reduction), exceeds
-     * 'preconditioner rebuild factor' times the time of one set-up. The same
-     * answer on every rank.
+     * Whether the projected solver should (re)build its AMG hierarchy from
+     * the current constraints now: with 'constrained preconditioner', when
+     * none is built on this mesh yet; with a 'preconditioner rebuild factor',
+     * when the Krylov time lost since the last build, against the first
+     * solve after it (iterations per decade of reduction), exceeds the factor
+     * times the time of one set-up. Never after
+     * retire_contact_preconditioner() on this mesh. The same answer on every
+     * rank.
      */
     bool
     contact_preconditioner_is_stale() const;
 
     /**
      * Build the AMG hierarchy of @p contact_matrix (K0 plus the current
-     * nodal contact stiffness) to precondition the projected operator from
-     * now on, until the next mesh.
+     * nodal contact stiffness and a penalty on the constrained directions)
+     * to precondition the projected operator from now on, until the next
+     * rebuild or mesh. @p modify_modes changes the rigid-body modes (n_modes
+     * columns over the owned rows) first, e.g. to vanish on the penalised
+     * directions.
      */
     void
     rebuild_contact_preconditioner(
-      const TrilinosWrappers::SparseMatrix &contact_matrix);
+      const TrilinosWrappers::SparseMatrix &contact_matrix,
+      const std::function<void(std::vector<double> &, unsigned int)>
+        &modify_modes);
+
+    /**
+     * Drop the contact preconditioner and use the AMG of K0 until the next
+     * mesh (clear_preconditioners()): its constraints no longer match.
+     */
+    void
+    retire_contact_preconditioner()
+    {
+      contact_amg.reset();
+      contact_preconditioner_retired = true;
+    }
+
+    /** Whether a contact preconditioner (not the AMG of K0) is in use. */
+    bool
+    has_contact_preconditioner() const
+    {
+      return contact_amg != nullptr;
+    }
 
     /**
      * The AMG hierarchy of the step matrix K0 = rho/k M + A: built on the
@@ -125,7 +152,8 @@ namespace hemicontact
 
   private:
     std::unique_ptr<TrilinosWrappers::PreconditionAMG>
-    make_amg(const TrilinosWrappers::SparseMatrix &matrix);
+    make_amg(const TrilinosWrappers::SparseMatrix &matrix,
+             const std::vector<double> *          modes = nullptr);
 
     /** CG on (matrix or operator, preconditioner); SolverFailure if it stalls. */
     template <typename OperatorType, typename PreconditionerType>
@@ -142,6 +170,8 @@ namespace hemicontact
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> step_amg; ///< of K0
     /** Of K0 plus a recent nodal contact stiffness. */
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> contact_amg;
+    /** retire_contact_preconditioner() was called on this mesh. */
+    bool contact_preconditioner_retired = false;
     /** @name The cost model of rebuilding the projected solver's AMG. */
     double last_setup_seconds        = 0;
     double reference_work_per_decade = 0; ///< first solve after a build

@@ -116,6 +116,7 @@ namespace hemicontact
     /** Solve to the Newton tolerance once no node changes branch. */
     bool         exact_solve_when_settled;
     /** Rebuild the AMG when Krylov work per decade exceeds this factor. */
+    bool         constrained_preconditioner;
     double       preconditioner_rebuild_factor;
     /** Split contact directions stiffer than this times K0 off the AMG. */
     double       stiff_contact_threshold;

@@ -46,15 +46,48 @@ namespace hemicontact
 
     /**
      * Add an owned contact node: its dofs, the projector Pi_i and its
-     * stiffness L_i (both dim x dim, symmetric).
+     * stiffness L_i (both dim x dim, symmetric). @p amg_constrained is the
+     * projector onto the node's directions that the AMG in use was built to
+     * treat as constrained (add_constraint_penalty_to(); zero for the AMG of
+     * K0): those of them that are free now are inverted node by node, like
+     * the stiff ones, since the AMG cannot move them.
      */
     void
     add_node(const std::array<types::global_dof_index, dim> &dofs,
-             const Tensor<2, dim> &projector, const Tensor<2, dim> &stiffness);
+             const Tensor<2, dim> &projector, const Tensor<2, dim> &stiffness,
+             const Tensor<2, dim> &amg_constrained = Tensor<2, dim>());
 
-    /** matrix(i_a, i_b) += (Pi L Pi)_ab at every node block (owned rows). */
+    /**
+     * The projector I - Pi_i onto the constrained directions of the @p i-th
+     * added node: what an AMG built now (add_constraint_penalty_to()) treats
+     * as constrained.
+     */
+    const Tensor<2, dim> &
+    preconditioner_constraints(const unsigned int i) const;
+
+    /**
+     * matrix(i_c, i_c) += gamma d_i (I - Pi_i)_cc at every node block, d_i
+     * the mean diagonal of K0 at the node: a penalty on the constrained
+     * directions, so that an AMG built from the result treats them as the
+     * Dirichlet conditions they are for the projected operator, not as free
+     * (Neumann) ones. Only the diagonal is penalised: a point smoother cannot
+     * handle a large penalty coupling the components of a node, so this is
+     * exact for constrained directions along the coordinate axes (flat
+     * contact boundaries aligned with the mesh) and a diagonal approximation
+     * otherwise.
+     */
     void
-    add_stiffness_to(TrilinosWrappers::SparseMatrix &matrix) const;
+    add_constraint_penalty_to(TrilinosWrappers::SparseMatrix &matrix,
+                              const double                    gamma) const;
+
+    /**
+     * modes := Pi modes at every node block, for @p n_modes vectors stored
+     * column by column over the owned rows: the near-null space of the
+     * penalised matrix vanishes on the constrained directions.
+     */
+    void
+    project_out_preconditioner_constraints(std::vector<double> &modes,
+                                           const unsigned int   n_modes) const;
 
     /** v := Pi v (owned entries only; no communication). */
     void
@@ -90,9 +123,12 @@ namespace hemicontact
       Tensor<2, dim>                stiffness; ///< Pi L Pi
       /** Pi - S: Pi without the stiff directions. */
       Tensor<2, dim> soft_projector;
-      /** S (L + D)^{-1} S on the stiff directions (eigenvectors of L); zero
-       *  at nodes without stiff directions. */
+      /** The Jacobi inverse on the directions split off: the stiff ones
+       *  (eigenvectors of L) and those the AMG wrongly treats as constrained;
+       *  zero at nodes without either. */
       Tensor<2, dim> stiff_inverse;
+      /** I - Pi: what an AMG built now treats as constrained. */
+      Tensor<2, dim> preconditioner_constrained;
     };
 
     /** dst_i += T_i src_i at every node block, T_i = block.*tensor. */
