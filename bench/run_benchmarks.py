@@ -15,7 +15,9 @@ also written to bench/results/benchmark.csv (or --output).
   /usr/bin/python3 bench/run_benchmarks.py --only '^3d-r[234]' --repeat 3
                                     # chosen cases, fastest of 3 runs each
   /usr/bin/python3 bench/run_benchmarks.py --levels-3d 3,4,5 --only '^3d-r[345]$'
-                                    # the 3D levels one finer (r5: 431k dofs)
+                                    # the 3D levels one finer (r5: 421k dofs)
+  /usr/bin/python3 bench/run_benchmarks.py --amg-grid --only '^3d-r[234](-agg|$)'
+                                    # ML parameters around the defaults
 
 Needs a Release build in build/ (cmake -S . -B build -DCMAKE_BUILD_TYPE=Release).
 """
@@ -39,7 +41,8 @@ def case(name, base, refinements, end_time=1.0, ranks=1, subdivisions=None,
                 nonlinear=nonlinear or {})
 
 
-def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None):
+def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None,
+          amg_grid=False):
     result = []
     levels_2d = levels_2d or ([3, 4, 5] if quick else [4, 5, 6])
     levels_3d = levels_3d or ([1, 2, 3] if quick else [2, 3, 4])
@@ -90,6 +93,18 @@ def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None):
         result.append(case(f"3d-r{r}-plain-amg", "block_3d.prm", r,
                            solver={"constrained preconditioner": "false"},
                            group="3D, fixed k, plain AMG"))
+    if amg_grid:
+        # ML's aggregation threshold and smoother sweeps (Chebyshev degree)
+        # around the defaults 1e-4 and 2
+        for threshold, sweeps in (("1e-4", "3"), ("0.02", "1"), ("0.02", "2"),
+                                  ("0.05", "2")):
+            for r in levels_3d:
+                result.append(case(
+                    f"3d-r{r}-agg{threshold}-sw{sweeps}", "block_3d.prm", r,
+                    solver={"aggregation threshold": threshold,
+                            "smoother sweeps": sweeps},
+                    group=f"3D, fixed k, aggregation threshold {threshold}, "
+                    f"{sweeps} sweeps"))
     if not skip_large and not quick:
         # 160 x 40 x 40 hexahedra: 811,923 dofs; the first steps
         for ranks in (1, 2):
@@ -203,6 +218,9 @@ def main():
     parser.add_argument("--levels-3d", default=None,
                         help="the three 3D refinements, e.g. 2,3,4 (default; "
                         "1,2,3 with --quick); 3,4,5 takes ~15 min more")
+    parser.add_argument("--amg-grid", action="store_true",
+                        help="add the 3D levels with other ML aggregation "
+                        "thresholds and smoother sweeps (~6 min)")
     parser.add_argument("--reuse", action="store_true",
                         help="reuse the results of cases already in --work")
     parser.add_argument("--repeat", type=int, default=1,
@@ -226,7 +244,8 @@ def main():
     def levels(text):
         return [int(x) for x in text.split(",")] if text else None
     all_cases = cases(args.quick, args.skip_large, args.large_steps,
-                      levels(args.levels_2d), levels(args.levels_3d))
+                      levels(args.levels_2d), levels(args.levels_3d),
+                      args.amg_grid)
     if args.only:
         all_cases = [c for c in all_cases if re.search(args.only, c["name"])]
     to_run = [c for c in all_cases if not c.get("shared")]
@@ -267,7 +286,8 @@ def main():
                             " / ".join("%.2f" % m for m in means)))
             summary.append((f"Newton mean spread max-min ({group})",
                             max(means) - min(means)))
-    large = {r["mpi_ranks"]: r for r in rows if "large" in r["case"]}
+    large = {r["mpi_ranks"]: r for r in rows
+             if re.fullmatch(r"3d-large-np\d", r["case"])}
     if 1 in large and 2 in large:
         summary.append(("speed-up 2 ranks vs 1 (large case, s/step)",
                         large[1]["wall_per_step"] / large[2]["wall_per_step"]))

@@ -379,9 +379,9 @@ namespace hemicontact
       "Newton solve from rho/k M + A plus a penalty on the directions that "
       "the contact branches of that iteration constrain, so that it treats "
       "stuck contact nodes as the Dirichlet conditions they are (the AMG of "
-      "rho/k M + A alone treats them as free: 19 instead of 10 Krylov "
+      "rho/k M + A alone treats them as free: 14.2 instead of 8.8 Krylov "
       "iterations per solve while Gamma_3 sticks at 3D r4, 23.5 instead of "
-      "10 in the 0.8M-dof case). Once more than 5% of the contact nodes have "
+      "10 in the 0.8M-dof case; doc/performance.md). Once more than 5% of the contact nodes have "
       "freed a direction it constrains, the AMG of rho/k M + A is used "
       "instead until the next mesh. false: always the AMG of rho/k M + A.");
     prm.declare_entry(
