@@ -239,13 +239,13 @@ namespace hemicontact
   bool
   LinearSolver::contact_preconditioner_is_stale() const
   {
-    // the first build of a mesh at once with 'constrained preconditioner':
-    // the AMG of K0 alone does not see the constraints
     if (contact_preconditioner_retired)
       return false;
     const double factor = parameters.preconditioner_rebuild_factor;
     const bool   lost_too_much =
       factor > 0 && lost_seconds > factor * last_setup_seconds;
+    // with 'constrained preconditioner' the first build of a mesh comes at
+    // once: the AMG of K0 alone does not see the constraints
     if (contact_amg == nullptr)
       return parameters.constrained_preconditioner || lost_too_much;
     return lost_too_much;

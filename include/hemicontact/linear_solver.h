@@ -90,10 +90,10 @@ namespace hemicontact
     contact_preconditioner_is_stale() const;
 
     /**
-     * Build the AMG hierarchy of @p contact_matrix (K0 plus the current
-     * nodal contact stiffness and a penalty on the constrained directions)
-     * to precondition the projected operator from now on, until the next
-     * rebuild or mesh. @p modify_modes changes the rigid-body modes (n_modes
+     * Build the AMG hierarchy of @p contact_matrix (K0 plus a penalty on the
+     * constrained contact directions) to precondition the projected operator
+     * from now on, until the next rebuild, retire_contact_preconditioner() or
+     * mesh. @p modify_modes changes a copy of the rigid-body modes (n_modes
      * columns over the owned rows) first, e.g. to vanish on the penalised
      * directions.
      */
@@ -168,7 +168,7 @@ namespace hemicontact
     std::vector<double>    rigid_body_modes; ///< column-major, owned rows
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg; ///< of the last matrix
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> step_amg; ///< of K0
-    /** Of K0 plus a recent nodal contact stiffness. */
+    /** Of K0 plus a penalty on recently constrained contact directions. */
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> contact_amg;
     /** retire_contact_preconditioner() was called on this mesh. */
     bool contact_preconditioner_retired = false;

@@ -211,6 +211,7 @@ namespace hemicontact
   double
   ContactProblem<dim>::constrained_amg_mismatch() const
   {
+    AssertDimension(amg_constrained_directions.size(), contact_nodes.size());
     unsigned int counts[2] = {0, 0}; // mismatched, all
     for (unsigned int k = 0; k < contact_nodes.size(); ++k)
       if (contact_nodes[k].locally_owned)
