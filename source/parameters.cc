@@ -368,8 +368,9 @@ namespace hemicontact
     prm.declare_entry(
       "exact solve when settled", "true", Patterns::Bool(),
       "With 'eisenstat-walker': a Newton iteration in which no contact node "
-      "changed branch solves to the Newton tolerance (0.1 times 'nonlinear "
-      "solver/tolerance' times the load) instead of eta_k. With the branches "
+      "changed branch solves to half the Newton target ('nonlinear "
+      "solver/tolerance' times the load, plus its 'absolute tolerance') "
+      "instead of eta_k. With the branches "
       "settled the step is smooth (linear for a piecewise linear law), so one "
       "accurate solve usually ends it; loose solves would add 1-3 Newton "
       "iterations per step (doc/performance.md).");

@@ -30,6 +30,17 @@ namespace hemicontact
      */
     constexpr double constrained_amg_mismatch_limit = 0.05;
 
+    /**
+     * The Krylov solves of a Newton iteration never go below this fraction
+     * of the Newton tolerance's absolute target: the margin that lets a
+     * settled iteration's accurate solve end the step. Convergence is
+     * always decided on the recomputed nonsmooth residual, so the factor
+     * changes the cost, not the result. At 3D r3 / r4 and 2D r5 / r6
+     * (k = 0.01), 0.5 took 6-9% fewer Krylov iterations than 0.1 with
+     * the same Newton counts; 0.9 added Newton iterations at 3D r3.
+     */
+    constexpr double krylov_floor_fraction = 0.5;
+
     std::string
     format_number(const double x)
     {
@@ -433,7 +444,7 @@ namespace hemicontact
           lin_settings.exact_solve_when_settled && n_changed == 0;
         stats.linear_iterations += solve_newton_system(
           w, w_ghosted, mult, inexact && !settled ? forcing : 0.,
-          inexact ? 0.1 * target : 0., trial);
+          inexact ? krylov_floor_fraction * target : 0., trial);
         {
           TimerOutput::Scope t(timer, "line search");
           line_search(w, trial, residual, stats.n_damped_steps);
