@@ -207,14 +207,6 @@ namespace hemicontact
       return parameters.linear_solver.type == "direct" ||
              parameters.linear_solver.newton_operator == "assembled";
     }
-    /** Whether newton_matrix is used (assembled, or the matrix of a constrained AMG). */
-    bool
-    needs_newton_matrix() const
-    {
-      return assembles_newton_matrix() ||
-             parameters.linear_solver.constrained_preconditioner ||
-             parameters.linear_solver.preconditioner_rebuild_factor > 0;
-    }
     /**
      * The share of contact nodes with a free direction that the constrained
      * AMG in use treats as constrained (amg_constrained_directions).
@@ -354,7 +346,8 @@ namespace hemicontact
     TrilinosWrappers::SparseMatrix mass_matrix;    ///< M
     TrilinosWrappers::SparseMatrix step_matrix;    ///< K0 = rho/k M + A
     TrilinosWrappers::SparseMatrix elastic_matrix; ///< B
-    /** K0 with the contact linearisation and contact constraints. */
+    /** K0 with the contact linearisation and contact constraints (assembled
+     *  operator), or K0 plus the penalty of a constrained AMG (projected). */
     TrilinosWrappers::SparseMatrix newton_matrix;
 
     TrilinosWrappers::MPI::Vector velocity;     ///< w_n

@@ -259,7 +259,10 @@ namespace hemicontact
     const bool rebuild = linear_solver.contact_preconditioner_is_stale();
     if (!rebuild && linear_solver.has_contact_preconditioner() &&
         constrained_amg_mismatch() > constrained_amg_mismatch_limit)
-      linear_solver.retire_contact_preconditioner();
+      {
+        linear_solver.retire_contact_preconditioner();
+        newton_matrix.clear(); // its penalised copy of K0 is not needed now
+      }
     const bool amg_sees_constraints =
       !rebuild && linear_solver.has_contact_preconditioner();
     {

@@ -97,8 +97,12 @@ namespace hemicontact
     for (TrilinosWrappers::SparseMatrix *m :
          {&mass_matrix, &step_matrix, &elastic_matrix})
       m->reinit(sparsity);
-    if (needs_newton_matrix())
+    // the projected operator's constrained AMG copies K0 into newton_matrix
+    // (pattern and values) when it first needs it
+    if (assembles_newton_matrix())
       newton_matrix.reinit(sparsity);
+    else
+      newton_matrix.clear();
 
     for (TrilinosWrappers::MPI::Vector *v :
          {&velocity, &old_velocity, &displacement, &load, &step_rhs,
