@@ -240,10 +240,15 @@ namespace hemicontact
                        const std::vector<NodeMultipliers<dim>> &mult) const;
     void
     build_newton_constraints();
+    /**
+     * Move @p w towards @p trial by the backtracking step length on J_n and
+     * update @p residual (K0 w - b) to the new w: by the product K0 d that
+     * the line search needs anyway, so no extra matrix-vector product.
+     */
     double
     line_search(TrilinosWrappers::MPI::Vector &      w,
                 const TrilinosWrappers::MPI::Vector &trial,
-                const TrilinosWrappers::MPI::Vector &residual,
+                TrilinosWrappers::MPI::Vector &      residual,
                 unsigned int &                       n_reductions);
     double
     nodal_energy(const TrilinosWrappers::MPI::Vector &w) const;

@@ -155,7 +155,7 @@ namespace hemicontact
   double
   ContactProblem<dim>::line_search(TrilinosWrappers::MPI::Vector &      w,
                                    const TrilinosWrappers::MPI::Vector &trial,
-                                   const TrilinosWrappers::MPI::Vector &residual,
+                                   TrilinosWrappers::MPI::Vector &residual,
                                    unsigned int &n_reductions)
   {
     TrilinosWrappers::MPI::Vector direction(trial);
@@ -163,6 +163,7 @@ namespace hemicontact
     if (!parameters.nonlinear_solver.line_search)
       {
         w = trial;
+        compute_residual(w, residual);
         return 1.;
       }
 
@@ -186,6 +187,8 @@ namespace hemicontact
       },
       scale, parameters.nonlinear_solver.min_step_length, n_reductions);
     w.add(theta, direction);
+    // K0 is linear: R(w + theta d) = R(w) + theta K0 d
+    residual.add(theta, k_d);
     return theta;
   }
 
@@ -362,11 +365,14 @@ namespace hemicontact
     const double target =
       settings.tolerance * load_norm + settings.absolute_tolerance;
 
+    {
+      TimerOutput::Scope t(timer, "active set update");
+      compute_residual(w, residual); // then kept up to date by line_search()
+    }
     for (unsigned int iteration = 0;; ++iteration)
       {
         {
           TimerOutput::Scope t(timer, "active set update");
-          compute_residual(w, residual);
           w_ghosted        = w;
           residual_ghosted = residual;
         }
@@ -472,7 +478,7 @@ namespace hemicontact
     const TrilinosWrappers::MPI::Vector &) const;                              \
   template double ContactProblem<dim>::line_search(                           \
     TrilinosWrappers::MPI::Vector &, const TrilinosWrappers::MPI::Vector &,    \
-    const TrilinosWrappers::MPI::Vector &, unsigned int &);                    \
+    TrilinosWrappers::MPI::Vector &, unsigned int &);                    \
   template void           ContactProblem<dim>::count_branches(StepStatistics &) \
     const;                                                                     \
   template StepStatistics ContactProblem<dim>::solve_step();                   \
