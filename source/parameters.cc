@@ -370,10 +370,10 @@ namespace hemicontact
       "With 'eisenstat-walker': a Newton iteration in which no contact node "
       "changed branch solves to half the Newton target ('nonlinear "
       "solver/tolerance' times the load, plus its 'absolute tolerance') "
-      "instead of eta_k. With the branches "
-      "settled the step is smooth (linear for a piecewise linear law), so one "
-      "accurate solve usually ends it; loose solves would add 1-3 Newton "
-      "iterations per step (doc/performance.md).");
+      "instead of eta_k. With the branches settled the step is smooth "
+      "(linear for a piecewise linear law), so one accurate solve usually "
+      "ends it; loose solves would add 1-3 Newton iterations per step "
+      "(doc/performance.md).");
     prm.declare_entry(
       "constrained preconditioner", "true", Patterns::Bool(),
       "Projected operator: build the AMG hierarchy of each mesh at its first "

@@ -34,10 +34,10 @@ namespace hemicontact
      * The Krylov solves of a Newton iteration never go below this fraction
      * of the Newton tolerance's absolute target: the margin that lets a
      * settled iteration's accurate solve end the step. Convergence is
-     * always decided on the recomputed nonsmooth residual, so the factor
-     * changes the cost, not the result. At 3D r3 / r4 and 2D r5 / r6
-     * (k = 0.01), 0.5 took 6-9% fewer Krylov iterations than 0.1 with
-     * the same Newton counts; 0.9 added Newton iterations at 3D r3.
+     * always decided on the nonsmooth residual of the new iterate, so the
+     * factor changes the cost, not the result. At 3D r3 / r4 and 2D r5 / r6
+     * (k = 0.01), 0.5 took 6-9% fewer Krylov iterations than 0.1 with the
+     * same Newton counts; 0.9 added Newton iterations at 3D r3.
      */
     constexpr double krylov_floor_fraction = 0.5;
 
