@@ -55,7 +55,6 @@ namespace hemicontact
             stiff_threshold *
               (eigenpair.second * (k0_diagonal * eigenpair.second)))
           split_off(eigenpair.second);
-    block.preconditioner_constrained = unit_symmetric_tensor<dim>() - projector;
 
     // free directions that the AMG was built to treat as constrained
     if (amg_constrained.norm() > 0)
@@ -79,10 +78,11 @@ namespace hemicontact
         double d = 0;
         for (unsigned int c = 0; c < dim; ++c)
           d += step_matrix->diag_element(block.dofs[c]) / dim;
+        // the diagonal of I - Pi: the constrained share of each component
         for (unsigned int c = 0; c < dim; ++c)
-          if (block.preconditioner_constrained[c][c] > 0)
+          if (1. - block.projector[c][c] > 0)
             matrix.add(block.dofs[c], block.dofs[c],
-                       gamma * d * block.preconditioner_constrained[c][c]);
+                       gamma * d * (1. - block.projector[c][c]));
       }
   }
 
@@ -98,18 +98,18 @@ namespace hemicontact
           Tensor<1, dim> x;
           for (unsigned int c = 0; c < dim; ++c)
             x[c] = modes[m * n_owned + block.local_index[c]];
-          const Tensor<1, dim> y = x - block.preconditioner_constrained * x;
+          const Tensor<1, dim> y = block.projector * x;
           for (unsigned int c = 0; c < dim; ++c)
             modes[m * n_owned + block.local_index[c]] = y[c];
         }
   }
 
   template <int dim>
-  const Tensor<2, dim> &
+  Tensor<2, dim>
   ProjectedOperator<dim>::preconditioner_constraints(const unsigned int i) const
   {
     AssertIndexRange(i, blocks.size());
-    return blocks[i].preconditioner_constrained;
+    return unit_symmetric_tensor<dim>() - blocks[i].projector;
   }
 
   template <int dim>

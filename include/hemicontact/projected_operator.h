@@ -62,7 +62,7 @@ namespace hemicontact
      * added node: what an AMG built now (add_constraint_penalty_to()) treats
      * as constrained.
      */
-    const Tensor<2, dim> &
+    Tensor<2, dim>
     preconditioner_constraints(const unsigned int i) const;
 
     /**
@@ -127,8 +127,6 @@ namespace hemicontact
        *  (eigenvectors of L) and those the AMG wrongly treats as constrained;
        *  zero at nodes without either. */
       Tensor<2, dim> stiff_inverse;
-      /** I - Pi: what an AMG built now treats as constrained. */
-      Tensor<2, dim> preconditioner_constrained;
     };
 
     /** dst_i += T_i src_i at every node block, T_i = block.*tensor. */
