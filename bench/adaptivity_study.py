@@ -89,6 +89,17 @@ ADAPTIVE = {
     "residual-w4-f03-nocoarsen-minstart-pre50": {
         "indicator": "residual", "contact weight": 4,
         "pre-refinement steps": 50, **REFINE_ONLY},
+    # coarsening with 'state transfer = projection' (state_projection.cc)
+    "kelly-project": {"indicator": "kelly", "refine fraction": 0.5,
+                      "coarsen fraction": 0.02,
+                      "state transfer": "projection"},
+    "kelly-contact-project": {"indicator": "kelly contact",
+                              "refine fraction": 0.5,
+                              "coarsen fraction": 0.02,
+                              "state transfer": "projection"},
+    "residual-project": {"indicator": "residual", "refine fraction": 0.5,
+                         "coarsen fraction": 0.02,
+                         "state transfer": "projection"},
     # (the variants 'kelly energy', 'kelly stress' and 'indicator
     # accumulation' of doc/adaptivity.md were measured with an experimental
     # build that was not merged)

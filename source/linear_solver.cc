@@ -175,6 +175,19 @@ namespace hemicontact
   }
 
   unsigned int
+  LinearSolver::solve_mass(const TrilinosWrappers::SparseMatrix &mass,
+                           TrilinosWrappers::MPI::Vector &       x,
+                           const TrilinosWrappers::MPI::Vector & b)
+  {
+    TrilinosWrappers::PreconditionJacobi jacobi;
+    jacobi.initialize(mass);
+    SolverControl control(parameters.max_iterations,
+                          std::max(parameters.relative_tolerance * b.l2_norm(),
+                                   1e-300));
+    return run_cg(mass, jacobi, x, b, control);
+  }
+
+  unsigned int
   LinearSolver::solve_with_step_preconditioner(
     const TrilinosWrappers::SparseMatrix &step_matrix,
     TrilinosWrappers::MPI::Vector &       x,

@@ -604,15 +604,28 @@ namespace hemicontact
                       "See 'strategy'.");
     prm.declare_entry(
       "coarsen fraction", "0.05", Patterns::Double(0, 1),
-      "See 'strategy'. Each coarsening interpolates u_n and w_n onto the "
-      "coarser cells, and these errors add up over a dynamic run "
-      "(doc/adaptivity.md); 0 refines only.");
+      "See 'strategy'. Coarsened cells stay too coarse for later steps, and "
+      "these errors add up over a dynamic run (doc/adaptivity.md); 0 refines "
+      "only.");
     prm.declare_entry("max cells", "0", Patterns::Integer(0),
                       "Upper limit of the number of cells (0: none).");
     prm.declare_entry("min level", "0", Patterns::Integer(0, 30),
                       "No cell is coarsened below this refinement level.");
     prm.declare_entry("max level", "8", Patterns::Integer(0, 30),
                       "No cell is refined beyond this refinement level.");
+    prm.declare_entry(
+      "state transfer", "interpolation",
+      Patterns::Selection("interpolation|projection"),
+      "How w_n and u_n move to the new mesh. 'interpolation': deal.II's "
+      "SolutionTransfer, exact on refined and kept cells, nodal values on "
+      "coarsened ones. 'projection': the next step sees the state only "
+      "through rho/k M w_n - B u_{n+1}, u_{n+1} = u_n + k w_n; this keeps "
+      "that functional exactly on the new mesh: w_n becomes the M-projection "
+      "and u_{n+1} the a_B-projection (Ritz) of the old fields, from their "
+      "integrals over the children of each coarsened cell. Costs two linear "
+      "solves per adaptation (the mass matrix by CG with Jacobi, the elastic "
+      "matrix by the linear solver with a new AMG set-up); the same as 'interpolation' when nothing is coarsened, up to "
+      "the solver tolerance (doc/adaptivity.md).");
     prm.leave_subsection();
   }
 
@@ -627,6 +640,7 @@ namespace hemicontact
     strategy         = prm.get("strategy");
     refine_fraction  = prm.get_double("refine fraction");
     coarsen_fraction = prm.get_double("coarsen fraction");
+    state_transfer   = prm.get("state transfer");
     max_cells        = prm.get_integer("max cells");
     min_level        = prm.get_integer("min level");
     max_level        = prm.get_integer("max level");

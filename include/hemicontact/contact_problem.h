@@ -5,7 +5,9 @@
 #include <deal.II/base/mpi_remote_point_evaluation.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -191,6 +193,16 @@ namespace hemicontact
     /** @name assembly.cc */
     void
     assemble_constant_matrices();
+    /**
+     * The cell matrices of rho M, A and B at @p fe_values (reinit on the
+     * cell; values, gradients and JxW), as assemble_constant_matrices()
+     * adds them up.
+     */
+    void
+    cell_matrices(const FEValues<dim> &fe_values,
+                  FullMatrix<double> & mass,
+                  FullMatrix<double> & viscous,
+                  FullMatrix<double> & elastic) const;
     void
     assemble_load(const double time);
     void
@@ -265,6 +277,30 @@ namespace hemicontact
     check_convexity();
     TrilinosWrappers::MPI::Vector
     without_constrained(const TrilinosWrappers::MPI::Vector &v) const;
+
+    /** @name state_projection.cc */
+    /**
+     * For 'adaptivity/state transfer = projection': register with the
+     * mesh, before execute_coarsening_and_refinement(), the functionals
+     * rho M w and B u_next (tested with the parent's shape functions) of
+     * every family of cells about to be coarsened. @p w and @p u_next are
+     * ghosted and must live until project_transferred_state().
+     */
+    unsigned int
+    attach_coarsened_functionals(const TrilinosWrappers::MPI::Vector &w,
+                                 const TrilinosWrappers::MPI::Vector &u_next);
+    /**
+     * After the new mesh is set up and @p w, @p u_next are interpolated onto
+     * it (hanging-node values not yet distributed): replace them by the
+     * M-projection of the old w and the a_B-projection of the old u_next, so
+     * that rho M w and B u_next are the same functionals on the new mesh as
+     * on the old (exact where cells were refined or kept, from the attached
+     * integrals where coarsened). The caller distributes the constraints.
+     */
+    void
+    project_transferred_state(const unsigned int             handle,
+                              TrilinosWrappers::MPI::Vector &w,
+                              TrilinosWrappers::MPI::Vector &u_next);
 
     /** @name output.cc */
     void

@@ -48,6 +48,15 @@ namespace hemicontact
           const TrilinosWrappers::MPI::Vector & b);
 
     /**
+     * Solve the mass-matrix system @p mass x = b with CG and Jacobi (a mass
+     * matrix is well conditioned on any mesh) to 'relative tolerance',
+     * starting from the given x. Returns the number of iterations.
+     */
+    unsigned int
+    solve_mass(const TrilinosWrappers::SparseMatrix &mass,
+               TrilinosWrappers::MPI::Vector &       x,
+               const TrilinosWrappers::MPI::Vector & b);
+    /**
      * Solve @p matrix x = b with CG and the AMG hierarchy of the step
      * matrix (see step_preconditioner()), to @p relative_tolerance times
      * |b| (if positive; else 'relative tolerance').

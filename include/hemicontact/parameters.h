@@ -173,6 +173,7 @@ namespace hemicontact
     unsigned int max_cells;        ///< 0 = no limit
     unsigned int min_level;
     unsigned int max_level;
+    std::string  state_transfer;   ///< "interpolation" or "projection"
 
     static void declare(ParameterHandler &prm);
     void        parse(ParameterHandler &prm);

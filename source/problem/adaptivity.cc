@@ -125,17 +125,28 @@ namespace hemicontact
         }
 
     // transfer w_n and u_n (everything a step needs: w_{n-1} of the next
-    // step is w_n, branches are recomputed in its first Newton iteration)
+    // step is w_n, branches are recomputed in its first Newton iteration);
+    // 'projection' moves u_{n+1} = u_n + k w_n instead of u_n and keeps the
+    // functionals of coarsened cells (state_projection.cc)
+    const bool project = settings.state_transfer == "projection";
     TrilinosWrappers::MPI::Vector w(locally_owned_dofs, locally_relevant_dofs,
                                    mpi_communicator);
     TrilinosWrappers::MPI::Vector u(w);
     w = velocity;
     u = displacement;
+    if (project)
+      {
+        TrilinosWrappers::MPI::Vector u_next(displacement);
+        u_next.add(time_step, velocity);
+        u = u_next;
+      }
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
       transfer(dof_handler);
     tria->prepare_coarsening_and_refinement();
     transfer.prepare_for_coarsening_and_refinement(
       std::vector<const TrilinosWrappers::MPI::Vector *>{&w, &u});
+    const unsigned int functionals =
+      project ? attach_coarsened_functionals(w, u) : 0;
     tria->execute_coarsening_and_refinement();
 
     // rebuild everything that lives on the mesh
@@ -143,8 +154,14 @@ namespace hemicontact
     std::vector<TrilinosWrappers::MPI::Vector *> new_fields{&velocity,
                                                             &displacement};
     transfer.interpolate(new_fields);
+    // (before the hanging-node values are distributed: a kept cell next to
+    // a coarsened one still holds the old field there)
+    if (project)
+      project_transferred_state(functionals, velocity, displacement);
     base_constraints.distribute(velocity);
     base_constraints.distribute(displacement);
+    if (project)
+      displacement.add(-time_step, velocity); // u_n = u_{n+1} - k w_n
     old_velocity = velocity;
     if (!probe_points.empty())
       probe_cache.reinit(probe_points, *discretization.triangulation,

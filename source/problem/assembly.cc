@@ -23,46 +23,16 @@ namespace hemicontact
                             discretization.cell_quadrature(2),
                             update_values | update_gradients |
                               update_JxW_values);
-    const FEValuesExtractors::Vector v(0);
-    const unsigned int               n = fe.n_dofs_per_cell();
+    const unsigned int n = fe.n_dofs_per_cell();
     FullMatrix<double> cell_mass(n, n), cell_viscous(n, n), cell_elastic(n, n),
       cell_step(n, n);
     std::vector<types::global_dof_index> dofs(n);
-    std::vector<SymmetricTensor<2, dim>> eps(n);
-    std::vector<double>                  div(n);
-    std::vector<Tensor<1, dim>>          phi(n);
-    const double rho = material.density();
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          cell_mass    = 0;
-          cell_viscous = 0;
-          cell_elastic = 0;
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  eps[i] = fe_values[v].symmetric_gradient(i, q);
-                  div[i] = fe_values[v].divergence(i, q);
-                  phi[i] = fe_values[v].value(i, q);
-                }
-              const double JxW = fe_values.JxW(q);
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  const SymmetricTensor<2, dim> a_i =
-                    material.viscous_stress(eps[i]);
-                  const SymmetricTensor<2, dim> b_i =
-                    material.elastic_stress(eps[i]);
-                  for (unsigned int j = 0; j < n; ++j)
-                    {
-                      cell_mass(i, j) += rho * (phi[i] * phi[j]) * JxW;
-                      cell_viscous(i, j) += (a_i * eps[j]) * JxW;
-                      cell_elastic(i, j) += (b_i * eps[j]) * JxW;
-                    }
-                }
-            }
+          cell_matrices(fe_values, cell_mass, cell_viscous, cell_elastic);
           cell_step = cell_viscous;
           cell_step.add(1. / time_step, cell_mass);
           cell->get_dof_indices(dofs);
@@ -76,6 +46,43 @@ namespace hemicontact
     mass_matrix.compress(VectorOperation::add);
     step_matrix.compress(VectorOperation::add);
     elastic_matrix.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::cell_matrices(const FEValues<dim> &fe_values,
+                                     FullMatrix<double> & mass,
+                                     FullMatrix<double> & viscous,
+                                     FullMatrix<double> & elastic) const
+  {
+    const FEValuesExtractors::Vector     v(0);
+    const unsigned int                   n = fe_values.dofs_per_cell;
+    std::vector<SymmetricTensor<2, dim>> eps(n);
+    std::vector<Tensor<1, dim>>          phi(n);
+    const double                         rho = material.density();
+    mass    = 0;
+    viscous = 0;
+    elastic = 0;
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            eps[i] = fe_values[v].symmetric_gradient(i, q);
+            phi[i] = fe_values[v].value(i, q);
+          }
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const SymmetricTensor<2, dim> a_i = material.viscous_stress(eps[i]);
+            const SymmetricTensor<2, dim> b_i = material.elastic_stress(eps[i]);
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                mass(i, j) += rho * (phi[i] * phi[j]) * JxW;
+                viscous(i, j) += (a_i * eps[j]) * JxW;
+                elastic(i, j) += (b_i * eps[j]) * JxW;
+              }
+          }
+      }
   }
 
   template <int dim>
@@ -204,37 +211,17 @@ namespace hemicontact
                             discretization.cell_quadrature(2),
                             update_values | update_gradients |
                               update_JxW_values);
-    const FEValuesExtractors::Vector v(0);
-    const unsigned int               n = fe.n_dofs_per_cell();
-    FullMatrix<double>               cell_matrix(n, n);
+    const unsigned int n = fe.n_dofs_per_cell();
+    FullMatrix<double> cell_matrix(n, n), cell_mass(n, n), cell_elastic(n, n);
     std::vector<types::global_dof_index> dofs(n);
-    std::vector<SymmetricTensor<2, dim>> eps(n);
-    std::vector<Tensor<1, dim>>          phi(n);
-    const double                         rho_over_k =
-      material.density() / time_step;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          cell_matrix = 0;
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  eps[i] = fe_values[v].symmetric_gradient(i, q);
-                  phi[i] = fe_values[v].value(i, q);
-                }
-              const double JxW = fe_values.JxW(q);
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  const SymmetricTensor<2, dim> a_i =
-                    material.viscous_stress(eps[i]);
-                  for (unsigned int j = 0; j < n; ++j)
-                    cell_matrix(i, j) +=
-                      (rho_over_k * (phi[i] * phi[j]) + a_i * eps[j]) * JxW;
-                }
-            }
+          // K0 = rho/k M + A
+          cell_matrices(fe_values, cell_mass, cell_matrix, cell_elastic);
+          cell_matrix.add(1. / time_step, cell_mass);
           cell->get_dof_indices(dofs);
           newton_constraints.distribute_local_to_global(cell_matrix, dofs,
                                                         newton_matrix);
@@ -279,6 +266,9 @@ namespace hemicontact
 
 #define HEMICONTACT_INSTANTIATE(dim)                                           \
   template void ContactProblem<dim>::assemble_constant_matrices();            \
+  template void ContactProblem<dim>::cell_matrices(                           \
+    const FEValues<dim> &, FullMatrix<double> &, FullMatrix<double> &,         \
+    FullMatrix<double> &) const;                                               \
   template void ContactProblem<dim>::assemble_load(const double);             \
   template void ContactProblem<dim>::assemble_step_rhs();                     \
   template void ContactProblem<dim>::assemble_newton_system(                  \
