@@ -26,6 +26,17 @@ namespace hemicontact
     /** The parent's local vectors [rho M w; B u_next] in one array. */
     using CellFunctionals = std::vector<double>;
 
+    /** FEValues for the cell matrices (values, gradients, JxW). */
+    template <int dim>
+    FEValues<dim>
+    matrix_fe_values(const Discretization<dim> &discretization)
+    {
+      return FEValues<dim>(*discretization.mapping, *discretization.fe,
+                           discretization.cell_quadrature(2),
+                           update_values | update_gradients |
+                             update_JxW_values);
+    }
+
     /**
      * The local vectors rho M_K w and B_K u_next of one cell; @p matrices
      * fills the cell matrices (ContactProblem::cell_matrices()).
@@ -74,10 +85,7 @@ namespace hemicontact
       // called on the parent, while its children and the old dofs still exist
       const FiniteElement<dim> &fe = *discretization.fe;
       const unsigned int        n  = fe.n_dofs_per_cell();
-      FEValues<dim>  fe_values(*discretization.mapping, fe,
-                              discretization.cell_quadrature(2),
-                              update_values | update_gradients |
-                                update_JxW_values);
+      FEValues<dim> fe_values = matrix_fe_values(discretization);
       Vector<double> m_w(n), b_u(n), parent_m_w(n), parent_b_u(n);
       const typename DoFHandler<dim>::cell_iterator parent(*cell, &dof_handler);
       for (unsigned int c = 0; c < parent->n_children(); ++c)
@@ -136,10 +144,7 @@ namespace hemicontact
 
     const FiniteElement<dim> &fe = *discretization.fe;
     const unsigned int        n  = fe.n_dofs_per_cell();
-    FEValues<dim>  fe_values(*discretization.mapping, fe,
-                            discretization.cell_quadrature(2),
-                            update_values | update_gradients |
-                              update_JxW_values);
+    FEValues<dim>  fe_values = matrix_fe_values(discretization);
     const auto     matrices = [this](const FEValues<dim> &fe_values,
                                  auto &...m) { cell_matrices(fe_values, m...); };
     Vector<double> m_w_cell(n), b_u_cell(n);
