@@ -624,8 +624,9 @@ namespace hemicontact
       "and u_{n+1} the a_B-projection (Ritz) of the old fields, from their "
       "integrals over the children of each coarsened cell. Costs two linear "
       "solves per adaptation (the mass matrix by CG with Jacobi, the elastic "
-      "matrix by the linear solver with a new AMG set-up); the same as 'interpolation' when nothing is coarsened, up to "
-      "the solver tolerance (doc/adaptivity.md).");
+      "matrix by the linear solver with a new AMG set-up); the same as "
+      "'interpolation' when nothing is coarsened, up to the solver tolerance "
+      "(doc/adaptivity.md).");
     prm.leave_subsection();
   }
 

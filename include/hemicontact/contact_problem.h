@@ -8,6 +8,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -286,6 +287,17 @@ namespace hemicontact
      * every family of cells about to be coarsened. @p w and @p u_next are
      * ghosted and must live until project_transferred_state().
      */
+    /**
+     * The local vectors rho M_K w and B_K u_next of @p cell (reinits
+     * @p fe_values there), from cell_matrices().
+     */
+    void
+    cell_functionals(FEValues<dim> &                                fe_values,
+                     const typename DoFHandler<dim>::cell_iterator &cell,
+                     const TrilinosWrappers::MPI::Vector &          w,
+                     const TrilinosWrappers::MPI::Vector &          u_next,
+                     Vector<double> &                               m_w,
+                     Vector<double> &                               b_u) const;
     unsigned int
     attach_coarsened_functionals(const TrilinosWrappers::MPI::Vector &w,
                                  const TrilinosWrappers::MPI::Vector &u_next);

@@ -13,8 +13,7 @@
 // only through the functional rho/k M w_n - B u_{n+1}, u_{n+1} = u_n + k w_n
 // (see assemble_step_rhs()). On refined and kept cells interpolation moves
 // it exactly (the old fields are in the new space there); on coarsened cells
-// nodal injection does not, and the error of B u_{n+1} comes back amplified
-// in w (doc/adaptivity.md). So on coarsened cells we keep the functionals
+// nodal injection does not. So on coarsened cells we keep the functionals
 // instead: int rho w . phi and a_B(u_{n+1}, phi) for the parent's shape
 // functions phi, summed over the children before they disappear; on the new
 // mesh, M w = (rho M w)_old and B u_{n+1} = (B u_{n+1})_old are solved.
@@ -36,32 +35,28 @@ namespace hemicontact
                            update_values | update_gradients |
                              update_JxW_values);
     }
-
-    /**
-     * The local vectors rho M_K w and B_K u_next of one cell; @p matrices
-     * fills the cell matrices (ContactProblem::cell_matrices()).
-     */
-    template <int dim, typename CellMatrices>
-    void
-    local_functionals(const CellMatrices &                           matrices,
-                      FEValues<dim> &                                fe_values,
-                      const typename DoFHandler<dim>::cell_iterator &cell,
-                      const TrilinosWrappers::MPI::Vector &          w,
-                      const TrilinosWrappers::MPI::Vector &          u_next,
-                      Vector<double> &                               m_w,
-                      Vector<double> &                               b_u)
-    {
-      const unsigned int n = fe_values.dofs_per_cell;
-      FullMatrix<double> mass(n, n), viscous(n, n), elastic(n, n);
-      Vector<double>     w_cell(n), u_cell(n);
-      fe_values.reinit(cell);
-      matrices(fe_values, mass, viscous, elastic);
-      cell->get_dof_values(w, w_cell);
-      cell->get_dof_values(u_next, u_cell);
-      mass.vmult(m_w, w_cell);
-      elastic.vmult(b_u, u_cell);
-    }
   } // namespace
+
+  template <int dim>
+  void
+  ContactProblem<dim>::cell_functionals(
+    FEValues<dim> &                                fe_values,
+    const typename DoFHandler<dim>::cell_iterator &cell,
+    const TrilinosWrappers::MPI::Vector &          w,
+    const TrilinosWrappers::MPI::Vector &          u_next,
+    Vector<double> &                               m_w,
+    Vector<double> &                               b_u) const
+  {
+    const unsigned int n = fe_values.dofs_per_cell;
+    FullMatrix<double> mass(n, n), viscous(n, n), elastic(n, n);
+    Vector<double>     w_cell(n), u_cell(n);
+    fe_values.reinit(cell);
+    cell_matrices(fe_values, mass, viscous, elastic);
+    cell->get_dof_values(w, w_cell);
+    cell->get_dof_values(u_next, u_cell);
+    mass.vmult(m_w, w_cell);
+    elastic.vmult(b_u, u_cell);
+  }
 
   template <int dim>
   unsigned int
@@ -73,11 +68,8 @@ namespace hemicontact
       discretization.triangulation.get());
     AssertThrow(tria != nullptr, ExcInternalError());
 
-    const auto matrices = [this](const FEValues<dim> &fe_values, auto &...m) {
-      cell_matrices(fe_values, m...);
-    };
     // (the mesh keeps the callback until execute_coarsening_and_refinement())
-    const auto pack = [this, &w, &u_next, matrices](
+    const auto pack = [this, &w, &u_next](
                         const typename Triangulation<dim>::cell_iterator &cell,
                         const typename Triangulation<dim>::CellStatus status) {
       if (status != Triangulation<dim>::CELL_COARSEN)
@@ -90,8 +82,7 @@ namespace hemicontact
       const typename DoFHandler<dim>::cell_iterator parent(*cell, &dof_handler);
       for (unsigned int c = 0; c < parent->n_children(); ++c)
         {
-          local_functionals(matrices, fe_values, parent->child(c), w, u_next,
-                            m_w, b_u);
+          cell_functionals(fe_values, parent->child(c), w, u_next, m_w, b_u);
           // parent shape function i on child c = sum_j P_ji (child's j)
           const FullMatrix<double> &prolongation =
             fe.get_prolongation_matrix(c, parent->refinement_case());
@@ -145,8 +136,6 @@ namespace hemicontact
     const FiniteElement<dim> &fe = *discretization.fe;
     const unsigned int        n  = fe.n_dofs_per_cell();
     FEValues<dim>  fe_values = matrix_fe_values(discretization);
-    const auto     matrices = [this](const FEValues<dim> &fe_values,
-                                 auto &...m) { cell_matrices(fe_values, m...); };
     Vector<double> m_w_cell(n), b_u_cell(n);
     std::vector<types::global_dof_index> dofs(n);
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -160,8 +149,8 @@ namespace hemicontact
                 b_u_cell[i] = attached->second[n + i];
               }
           else
-            local_functionals(matrices, fe_values, cell, w_ghosted, u_ghosted,
-                              m_w_cell, b_u_cell);
+            cell_functionals(fe_values, cell, w_ghosted, u_ghosted, m_w_cell,
+                             b_u_cell);
           cell->get_dof_indices(dofs);
           base_constraints.distribute_local_to_global(m_w_cell, dofs, m_w);
           base_constraints.distribute_local_to_global(b_u_cell, dofs, b_u);
@@ -176,6 +165,14 @@ namespace hemicontact
     linear_solver.clear_preconditioners();
   }
 
+  template void ContactProblem<2>::cell_functionals(
+    FEValues<2> &, const DoFHandler<2>::cell_iterator &,
+    const TrilinosWrappers::MPI::Vector &, const TrilinosWrappers::MPI::Vector &,
+    Vector<double> &, Vector<double> &) const;
+  template void ContactProblem<3>::cell_functionals(
+    FEValues<3> &, const DoFHandler<3>::cell_iterator &,
+    const TrilinosWrappers::MPI::Vector &, const TrilinosWrappers::MPI::Vector &,
+    Vector<double> &, Vector<double> &) const;
   template unsigned int ContactProblem<2>::attach_coarsened_functionals(
     const TrilinosWrappers::MPI::Vector &, const TrilinosWrappers::MPI::Vector &);
   template unsigned int ContactProblem<3>::attach_coarsened_functionals(
