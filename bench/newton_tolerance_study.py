@@ -20,7 +20,6 @@ Needs a Release build in build/ (see bench/run_benchmarks.py).
 import argparse
 import csv
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -58,33 +57,17 @@ def max_relative_energy_defect(directory):
 def run_case(dim, level, tolerance, work, reuse):
     name = f"{dim}d-r{level}-tol{tolerance}"
     c = rb.case(name, f"block_{dim}d.prm", level,
-                nonlinear={"tolerance": tolerance})
+                nonlinear={"tolerance": tolerance}, keep_probes=True)
+    row = rb.run(c, work, reuse)
     directory = os.path.join(work, name)
-    os.makedirs(directory, exist_ok=True)
-    prm = rb.write_prm(c, directory)
-    # keep the example's probe points (write_prm clears them)
-    base = open(os.path.join(rb.ROOT, "prm", c["base"])).read()
-    probes = [line for line in base.splitlines()
-              if line.strip().startswith("set probe points")]
-    with open(prm, "a") as f:
-        f.write("subsection output\n  %s\nend\n" % probes[0].strip())
-    performance = os.path.join(directory, "performance.csv")
-    if not (reuse and os.path.exists(performance)):
-        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-                   OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-        print(f"running {name} ...", file=sys.stderr, flush=True)
-        subprocess.run([rb.EXE, prm], check=True, env=env,
-                       stdout=subprocess.DEVNULL)
-    row = rb.read_performance(performance, name)
-    steps = row["steps"]
-    return dict(case=f"{dim}D r{level}", dim=dim, level=level,
-                tolerance=tolerance, dofs=int(row["n_dofs"]),
+    return dict(case=f"{dim}D r{level}", tolerance=tolerance,
+                dofs=int(row["n_dofs"]),
                 newton_mean=row["newton_mean"],
                 newton_max=int(row["newton_max"]),
                 krylov_per_step=row["linear_per_solve"] * row["newton_mean"],
                 wall_per_step=row["wall_per_step"],
                 energy_defect=max_relative_energy_defect(directory),
-                probes=probe_velocities(directory), steps=steps)
+                probes=probe_velocities(directory))
 
 
 def main():

@@ -34,11 +34,12 @@ EXE = os.path.join(ROOT, "build", "hemicontact")
 
 
 def case(name, base, refinements, end_time=1.0, ranks=1, subdivisions=None,
-         solver=None, time_step=None, group=None, nonlinear=None):
+         solver=None, time_step=None, group=None, nonlinear=None,
+         keep_probes=False):
     return dict(name=name, base=base, refinements=refinements,
                 end_time=end_time, ranks=ranks, subdivisions=subdivisions,
                 solver=solver or {}, time_step=time_step, group=group,
-                nonlinear=nonlinear or {})
+                nonlinear=nonlinear or {}, keep_probes=keep_probes)
 
 
 def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None,
@@ -136,9 +137,11 @@ def write_prm(c, directory):
     for key, value in c["solver"].items():
         lines.append("  set %s = %s\n" % (key, value))
     lines.append("end\nsubsection output\n  set directory = %s\n"
-                 "  set vtu interval = 0\n  set probe points =\n"
-                 "  set terminal = quiet\n  set timing summary = false\n"
-                 "  set performance summary = true\nend\n" % directory)
+                 "  set vtu interval = 0\n" % directory)
+    if not c["keep_probes"]:
+        lines.append("  set probe points =\n")
+    lines.append("  set terminal = quiet\n  set timing summary = false\n"
+                 "  set performance summary = true\nend\n")
     path = os.path.join(directory, "run.prm")
     with open(path, "w") as f:
         f.write("".join(lines))
