@@ -1,10 +1,11 @@
 #include <deal.II/base/mpi.h>
 
 #include <hemicontact/contact_problem.h>
-
-#include <tuple>
+#include <hemicontact/generalized_eigenvalue.h>
 #include <hemicontact/input_error.h>
 #include <hemicontact/tresca_friction.h>
+
+#include <tuple>
 
 #include <cmath>
 #include <iostream>
@@ -13,6 +14,18 @@
 
 namespace hemicontact
 {
+  namespace
+  {
+    /**
+     * The convexity estimate stops once its relative residual is below
+     * this: the eigenvalue is then accurate to about its square. On the
+     * examples (3D r2-r4, 2D r6, the 812k-dof box) it agreed with a solve to
+     * 1e-7 within 1.5e-7 relative, in 25-90 iterations.
+     */
+    constexpr double convexity_residual_tolerance = 1e-4;
+    constexpr unsigned int convexity_max_iterations = 300;
+  } // namespace
+
   template <int dim>
   TrilinosWrappers::MPI::Vector
   ContactProblem<dim>::without_constrained(
@@ -97,11 +110,8 @@ namespace hemicontact
       }
     TimerOutput::Scope t(timer, "convexity check");
 
-    // power iteration for the largest mu of N x = mu K0 x, with the normal
-    // boundary mass N = sum_i m_i nu_i nu_i^T; J_n is strongly convex iff
-    // alpha < 1/mu_max
-    TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator),
-      y(x), z(x), tmp(x);
+    // the largest mu of N x = mu K0 x, with the normal boundary mass
+    // N = sum_i m_i nu_i nu_i^T: J_n is strongly convex iff alpha < 1/mu_max
     const auto apply_n = [&](const TrilinosWrappers::MPI::Vector &in,
                              TrilinosWrappers::MPI::Vector &      out) {
       out = 0;
@@ -115,35 +125,46 @@ namespace hemicontact
               out[node.dofs[c]] = node.mass * vn * node.normal[c];
           }
       out.compress(VectorOperation::insert);
+      base_constraints.set_zero(out);
     };
+    const auto apply_k = [&](const TrilinosWrappers::MPI::Vector &in,
+                             TrilinosWrappers::MPI::Vector &      out) {
+      step_matrix.vmult(out, in);
+      base_constraints.set_zero(out);
+    };
+    // preconditioned by one cycle of the AMG of K0, which the steps reuse
+    const TrilinosWrappers::PreconditionAMG &amg =
+      linear_solver.step_preconditioner(step_matrix);
+    const auto precondition = [&](const TrilinosWrappers::MPI::Vector &in,
+                                  TrilinosWrappers::MPI::Vector &      out) {
+      amg.vmult(out, in);
+      base_constraints.set_zero(out);
+    };
+    // start from the normal field on Gamma_3
+    TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);
     for (const ContactNode<dim> &node : contact_nodes)
       if (node.locally_owned)
         for (unsigned int c = 0; c < dim; ++c)
           x[node.dofs[c]] = node.normal[c];
     x.compress(VectorOperation::insert);
-
-    double mu = 0;
-    for (unsigned int it = 0; it < 30; ++it)
-      {
-        apply_n(x, y);
-        // warm start: near an eigenvector x, z = mu x; an estimate needs
-        // only a loose solve (the Rayleigh quotient error is its square)
-        z = x;
-        z *= mu;
-        linear_solver.solve_with_step_preconditioner(step_matrix, z, y, 1e-6);
-        apply_n(z, tmp);
-        const double znz = z * tmp;
-        step_matrix.vmult(tmp, z);
-        const double zkz    = z * tmp;
-        const double mu_new = znz / zkz;
-        x                   = z;
-        x /= x.l2_norm();
-        const bool settled = std::abs(mu_new - mu) <= 1e-4 * mu_new;
-        mu                 = mu_new;
-        if (settled)
-          break;
-      }
-    convexity_bound = 1. / mu;
+    base_constraints.set_zero(x);
+    const EigenvalueEstimate estimate =
+      largest_generalized_eigenvalue(apply_n, apply_k, precondition, x,
+                                     convexity_residual_tolerance,
+                                     convexity_max_iterations);
+    convexity_bound = estimate.value > 0 ?
+                        1. / estimate.value :
+                        std::numeric_limits<double>::infinity();
+    if (!estimate.converged &&
+        Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      std::cerr << "hemicontact: warning: the convexity estimate did not "
+                   "converge in "
+                << convexity_max_iterations
+                << " iterations (relative residual "
+                << estimate.relative_residual
+                << "); the bound it reports may be too large, i.e. the step "
+                   "may be less convex than stated."
+                << std::endl;
 
     if (alpha >= convexity_bound)
       {
