@@ -35,6 +35,9 @@ namespace hemicontact
    * the power iteration on K^{-1} N, it converges like a Krylov method, at
    * one application of T, K and N per iteration.
    *
+   * If @p x has no K-norm, or N does not see it (x.N x = 0), it returns
+   * value 0, not converged, after no iteration.
+   *
    * @p apply_n(in, out), @p apply_k(in, out) and @p precondition(in, out)
    * write into @p out. @p x is the start vector on entry and the Ritz vector
    * (K-normalised) on return. Stops when the relative residual is at most
@@ -62,9 +65,13 @@ namespace hemicontact
     };
     apply_k(x, kx);
     apply_n(x, nx);
+    // a zero start (e.g. every dof it touches constrained), or one that
+    // N does not see: no estimate, value 0 and not converged
+    if (!(x * kx > 0))
+      return result;
     normalise();
     result.value = x * nx;
-    if (!(result.value > 0)) // x sees nothing of N: no estimate
+    if (!(result.value > 0))
       return result;
 
     bool have_p = false;

@@ -152,10 +152,12 @@ namespace hemicontact
       largest_generalized_eigenvalue(apply_n, apply_k, precondition, x,
                                      convexity_residual_tolerance,
                                      convexity_max_iterations);
+    // value 0: the normal field has no free dof on Gamma_3, so N vanishes
+    // on the free dofs and every alpha is admissible
     convexity_bound = estimate.value > 0 ?
                         1. / estimate.value :
                         std::numeric_limits<double>::infinity();
-    if (!estimate.converged &&
+    if (estimate.value > 0 && !estimate.converged &&
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       std::cerr << "hemicontact: warning: the convexity estimate did not "
                    "converge in "
