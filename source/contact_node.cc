@@ -1,7 +1,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <hemicontact/contact_node.h>
-#include <hemicontact/tresca_friction.h>
+#include <hemicontact/friction_disk.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,8 @@ namespace hemicontact
     template <int dim>
     NodeMultipliers<dim>
     multipliers(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
-                const Tensor<1, dim> &force, const NormalLaw &law)
+                const Tensor<1, dim> &force, const NormalLaw &law,
+                const FrictionLaw &friction)
     {
       NodeMultipliers<dim> m;
       const Tensor<1, dim> &nu = node.normal;
@@ -22,6 +23,10 @@ namespace hemicontact
       const Tensor<1, dim> traction = force / node.mass;
       m.s      = traction * nu - law.remainder(m.w_normal);
       m.lambda = traction - (traction * nu) * nu;
+      const double slip = m.w_tangential.norm();
+      if (slip > 0)
+        m.lambda -= friction.remainder(node.friction_bound, slip) / slip *
+                    m.w_tangential;
       return m;
     }
 
@@ -57,7 +62,7 @@ namespace hemicontact
     tangential_branch(const ContactNode<dim> &node,
                       const NodeMultipliers<dim> &m)
     {
-      return TrescaFriction::sticks(m.lambda + node.c * m.w_tangential,
+      return FrictionDisk::sticks(m.lambda + node.c * m.w_tangential,
                                     node.friction_bound) ?
                TangentialBranch::stick :
                TangentialBranch::slip;
@@ -78,14 +83,14 @@ namespace hemicontact
                                const NodeMultipliers<dim> &m)
     {
       return m.lambda -
-             TrescaFriction::project(m.lambda + node.c * m.w_tangential,
+             FrictionDisk::project(m.lambda + node.c * m.w_tangential,
                                      node.friction_bound);
     }
 
     template <int dim>
     NodeLinearization<dim>
     linearize(const ContactNode<dim> &node, const NodeMultipliers<dim> &m,
-              const NormalLaw &law)
+              const NormalLaw &law, const FrictionLaw &friction)
     {
       NodeLinearization<dim> lin;
       const Tensor<1, dim> &nu = node.normal;
@@ -115,6 +120,20 @@ namespace hemicontact
           lin.matrix += tangent;
           lin.force += node.mass * node.friction_bound * d +
                        tangent * m.w_tangential;
+
+          // the law's remainder r(s) e, s = |w_tau|, e = w_tau/s (d while
+          // w_tau = 0): force m_i r(s) e, Hessian
+          // m_i [r'(s) e e + r(s)/s (I - nu nu - e e)]
+          const double   slip = m.w_tangential.norm();
+          const Tensor<1, dim> e = slip > 0 ? m.w_tangential / slip : d;
+          const double   bound = node.friction_bound;
+          Tensor<2, dim> across = unit_symmetric_tensor<dim>();
+          across -= outer_product(nu, nu) + outer_product(e, e);
+          lin.matrix +=
+            node.mass *
+            (friction.remainder_derivative(bound, slip) * outer_product(e, e) +
+             friction.remainder_over_slip(bound, slip) * across);
+          lin.force += node.mass * friction.remainder(bound, slip) * e;
         }
       return lin;
     }
@@ -122,12 +141,25 @@ namespace hemicontact
     template <int dim>
     double
     energy(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
-           const NormalLaw &law)
+           const NormalLaw &law, const FrictionLaw &friction)
     {
       const double         wn = velocity * node.normal;
       const Tensor<1, dim> wt = velocity - wn * node.normal;
       return node.mass * (law.potential(wn) +
-                          TrescaFriction::potential(node.friction_bound, wt));
+                          friction.potential(node.friction_bound, wt.norm()));
+    }
+
+    template <int dim>
+    std::pair<double, double>
+    contact_work(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
+                 const NormalLaw &law, const FrictionLaw &friction)
+    {
+      const double wn   = velocity * node.normal;
+      const double slip = (velocity - wn * node.normal).norm();
+      return {node.mass * law.subgradient(wn) * wn,
+              slip > 0 ? node.mass *
+                           friction.response(node.friction_bound, slip) * slip :
+                         0.};
     }
 
     template <int dim>
@@ -231,7 +263,8 @@ namespace hemicontact
   template NodeMultipliers<dim> multipliers(const ContactNode<dim> &,         \
                                             const Tensor<1, dim> &,            \
                                             const Tensor<1, dim> &,            \
-                                            const NormalLaw &);                \
+                                            const NormalLaw &,                 \
+                                            const FrictionLaw &);              \
   template NormalBranch         normal_branch(const ContactNode<dim> &,       \
                                       const NodeMultipliers<dim> &,            \
                                       const NormalLaw &);                      \
@@ -244,9 +277,13 @@ namespace hemicontact
     const ContactNode<dim> &, const NodeMultipliers<dim> &);                   \
   template NodeLinearization<dim> linearize(const ContactNode<dim> &,         \
                                             const NodeMultipliers<dim> &,      \
-                                            const NormalLaw &);                \
+                                            const NormalLaw &,                 \
+                                            const FrictionLaw &);              \
   template double energy(const ContactNode<dim> &, const Tensor<1, dim> &,    \
-                         const NormalLaw &);                                   \
+                         const NormalLaw &, const FrictionLaw &);              \
+  template std::pair<double, double> contact_work(                            \
+    const ContactNode<dim> &, const Tensor<1, dim> &, const NormalLaw &,       \
+    const FrictionLaw &);                                                      \
   template std::array<Tensor<1, dim>, dim - 1> tangent_basis(                 \
     const Tensor<1, dim> &);                                                   \
   template std::vector<Tensor<1, dim>> constrained_directions(                \

@@ -235,4 +235,19 @@ namespace hemicontact
                          const std::string &                  parameter_name)
     : root(Parser(text, variables, constants, parameter_name).parse())
   {}
+  bool
+  Expression::uses_variable(const unsigned int index) const
+  {
+    std::vector<const Node *> stack = {root.get()};
+    while (!stack.empty())
+      {
+        const Node *node = stack.back();
+        stack.pop_back();
+        if (node->kind == Node::variable && node->index == index)
+          return true;
+        for (const auto &arg : node->args)
+          stack.push_back(arg.get());
+      }
+    return false;
+  }
 } // namespace hemicontact

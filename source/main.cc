@@ -11,7 +11,7 @@
 #include <hemicontact/contact_problem.h>
 #include <hemicontact/convergence_study.h>
 #include <hemicontact/input_error.h>
-#include <hemicontact/normal_law.h>
+#include <hemicontact/contact_laws.h>
 #include <hemicontact/parameters.h>
 
 #include <iostream>
@@ -27,7 +27,7 @@ namespace
   {
     std::cout
       << "hemicontact - dynamic viscoelastic contact with a nonmonotone normal\n"
-         "damped response and Tresca friction (Han & Han 2019, Problem 4.4).\n\n"
+         "damped response and friction (Han & Han 2019, Problem 4.4).\n\n"
          "Usage:\n"
          "  hemicontact FILE.prm            run the problem described in FILE\n"
          "  mpirun -np N hemicontact FILE   the same on N MPI ranks\n"
@@ -80,11 +80,11 @@ namespace
           run_convergence_study<3>(parameters, prm, MPI_COMM_WORLD);
         return 0;
       }
-    std::unique_ptr<NormalLaw> law = create_normal_law(prm);
+    ContactLaws laws = create_contact_laws(prm);
     if (parameters.dimension == 2)
-      ContactProblem<2>(parameters, std::move(law), MPI_COMM_WORLD).run();
+      ContactProblem<2>(parameters, std::move(laws), MPI_COMM_WORLD).run();
     else
-      ContactProblem<3>(parameters, std::move(law), MPI_COMM_WORLD).run();
+      ContactProblem<3>(parameters, std::move(laws), MPI_COMM_WORLD).run();
     return 0;
   }
 } // namespace

@@ -39,9 +39,11 @@ namespace hemicontact
   } // namespace
 
   template <int dim>
-  ManufacturedSolution<dim>::ManufacturedSolution(const Parameters &parameters,
-                                                  const NormalLaw & law)
+  ManufacturedSolution<dim>::ManufacturedSolution(const Parameters &  parameters,
+                                                  const NormalLaw &   law,
+                                                  const FrictionLaw &friction)
     : law(law)
+    , friction(friction)
     , material(parameters.material)
   {
     const auto constants = parse_constants(parameters.data.constants);
@@ -53,9 +55,8 @@ namespace hemicontact
       "manufactured solution/normal multiplier");
     tangential_multiplier = parse_vector(m.tangential_multiplier, dim,
                                          constants, "tangential multiplier");
-    friction_bound = parse_function<dim>(parameters.data.friction_bound, 1,
-                                         parameters.data.constants,
-                                         "friction bound");
+    friction_bound = std::make_shared<FrictionBound<dim>>(
+      parameters.data.friction_bound, parameters.data.constants);
   }
 
   template <int dim>
@@ -159,7 +160,7 @@ namespace hemicontact
     const double         w_n    = v.w * normal;
     const Tensor<1, dim> w_t    = v.w - w_n * normal;
     const double         scale  = 1e-13 * (1 + v.w.norm());
-    const double         bound  = friction_bound->value(p);
+    const double         bound  = friction_bound->value(p, t, v.u * normal);
 
     std::vector<double> at(dim + 1);
     for (int i = 0; i < dim; ++i)
@@ -170,7 +171,7 @@ namespace hemicontact
     const double xi_n = std::abs(w_n) <= scale ?
                           normal_multiplier->evaluate(at) :
                           law.subgradient(w_n);
-    // xi_tau in F_b d|w_tau|: the given multiplier where w_tau = 0
+    // xi_tau in dphi(w_tau): the given multiplier where w_tau = 0
     Tensor<1, dim> xi_t;
     if (w_t.norm() <= scale)
       {
@@ -179,7 +180,7 @@ namespace hemicontact
         xi_t -= (xi_t * normal) * normal;
       }
     else
-      xi_t = bound * w_t / w_t.norm();
+      xi_t = friction.response(bound, w_t.norm()) * w_t / w_t.norm();
 
     return stress(v) * normal + xi_n * normal + xi_t;
   }
@@ -230,20 +231,7 @@ namespace hemicontact
     data.initial_velocity     = std::make_unique<Field>(*this, 2);
     data.surface_traction     = std::make_unique<Functions::ZeroFunction<dim>>(dim);
     data.contact_traction     = std::make_unique<Functions::ZeroFunction<dim>>(dim);
-    // the friction bound of the parameter file, shared with this object
-    struct Bound : public Function<dim>
-    {
-      explicit Bound(const Function<dim> &f)
-        : f(f)
-      {}
-      double
-      value(const Point<dim> &p, const unsigned int) const override
-      {
-        return f.value(p);
-      }
-      const Function<dim> &f;
-    };
-    data.friction_bound = std::make_unique<Bound>(*friction_bound);
+    data.friction_bound = friction_bound;
     data.surface_traction_with_normal =
       [this](const Point<dim> &p, const Tensor<1, dim> &n, double t) {
         return surface_traction(p, n, t);

@@ -245,8 +245,13 @@ namespace hemicontact
                       "(zero in physical runs; used by manufactured "
                       "solutions)." + vec_help);
     prm.declare_entry("friction bound", "0", Patterns::Anything(),
-                      "Tresca friction bound F_b(x) >= 0 on Gamma_3 (scalar "
-                      "expression in x, y, z).");
+                      "Friction bound F_b >= 0 on Gamma_3: the radius of the "
+                      "friction disk (the static bound of a weakening law). A "
+                      "scalar expression in x, y, z, t and u_nu, the normal "
+                      "displacement at the node (positive into the "
+                      "foundation), evaluated at the start of each step with "
+                      "the known u_n; e.g. mu*cp*pos(u_nu) for normal "
+                      "compliance with friction.");
     prm.declare_entry("initial displacement", "0", Patterns::Anything(),
                       "u0(x); must vanish on Gamma_1." + vec_help);
     prm.declare_entry("initial velocity", "0", Patterns::Anything(),

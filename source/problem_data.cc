@@ -135,7 +135,7 @@ namespace hemicontact
     time = t;
     for (Function<dim> *f :
          {body_force.get(), surface_traction.get(), contact_traction.get(),
-          friction_bound.get(), initial_displacement.get(),
+          initial_displacement.get(),
           initial_velocity.get()})
       if (f != nullptr)
         f->set_time(t);
@@ -178,7 +178,7 @@ namespace hemicontact
     result.contact_traction =
       parse_function<dim>(data.contact_traction, dim, c, "contact traction");
     result.friction_bound =
-      parse_function<dim>(data.friction_bound, 1, c, "friction bound");
+      std::make_shared<FrictionBound<dim>>(data.friction_bound, c);
     result.initial_displacement = parse_function<dim>(
       data.initial_displacement, dim, c, "initial displacement");
     result.initial_velocity =

@@ -2,6 +2,7 @@
 // string) and turn deal.II's exceptions into one-paragraph InputErrors.
 #include <deal.II/base/exceptions.h>
 
+#include <hemicontact/friction_law.h>
 #include <hemicontact/input_error.h>
 #include <hemicontact/normal_law.h>
 #include <hemicontact/parameters.h>
@@ -17,6 +18,7 @@ namespace hemicontact
   {
     Parameters::declare(prm);
     declare_normal_law_parameters(prm);
+    declare_friction_law_parameters(prm);
   }
 
   namespace

@@ -64,7 +64,7 @@ end
 )";
   ParameterHandler                 prm;
   const Parameters parameters = read_parameters_from_string(prm, text);
-  ContactProblem<2> problem(parameters, create_normal_law(prm), MPI_COMM_WORLD);
+  ContactProblem<2> problem(parameters, create_contact_laws(prm), MPI_COMM_WORLD);
   problem.setup();
 
   const auto &tria = problem.get_dof_handler().get_triangulation();

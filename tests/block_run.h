@@ -29,7 +29,7 @@ run_block(const std::string &file, const std::string &settings)
        << settings;
   dealii::ParameterHandler prm;
   const Parameters parameters = read_parameters_from_string(prm, text.str());
-  ContactProblem<dim> problem(parameters, create_normal_law(prm),
+  ContactProblem<dim> problem(parameters, create_contact_laws(prm),
                               MPI_COMM_WORLD);
   problem.setup();
   BlockRun result;

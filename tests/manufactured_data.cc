@@ -4,6 +4,7 @@
 // so w, dw/dt, grad u, grad w and Div sigma are written out by hand below.
 // Checks f0, f2 = sigma nu and the three cases of f3 (w_nu > 0: damped
 // response; w_nu < 0: none; w_nu = 0: the given multiplier), to 1e-12.
+#include <hemicontact/friction_laws/tresca.h>
 #include <hemicontact/manufactured_solution.h>
 #include <hemicontact/normal_laws/exponential_law.h>
 #include <hemicontact/parameters.h>
@@ -30,7 +31,8 @@ main()
     "  set normal multiplier = 0.25 + 0*x\n"
     "  set tangential multiplier = 0.3; 0.1\nend\n");
   const ExponentialLaw          law(1., 0.5, 2.);
-  const ManufacturedSolution<2> m(p, law);
+  const TrescaLaw               tresca;
+  const ManufacturedSolution<2> m(p, law, tresca);
 
   double err_f0 = 0, err_f2 = 0, err_u = 0;
   for (const double t : {0.3, 0.9})

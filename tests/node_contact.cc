@@ -9,7 +9,8 @@
 #include <hemicontact/contact_node.h>
 #include <hemicontact/normal_laws/exponential_law.h>
 #include <hemicontact/normal_laws/linear_damping_law.h>
-#include <hemicontact/tresca_friction.h>
+#include <hemicontact/friction_disk.h>
+#include <hemicontact/friction_laws/tresca.h>
 
 #include <cmath>
 #include <iomanip>
@@ -126,7 +127,7 @@ main()
   // the split of velocity and force into normal and tangential parts
   {
     const Tensor<1, 2>       w({0.3, 0.1}), force({0.2, -0.5});
-    const NodeMultipliers<2> m = NodeContact::multipliers(node, w, force, law);
+    const NodeMultipliers<2> m = NodeContact::multipliers(node, w, force, law, TrescaLaw());
     const double recombined =
       (node.mass * ((m.s + law.remainder(m.w_normal)) * node.normal + m.lambda) -
        force)
@@ -145,11 +146,11 @@ main()
   {
     const Tensor<1, 3> inside({0.1, 0.1, 0}), outside({0.3, 0.4, 0});
     std::cout << "projection keeps points of the disk: "
-              << ((TrescaFriction::project(inside, 0.3) - inside).norm() == 0 ?
+              << ((FrictionDisk::project(inside, 0.3) - inside).norm() == 0 ?
                     "yes" :
                     "no")
               << "\nprojection of (0.3, 0.4) onto radius 0.3: "
-              << TrescaFriction::project(outside, 0.3) << "\n";
+              << FrictionDisk::project(outside, 0.3) << "\n";
   }
 
   // elimination: every allowed velocity satisfies the constraints
@@ -202,7 +203,7 @@ main()
     NodeMultipliers<3> m;
     m.lambda       = n3.friction_bound * t;
     m.w_tangential = 0.05 * t;
-    const NodeLinearization<3> lin = NodeContact::linearize(n3, m, law);
+    const NodeLinearization<3> lin = NodeContact::linearize(n3, m, law, TrescaLaw());
     const auto gradient = [&](const Tensor<1, 3> &wt) {
       return n3.mass * n3.friction_bound * wt / wt.norm();
     };
@@ -235,7 +236,7 @@ main()
     n2.normal_branch  = NormalBranch::damped;
     NodeMultipliers<2> m;
     m.w_normal                       = 0.1;
-    const NodeLinearization<2> lin   = NodeContact::linearize(n2, m, law);
+    const NodeLinearization<2> lin   = NodeContact::linearize(n2, m, law, TrescaLaw());
     const double               expect = n2.mass * (law.jump() + law.remainder(0.1));
     std::cout << "damped force along the normal: "
               << (std::abs(lin.force * n2.normal - expect) < 1e-14 ? "yes" : "no")

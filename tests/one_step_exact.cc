@@ -90,7 +90,7 @@ namespace
     ParameterHandler prm;
     const Parameters parameters =
       read_parameters_from_string(prm, parameter_file(dim, f0, f2, f3));
-    ContactProblem<dim> problem(parameters, create_normal_law(prm),
+    ContactProblem<dim> problem(parameters, create_contact_laws(prm),
                                 MPI_COMM_WORLD);
     problem.setup();
     const StepStatistics stats = problem.advance();

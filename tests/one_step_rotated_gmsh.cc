@@ -106,7 +106,7 @@ namespace
     ParameterHandler prm;
     const Parameters parameters =
       read_parameters_from_string(prm, parameter_file(f0, f2, f3));
-    ContactProblem<2> problem(parameters, create_normal_law(prm),
+    ContactProblem<2> problem(parameters, create_contact_laws(prm),
                               MPI_COMM_WORLD);
     problem.setup();
     const StepStatistics stats = problem.advance();

@@ -83,7 +83,7 @@ end
     ParameterHandler prm;
     const Parameters parameters = read_parameters_from_string(prm, text);
     auto             problem    = std::make_unique<ContactProblem<2>>(
-      parameters, create_normal_law(prm), MPI_COMM_WORLD);
+      parameters, create_contact_laws(prm), MPI_COMM_WORLD);
     problem->setup();
     return problem;
   }

@@ -132,7 +132,7 @@ end
       prm,
       settings(transfer, "sin(3*x)*(1+y*y); x*cos(2*y)", "x*exp(y)/4; sin(x)",
                "0"));
-    ContactProblem<2> problem(parameters, create_normal_law(prm),
+    ContactProblem<2> problem(parameters, create_contact_laws(prm),
                               MPI_COMM_WORLD);
     problem.setup();
     const std::vector<double> before = functionals(problem, parameters);
@@ -182,7 +182,7 @@ end
     ParameterHandler  prm;
     const Parameters  parameters = read_parameters_from_string(
       prm, settings("projection", "x; 2*x + x*y", "x/2; -x", "0.3"));
-    ContactProblem<2> problem(parameters, create_normal_law(prm),
+    ContactProblem<2> problem(parameters, create_contact_laws(prm),
                               MPI_COMM_WORLD);
     problem.setup();
     double max_dw = 0, max_du = 0;

@@ -4,9 +4,11 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
+#include <hemicontact/friction_law.h>
 #include <hemicontact/normal_law.h>
 
 #include <array>
+#include <utility>
 #include <vector>
 
 namespace hemicontact
@@ -50,9 +52,9 @@ namespace hemicontact
 
   /**
    * The node-wise multipliers at an iterate: from the nodal contact force
-   * G = m_i (s nu + lambda + p(w_nu) nu) = -(K w - b)_i, the normal
-   * multiplier s (convex part), the tangential lambda, and the velocity in
-   * normal/tangential components.
+   * G = m_i (s nu + p(w_nu) nu + lambda + r(|w_tau|) w_tau/|w_tau|)
+   * = -(K w - b)_i, the multipliers of the convex parts (normal s,
+   * tangential lambda), and the velocity in normal/tangential components.
    */
   template <int dim>
   struct NodeMultipliers
@@ -74,11 +76,15 @@ namespace hemicontact
   /** The pure, node-wise pieces of the active-set method. */
   namespace NodeContact
   {
-    /** Split velocity and contact force G into normal/tangential parts. */
+    /**
+     * Split velocity and contact force G into normal/tangential parts and
+     * take off the laws' remainders, leaving the convex parts' multipliers.
+     */
     template <int dim>
     NodeMultipliers<dim>
     multipliers(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
-                const Tensor<1, dim> &force, const NormalLaw &law);
+                const Tensor<1, dim> &force, const NormalLaw &law,
+                const FrictionLaw &friction);
 
     /** Branch from s + c w_nu against [0, a]. */
     template <int dim>
@@ -125,19 +131,33 @@ namespace hemicontact
     /**
      * Linearised nodal force m_i (traction) of the free branches (damped,
      * slip) about the current iterate; zero for constrained branches. The
-     * slip tangent is the condensed semismooth-Newton tangent, which at a
-     * solution is the Hessian of F_b |w_tau|.
+     * slip tangent is the condensed semismooth-Newton tangent of the
+     * friction disk, which at a solution is the Hessian of F_b |w_tau|,
+     * plus the Hessian of the friction law's remainder R(|w_tau|).
      */
     template <int dim>
     NodeLinearization<dim>
     linearize(const ContactNode<dim> &node, const NodeMultipliers<dim> &m,
-              const NormalLaw &law);
+              const NormalLaw &law, const FrictionLaw &friction);
 
-    /** The nodal part of J_n: m_i [ j(w_nu) + F_b |w_tau| ]. */
+    /**
+     * The nodal part of J_n: m_i [ j(w_nu) + F_b |w_tau| + R(|w_tau|) ].
+     */
     template <int dim>
     double
     energy(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
-           const NormalLaw &law);
+           const NormalLaw &law, const FrictionLaw &friction);
+
+    /**
+     * The work rates m_i xi_nu w_nu (normal) and m_i xi_tau . w_tau
+     * (friction) of the laws' contact forces xi at @p velocity: what the
+     * energy balance books as dissipated. Where w_nu = 0 or w_tau = 0 the
+     * work is zero whatever the multiplier.
+     */
+    template <int dim>
+    std::pair<double, double>
+    contact_work(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
+                 const NormalLaw &law, const FrictionLaw &friction);
 
     /**
      * Unit vectors of the directions on which the node's constrained

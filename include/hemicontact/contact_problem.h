@@ -12,6 +12,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <hemicontact/contact_laws.h>
 #include <hemicontact/contact_node.h>
 #include <hemicontact/discretization.h>
 #include <hemicontact/energy_balance.h>
@@ -34,7 +35,7 @@ namespace hemicontact
 
   /**
    * The dynamic contact problem of Han & Han (2019), Problem 4.4: a
-   * Kelvin-Voigt body, a normal damped response law and Tresca friction on
+   * Kelvin-Voigt body, a normal damped response law and a friction law on
    * Gamma_3, backward Euler in the velocity and the left-point rule for the
    * displacement, P1/Q1 elements, nodal quadrature on Gamma_3.
    *
@@ -51,11 +52,11 @@ namespace hemicontact
   {
   public:
     /** A problem with data from the expressions of the parameter file. */
-    ContactProblem(const Parameters &parameters, std::unique_ptr<NormalLaw> law,
+    ContactProblem(const Parameters &parameters, ContactLaws laws,
                    MPI_Comm comm);
 
     /** A problem with given data (e.g. derived from a manufactured solution). */
-    ContactProblem(const Parameters &parameters, std::unique_ptr<NormalLaw> law,
+    ContactProblem(const Parameters &parameters, ContactLaws laws,
                    ProblemData<dim> data, MPI_Comm comm);
 
     /** Run the whole simulation: setup, time loop, output, summary. */
@@ -167,11 +168,32 @@ namespace hemicontact
     {
       return contact_traction;
     }
-    /** Estimated smallest eigenvalue of K0 against sum m_i nu nu (0 if not computed). */
+    /**
+     * Estimated smallest eigenvalue of K0 against sum m_i nu nu (0 if not
+     * computed); with a friction law that has alpha_tau > 0, against
+     * sum m_i (alpha_nu nu nu + alpha_tau (I - nu nu)), so that each step is
+     * strongly convex iff it exceeds 1.
+     */
     double
     get_convexity_bound() const
     {
       return convexity_bound;
+    }
+    /** Whether the convexity bound includes the friction law's alpha_tau. */
+    bool
+    convexity_includes_friction() const
+    {
+      return convexity_with_friction;
+    }
+    const NormalLaw &
+    get_normal_law() const
+    {
+      return *law;
+    }
+    const FrictionLaw &
+    get_friction_law() const
+    {
+      return *friction;
     }
     /** @} */
 
@@ -190,6 +212,12 @@ namespace hemicontact
     setup_contact_nodes();
     void
     initialize_state();
+    /**
+     * F_b at every contact node from 'data/friction bound' at time @p t and
+     * the displacement u_n (the left-point rule: known when step n starts).
+     */
+    void
+    update_friction_bounds(const double t);
 
     /** @name assembly.cc */
     void
@@ -382,7 +410,8 @@ namespace hemicontact
     TimerOutput        timer;
 
     KelvinVoigtMaterial<dim>   material;
-    std::unique_ptr<NormalLaw> law;
+    std::unique_ptr<NormalLaw>   law;
+    std::unique_ptr<FrictionLaw> friction;
     ProblemData<dim>           data;
 
     Discretization<dim> discretization;
@@ -421,6 +450,7 @@ namespace hemicontact
     LinearSolver  linear_solver;
     EnergyBalance energy;
     double        convexity_bound = 0;
+    bool          convexity_with_friction = false;
 
     double       time_step   = 0;
     /** Length of the last converged step (0: none yet). */

@@ -51,6 +51,10 @@ namespace hemicontact
       std::vector<std::unique_ptr<Node>> args;
     };
 
+    /** Whether the expression refers to the variable number @p index. */
+    bool
+    uses_variable(const unsigned int index) const;
+
     /** The functions the grammar knows, in the order of Node::function_id;
      *  the first ones take one argument, the last three two. */
     static const std::vector<std::string> &

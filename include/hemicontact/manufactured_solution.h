@@ -6,6 +6,8 @@
 #include <deal.II/base/tensor.h>
 
 #include <hemicontact/expression.h>
+#include <hemicontact/friction_bound.h>
+#include <hemicontact/friction_law.h>
 #include <hemicontact/kelvin_voigt.h>
 #include <hemicontact/normal_law.h>
 #include <hemicontact/parameters.h>
@@ -23,9 +25,11 @@ namespace hemicontact
    * derived from it exactly (forward automatic differentiation, Sacado):
    * w = du/dt, dw/dt, grad u, grad w and Div sigma, hence
    *   f0 = rho dw/dt - Div sigma,  f2 = sigma nu,
-   *   f3 = sigma nu + xi_nu nu + xi_tau  (design.md section 4),
-   * with xi_nu in dj(w_nu), xi_tau in F_b d|w_tau| and the given multiplier
-   * choices where those sets are intervals (w_nu = 0, w_tau = 0).
+   *   f3 = sigma nu + xi_nu nu + xi_tau  (doc/theory.md, section 4),
+   * with xi_nu in dj(w_nu), xi_tau in dphi(w_tau) (the friction law's force
+   * F(|w_tau|) w_tau/|w_tau| with the bound F_b(x, t, u_nu) of the exact
+   * state) and the given multiplier choices where those sets are intervals
+   * (w_nu = 0, w_tau = 0).
    */
   template <int dim>
   class ManufacturedSolution
@@ -38,7 +42,8 @@ namespace hemicontact
       Tensor<2, dim> grad_u, grad_w;
     };
 
-    ManufacturedSolution(const Parameters &parameters, const NormalLaw &law);
+    ManufacturedSolution(const Parameters &parameters, const NormalLaw &law,
+                         const FrictionLaw &friction);
 
     /** u, w, their gradients, dw/dt and Div sigma at (p, t). */
     Values
@@ -75,10 +80,11 @@ namespace hemicontact
 
   private:
     const NormalLaw &                   law;
+    const FrictionLaw &                 friction;
     KelvinVoigtMaterial<dim>            material;
     std::vector<Expression>             displacement;
     std::unique_ptr<Expression>         normal_multiplier;
     std::vector<Expression>             tangential_multiplier;
-    std::unique_ptr<Function<dim>>      friction_bound;
+    std::shared_ptr<const FrictionBound<dim>> friction_bound;
   };
 } // namespace hemicontact

@@ -224,7 +224,7 @@ namespace hemicontact
     void        parse(ParameterHandler &prm);
   };
 
-  /** Declare every parameter of the program (including the normal laws). */
+  /** Declare every parameter of the program (including the laws). */
   void
   declare_all_parameters(ParameterHandler &prm);
 

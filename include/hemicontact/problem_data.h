@@ -4,6 +4,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/vector.h>
 
+#include <hemicontact/friction_bound.h>
 #include <hemicontact/parameters.h>
 
 #include <functional>
@@ -18,8 +19,8 @@ namespace hemicontact
 
   /**
    * The data of the contact problem as Function objects: f0, f2, f3 and
-   * the initial fields (dim components each) and the friction bound F_b
-   * (one component). Built from the muparser expressions of the parameter
+   * the initial fields (dim components each), and the friction bound F_b
+   * (an expression that may depend on the normal displacement). Built from the muparser expressions of the parameter
    * file; a manufactured solution replaces them with derived functions.
    */
   template <int dim>
@@ -28,9 +29,9 @@ namespace hemicontact
     std::unique_ptr<Function<dim>> body_force;
     std::unique_ptr<Function<dim>> surface_traction;
     std::unique_ptr<Function<dim>> contact_traction;
-    std::unique_ptr<Function<dim>> friction_bound;
     std::unique_ptr<Function<dim>> initial_displacement;
     std::unique_ptr<Function<dim>> initial_velocity;
+    std::shared_ptr<const FrictionBound<dim>> friction_bound;
 
     /**
      * Tractions that depend on the outward normal (point, normal, time),

@@ -244,7 +244,7 @@ namespace hemicontact
         {
           const ContactNode<dim> &node = contact_nodes[k];
           const NodeLinearization<dim> lin =
-            NodeContact::linearize(node, mult[k], *law);
+            NodeContact::linearize(node, mult[k], *law, *friction);
           for (unsigned int a = 0; a < dim; ++a)
             {
               node_dofs[a] = node.dofs[a];

@@ -272,6 +272,7 @@ namespace hemicontact
     step_number = state.step_number;
     energy      = from_vector(state.energy);
     pvd_records = state.pvd_records;
+    update_friction_bounds(get_time());
     check_convexity();
   }
 

@@ -17,8 +17,10 @@ namespace hemicontact
     TimerOutput::Scope t(timer, "output");
     // one row per owned contact node, flattened; columns as in the header
     // below: x, normal, time, w_nu, |w_tau|, w_tau, sigma_nu, |sigma_tau|,
-    // sigma_tau, normal_branch, tangential_branch, mass
-    const unsigned int  width = dim + dim + 1 + 2 + dim + 2 + dim + 3;
+    // sigma_tau, normal_branch, tangential_branch, mass, friction_bound (F_b
+    // of the step), friction_response (the force F(|w_tau|) = F_b +
+    // r(|w_tau|) that the friction law opposes to the node's slip speed)
+    const unsigned int  width = dim + dim + 1 + 2 + dim + 2 + dim + 3 + 2;
     std::vector<double> rows;
     for (const ContactNode<dim> &node : contact_nodes)
       if (node.locally_owned)
@@ -54,6 +56,8 @@ namespace hemicontact
           rows.push_back(static_cast<int>(node.normal_branch));
           rows.push_back(static_cast<int>(node.tangential_branch));
           rows.push_back(node.mass);
+          rows.push_back(node.friction_bound);
+          rows.push_back(friction->response(node.friction_bound, w_tau.norm()));
         }
 
     const std::vector<std::vector<double>> gathered =
@@ -87,7 +91,8 @@ namespace hemicontact
     file << ",sigma_nu,sigma_tau_norm";
     for (unsigned int d = 0; d < dim; ++d)
       file << ",sigma_tau_" << xyz[d];
-    file << ",normal_branch,tangential_branch,mass\n";
+    file << ",normal_branch,tangential_branch,mass,friction_bound,"
+            "friction_response\n";
 
     // small values at the solver tolerance are printed as 0 so that the
     // file does not depend on the number of MPI ranks in the last digits
@@ -101,7 +106,7 @@ namespace hemicontact
           {
             if (j > 0)
               file << ",";
-            if (j >= width - 3 && j < width - 1)
+            if (j >= width - 5 && j < width - 3)
               file << static_cast<int>(row[j]);
             else
               file << clean(row[j]);

@@ -3,8 +3,8 @@
 #include <hemicontact/contact_problem.h>
 #include <hemicontact/generalized_eigenvalue.h>
 #include <hemicontact/input_error.h>
-#include <hemicontact/tresca_friction.h>
 
+#include <algorithm>
 #include <tuple>
 
 #include <cmath>
@@ -80,20 +80,22 @@ namespace hemicontact
     energy.numerical_dissipation += 0.5 * dw_M_dw - 0.5 * k * k * (w * tmp);
     energy.external_work += k * (load * w);
 
-    double friction = 0, damping = 0;
+    // the work xi . w of the contact forces, not their potentials: with a
+    // nonconvex law the two differ, and the work is what the step balances
+    double friction_work = 0, damping = 0;
     for (const ContactNode<dim> &node : contact_nodes)
       if (node.locally_owned)
         {
           Tensor<1, dim> v;
           for (unsigned int c = 0; c < dim; ++c)
             v[c] = velocity[node.dofs[c]];
-          const double         wn = v * node.normal;
-          const Tensor<1, dim> wt = v - wn * node.normal;
-          friction += node.mass * TrescaFriction::potential(node.friction_bound, wt);
-          damping += node.mass * law->subgradient(wn) * wn;
+          const auto [normal, tangential] =
+            NodeContact::contact_work(node, v, *law, *friction);
+          damping += normal;
+          friction_work += tangential;
         }
     energy.friction_dissipation +=
-      k * Utilities::MPI::sum(friction, mpi_communicator);
+      k * Utilities::MPI::sum(friction_work, mpi_communicator);
     energy.damping_dissipation +=
       k * Utilities::MPI::sum(damping, mpi_communicator);
   }
@@ -102,27 +104,45 @@ namespace hemicontact
   void
   ContactProblem<dim>::check_convexity()
   {
+    // J_n is strongly convex if K0 = rho/k M + A dominates the nodal form
+    // N = sum_i m_i (alpha_nu nu nu + alpha_tau,i (I - nu nu)) of the laws'
+    // nonconvexity (doc/theory.md, section 7). Without friction remainder
+    // (alpha_tau = 0) the bound is stated for alpha_nu: the smallest
+    // eigenvalue of K0 against sum m_i nu nu, to be compared with alpha_nu.
     const double alpha = law->relaxed_monotonicity_constant();
-    if (alpha == 0)
+    double       largest_alpha_tau = 0;
+    for (const ContactNode<dim> &node : contact_nodes)
+      if (node.locally_owned)
+        largest_alpha_tau =
+          std::max(largest_alpha_tau,
+                   friction->relaxed_monotonicity_constant(node.friction_bound));
+    largest_alpha_tau =
+      Utilities::MPI::max(largest_alpha_tau, mpi_communicator);
+    convexity_with_friction = largest_alpha_tau > 0;
+    if (alpha == 0 && !convexity_with_friction)
       {
         convexity_bound = std::numeric_limits<double>::infinity();
         return;
       }
     TimerOutput::Scope t(timer, "convexity check");
 
-    // the largest mu of N x = mu K0 x, with the normal boundary mass
-    // N = sum_i m_i nu_i nu_i^T: J_n is strongly convex iff alpha < 1/mu_max
-    const auto apply_n = [&](const TrilinosWrappers::MPI::Vector &in,
+    const double alpha_nu = convexity_with_friction ? alpha : 1.;
+    const auto   apply_n  = [&](const TrilinosWrappers::MPI::Vector &in,
                              TrilinosWrappers::MPI::Vector &      out) {
       out = 0;
       for (const ContactNode<dim> &node : contact_nodes)
         if (node.locally_owned)
           {
-            double vn = 0;
+            Tensor<1, dim> v;
             for (unsigned int c = 0; c < dim; ++c)
-              vn += in[node.dofs[c]] * node.normal[c];
+              v[c] = in[node.dofs[c]];
+            const double vn = v * node.normal;
+            Tensor<1, dim> nv = alpha_nu * vn * node.normal;
+            if (convexity_with_friction)
+              nv += friction->relaxed_monotonicity_constant(node.friction_bound) *
+                    (v - vn * node.normal);
             for (unsigned int c = 0; c < dim; ++c)
-              out[node.dofs[c]] = node.mass * vn * node.normal[c];
+              out[node.dofs[c]] = node.mass * nv[c];
           }
       out.compress(VectorOperation::insert);
       base_constraints.set_zero(out);
@@ -140,20 +160,26 @@ namespace hemicontact
       amg.vmult(out, in);
       base_constraints.set_zero(out);
     };
-    // start from the normal field on Gamma_3
+    // start from the normal field on Gamma_3 (plus a tangential field when
+    // friction counts)
     TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);
     for (const ContactNode<dim> &node : contact_nodes)
       if (node.locally_owned)
-        for (unsigned int c = 0; c < dim; ++c)
-          x[node.dofs[c]] = node.normal[c];
+        {
+          Tensor<1, dim> start = node.normal;
+          if (convexity_with_friction)
+            for (const Tensor<1, dim> &t : NodeContact::tangent_basis(node.normal))
+              start += t;
+          for (unsigned int c = 0; c < dim; ++c)
+            x[node.dofs[c]] = start[c];
+        }
     x.compress(VectorOperation::insert);
     base_constraints.set_zero(x);
     const EigenvalueEstimate estimate =
       largest_generalized_eigenvalue(apply_n, apply_k, precondition, x,
                                      convexity_residual_tolerance,
                                      convexity_max_iterations);
-    // value 0: the normal field has no free dof on Gamma_3, so N vanishes
-    // on the free dofs and every alpha is admissible
+    // value 0: N vanishes on the free dofs, and every alpha is admissible
     convexity_bound = estimate.value > 0 ?
                         1. / estimate.value :
                         std::numeric_limits<double>::infinity();
@@ -168,19 +194,39 @@ namespace hemicontact
                    "may be less convex than stated."
                 << std::endl;
 
-    if (alpha >= convexity_bound)
+    const bool convex =
+      convexity_with_friction ? convexity_bound > 1 : alpha < convexity_bound;
+    if (!convex)
       {
         std::ostringstream message;
-        message << "the step energy J_n is not convex for this time step: the "
-                   "normal law's relaxed-monotonicity constant alpha = "
-                << alpha
-                << " is not below the estimated smallest eigenvalue "
-                << convexity_bound
-                << " of (rho/k M + A) against the normal boundary mass "
-                   "(the convexity condition of the step problem, cf. Han & Han 2019, (4.26)). Newton may fail "
-                   "or the step may have several solutions; reduce the time "
-                   "step k = "
-                << time_step << " or the law's nonmonotonicity.";
+        if (convexity_with_friction)
+          message << "the step energy J_n is not convex for this time step: "
+                     "the laws' relaxed-monotonicity constants alpha_nu = "
+                  << alpha << " (normal law) and alpha_tau up to "
+                  << largest_alpha_tau << " (friction law '"
+                  << friction->name()
+                  << "') are too large for (rho/k M + A): its smallest "
+                     "eigenvalue against sum m_i (alpha_nu nu nu + alpha_tau "
+                     "(I - nu nu)) is estimated at "
+                  << convexity_bound
+                  << ", below 1 (the convexity condition of the step "
+                     "problem, doc/theory.md section 7). Newton may fail or "
+                     "the step may have several solutions; reduce the time "
+                     "step k = "
+                  << time_step
+                  << " or the laws' nonmonotonicity (e.g. a larger "
+                     "characteristic slip speed).";
+        else
+          message << "the step energy J_n is not convex for this time step: the "
+                     "normal law's relaxed-monotonicity constant alpha = "
+                  << alpha
+                  << " is not below the estimated smallest eigenvalue "
+                  << convexity_bound
+                  << " of (rho/k M + A) against the normal boundary mass "
+                     "(the convexity condition of the step problem, cf. Han & Han 2019, (4.26)). Newton may fail "
+                     "or the step may have several solutions; reduce the time "
+                     "step k = "
+                  << time_step << " or the law's nonmonotonicity.";
         if (parameters.nonlinear_solver.strict_convexity_check)
           throw InputError("nonlinear solver: " + message.str());
         if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)

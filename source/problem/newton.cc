@@ -77,7 +77,8 @@ namespace hemicontact
             w[c]     = w_ghosted[contact_nodes[k].dofs[c]];
             force[c] = -residual_ghosted[contact_nodes[k].dofs[c]];
           }
-        result[k] = NodeContact::multipliers(contact_nodes[k], w, force, *law);
+        result[k] = NodeContact::multipliers(contact_nodes[k], w, force, *law,
+                                             *friction);
       }
     return result;
   }
@@ -146,7 +147,7 @@ namespace hemicontact
           Tensor<1, dim> v;
           for (unsigned int c = 0; c < dim; ++c)
             v[c] = w[node.dofs[c]];
-          local += NodeContact::energy(node, v, *law);
+          local += NodeContact::energy(node, v, *law, *friction);
         }
     return Utilities::MPI::sum(local, mpi_communicator);
   }
@@ -275,7 +276,7 @@ namespace hemicontact
           {
             const ContactNode<dim> &     node = contact_nodes[k];
             const NodeLinearization<dim> lin =
-              NodeContact::linearize(node, mult[k], *law);
+              NodeContact::linearize(node, mult[k], *law, *friction);
             op.add_node(node.dofs, NodeContact::free_projector(node),
                         lin.matrix,
                         amg_sees_constraints ? amg_constrained_directions[k] :

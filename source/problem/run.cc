@@ -2,6 +2,7 @@
 #include <deal.II/base/timer.h>
 
 #include <hemicontact/contact_problem.h>
+#include <hemicontact/friction_laws/tresca.h>
 #include <hemicontact/input_error.h>
 
 #include <algorithm>
@@ -79,6 +80,7 @@ namespace hemicontact
         velocity.add(k / last_step_length, trend);
         base_constraints.distribute(velocity);
       }
+    update_friction_bounds(start + k);
     assemble_load(start + k);
     assemble_step_rhs();
     try
@@ -178,11 +180,21 @@ namespace hemicontact
           << " cells, " << dof_handler.n_dofs() << " dofs, " << n_nodes
           << " contact nodes, " << n_steps << " steps of k = " << time_step
           << ", normal law '" << law->name() << "'";
+    if (friction->name() != TrescaLaw::law_name)
+      pcout << ", friction law '" << friction->name() << "'";
     if (parameters.output.terminal != "test")
       pcout << ", " << Utilities::MPI::n_mpi_processes(mpi_communicator)
             << " MPI rank(s)";
     pcout << std::endl;
-    if (law->relaxed_monotonicity_constant() > 0)
+    if (convexity_with_friction)
+      pcout << "convexity: alpha_nu = " << law->relaxed_monotonicity_constant()
+            << ", alpha_tau from the friction law, smallest eigenvalue "
+               "(estimated) = "
+            << std::setprecision(3) << convexity_bound << " -> "
+            << (convexity_bound > 1 ? "each step is strongly convex" :
+                                      "NOT guaranteed convex")
+            << std::endl;
+    else if (law->relaxed_monotonicity_constant() > 0)
       pcout << "convexity: alpha = " << law->relaxed_monotonicity_constant()
             << ", bound (estimated) = " << std::setprecision(3)
             << convexity_bound << " -> "

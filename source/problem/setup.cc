@@ -15,25 +15,26 @@
 namespace hemicontact
 {
   template <int dim>
-  ContactProblem<dim>::ContactProblem(const Parameters &         parameters,
-                                      std::unique_ptr<NormalLaw> law,
-                                      MPI_Comm                   comm)
-    : ContactProblem(parameters, std::move(law),
+  ContactProblem<dim>::ContactProblem(const Parameters &parameters,
+                                      ContactLaws       laws,
+                                      MPI_Comm          comm)
+    : ContactProblem(parameters, std::move(laws),
                      make_problem_data<dim>(parameters.data), comm)
   {}
 
   template <int dim>
-  ContactProblem<dim>::ContactProblem(const Parameters &         parameters,
-                                      std::unique_ptr<NormalLaw> law,
-                                      ProblemData<dim>           data,
-                                      MPI_Comm                   comm)
+  ContactProblem<dim>::ContactProblem(const Parameters &parameters,
+                                      ContactLaws       laws,
+                                      ProblemData<dim>  data,
+                                      MPI_Comm          comm)
     : mpi_communicator(comm)
     , parameters(parameters)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0 &&
                          parameters.output.terminal != "quiet")
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , material(parameters.material)
-    , law(std::move(law))
+    , law(std::move(laws.normal))
+    , friction(std::move(laws.friction))
     , data(std::move(data))
     , discretization(parameters.geometry, comm)
     , dof_handler(*discretization.triangulation)
@@ -215,14 +216,11 @@ namespace hemicontact
                 node.normal /= node.normal.norm();
                 node.c = parameters.nonlinear_solver.complementarity_factor *
                          diag / node.mass;
-                node.friction_bound = data.friction_bound->value(node.position);
-                require(node.friction_bound >= 0,
-                        "data: 'friction bound' is negative (" +
-                          std::to_string(node.friction_bound) +
-                          ") at a contact node; F_b must be >= 0.");
                 node.locally_owned = locally_owned_dofs.is_element(node.dofs[0]);
                 contact_nodes.push_back(node);
               }
+
+    update_friction_bounds(step_number * time_step);
 
     unsigned int n_owned = 0;
     for (const auto &node : contact_nodes)
@@ -230,6 +228,28 @@ namespace hemicontact
     require(Utilities::MPI::sum(n_owned, mpi_communicator) > 0,
             "boundary: the contact boundary Gamma_3 has no free node (every "
             "node is clamped); check 'contact boundary ids'.");
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::update_friction_bounds(const double t)
+  {
+    if (!data.friction_bound->depends_on_state())
+      {
+        for (ContactNode<dim> &node : contact_nodes)
+          node.friction_bound = data.friction_bound->value(node.position, t, 0.);
+        return;
+      }
+    TrilinosWrappers::MPI::Vector u(locally_owned_dofs, locally_relevant_dofs,
+                                    mpi_communicator);
+    u = displacement;
+    for (ContactNode<dim> &node : contact_nodes)
+      {
+        double u_nu = 0;
+        for (unsigned int c = 0; c < dim; ++c)
+          u_nu += u[node.dofs[c]] * node.normal[c];
+        node.friction_bound = data.friction_bound->value(node.position, t, u_nu);
+      }
   }
 
   template <int dim>
@@ -262,17 +282,18 @@ namespace hemicontact
                         "initial displacement");
     old_velocity = velocity;
     step_number  = 0;
+    update_friction_bounds(0.);
     energy       = EnergyBalance();
     update_energy_balance(/*initial=*/true);
   }
 
 #define HEMICONTACT_INSTANTIATE(dim)                                           \
   template ContactProblem<dim>::ContactProblem(const Parameters &,            \
-                                               std::unique_ptr<NormalLaw>,    \
-                                               MPI_Comm);                     \
+                                               ContactLaws, MPI_Comm);        \
   template ContactProblem<dim>::ContactProblem(const Parameters &,            \
-                                               std::unique_ptr<NormalLaw>,    \
-                                               ProblemData<dim>, MPI_Comm);   \
+                                               ContactLaws, ProblemData<dim>, \
+                                               MPI_Comm);                     \
+  template void ContactProblem<dim>::update_friction_bounds(const double);    \
   template void ContactProblem<dim>::setup();                                 \
   template void ContactProblem<dim>::make_mesh();                             \
   template void ContactProblem<dim>::setup_on_current_mesh();                 \

@@ -155,9 +155,9 @@ namespace hemicontact
     run_level(const Parameters &p, ParameterHandler &prm, MPI_Comm comm)
     {
       Timer                            wall;
-      const std::unique_ptr<NormalLaw> law = create_normal_law(prm);
-      const ManufacturedSolution<dim>  exact(p, *law);
-      ContactProblem<dim> problem(p, create_normal_law(prm),
+      const ContactLaws               laws = create_contact_laws(prm);
+      const ManufacturedSolution<dim> exact(p, *laws.normal, *laws.friction);
+      ContactProblem<dim> problem(p, create_contact_laws(prm),
                                   exact.make_problem_data(), comm);
       problem.setup();
       IndexSet relevant;

@@ -7,20 +7,13 @@ namespace hemicontact
   using namespace dealii;
 
   /**
-   * Tresca friction with bound F_b >= 0: |sigma_tau| <= F_b, and
-   * -sigma_tau = F_b w_tau / |w_tau| where w_tau != 0. The potential is
-   * F_b |w_tau|; its subdifferential is the disk of radius F_b at 0.
+   * The convex, set-valued part of every friction law: the friction disk
+   * {|lambda| <= F_b}, the subdifferential of F_b |v| at v = 0. The
+   * active-set method projects onto it; a law's single-valued remainder
+   * (FrictionLaw) comes on top.
    */
-  namespace TrescaFriction
+  namespace FrictionDisk
   {
-    /** The potential F_b |v|. */
-    template <int dim>
-    double
-    potential(const double bound, const Tensor<1, dim> &v)
-    {
-      return bound * v.norm();
-    }
-
     /** Projection of q onto the disk {|lambda| <= F_b}. */
     template <int dim>
     Tensor<1, dim>
@@ -37,5 +30,5 @@ namespace hemicontact
     {
       return q.norm() <= bound;
     }
-  } // namespace TrescaFriction
+  } // namespace FrictionDisk
 } // namespace hemicontact
