@@ -451,6 +451,8 @@ namespace hemicontact
     EnergyBalance energy;
     double        convexity_bound = 0;
     bool          convexity_with_friction = false;
+    /** The largest alpha_tau over the contact nodes at the last check. */
+    double        largest_alpha_tau = 0;
 
     double       time_step   = 0;
     /** Length of the last converged step (0: none yet). */

@@ -110,7 +110,7 @@ namespace hemicontact
     // (alpha_tau = 0) the bound is stated for alpha_nu: the smallest
     // eigenvalue of K0 against sum m_i nu nu, to be compared with alpha_nu.
     const double alpha = law->relaxed_monotonicity_constant();
-    double       largest_alpha_tau = 0;
+    largest_alpha_tau = 0;
     for (const ContactNode<dim> &node : contact_nodes)
       if (node.locally_owned)
         largest_alpha_tau =

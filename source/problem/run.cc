@@ -188,9 +188,9 @@ namespace hemicontact
     pcout << std::endl;
     if (convexity_with_friction)
       pcout << "convexity: alpha_nu = " << law->relaxed_monotonicity_constant()
-            << ", alpha_tau from the friction law, smallest eigenvalue "
-               "(estimated) = "
-            << std::setprecision(3) << convexity_bound << " -> "
+            << ", alpha_tau <= " << std::setprecision(3) << largest_alpha_tau
+            << ", smallest eigenvalue against them (estimated) = "
+            << convexity_bound << " -> "
             << (convexity_bound > 1 ? "each step is strongly convex" :
                                       "NOT guaranteed convex")
             << std::endl;

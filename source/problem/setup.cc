@@ -234,22 +234,37 @@ namespace hemicontact
   void
   ContactProblem<dim>::update_friction_bounds(const double t)
   {
-    if (!data.friction_bound->depends_on_state())
+    const bool with_u_nu = data.friction_bound->depends_on_state();
+    TrilinosWrappers::MPI::Vector u;
+    if (with_u_nu)
       {
-        for (ContactNode<dim> &node : contact_nodes)
-          node.friction_bound = data.friction_bound->value(node.position, t, 0.);
-        return;
+        u.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
+        u = displacement;
       }
-    TrilinosWrappers::MPI::Vector u(locally_owned_dofs, locally_relevant_dofs,
-                                    mpi_communicator);
-    u = displacement;
+    // a bad value is reported by every rank, so that none waits for another
+    // in the step that follows
+    std::string error;
     for (ContactNode<dim> &node : contact_nodes)
       {
         double u_nu = 0;
-        for (unsigned int c = 0; c < dim; ++c)
-          u_nu += u[node.dofs[c]] * node.normal[c];
-        node.friction_bound = data.friction_bound->value(node.position, t, u_nu);
+        if (with_u_nu)
+          for (unsigned int c = 0; c < dim; ++c)
+            u_nu += u[node.dofs[c]] * node.normal[c];
+        try
+          {
+            node.friction_bound =
+              data.friction_bound->value(node.position, t, u_nu);
+          }
+        catch (const InputError &e)
+          {
+            if (error.empty())
+              error = e.what();
+          }
       }
+    for (const std::string &message :
+         Utilities::MPI::all_gather(mpi_communicator, error))
+      if (!message.empty())
+        throw InputError(message);
   }
 
   template <int dim>
