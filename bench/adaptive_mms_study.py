@@ -5,7 +5,7 @@ Runs the coupled convergence study of
 prm/verification/mms_2d_quad_exponential.prm (uniform meshes) and of
 prm/verification/mms_2d_quad_exponential_adaptive.prm (the same case and
 k sequence on adaptive meshes) with the same number of levels, and compares
-the errors E_H, E_V, E_u (design.md section 5) against the mean number of
+the errors E_H, E_V, E_u (doc/theory.md section 5) against the mean number of
 dofs over the steps: the observed rate between consecutive levels,
 -log(E ratio) / log(dofs ratio), and the fitted log-log slope over all levels
 and over the last three. In 2D the uniform rate O(h) is 1/2 against dofs.

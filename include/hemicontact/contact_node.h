@@ -15,7 +15,7 @@ namespace hemicontact
 {
   using namespace dealii;
 
-  /** Normal branch of a contact node (design.md section 3). */
+  /** Normal branch of a contact node (doc/theory.md section 3). */
   enum class NormalBranch : unsigned char
   {
     separating = 0, ///< s + c w_nu < 0: s = 0, w_nu free

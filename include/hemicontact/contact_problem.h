@@ -40,7 +40,7 @@ namespace hemicontact
    * displacement, P1/Q1 elements, nodal quadrature on Gamma_3.
    *
    * Each time step minimises the step energy J_n by a semismooth Newton /
-   * primal-dual active-set method (design.md section 3).
+   * primal-dual active-set method (doc/theory.md section 3).
    *
    * The member functions are spread over source/problem/: setup.cc (mesh,
    * dofs, constraints, contact nodes), assembly.cc (matrices and loads),

@@ -12,7 +12,7 @@ namespace hemicontact
   using namespace dealii;
 
   /**
-   * The errors of design.md section 5 for one run against a manufactured
+   * The errors of doc/theory.md section 5 for one run against a manufactured
    * solution, with e_n = w(t_n) - w_n and ||v||_V = ||eps(v)||_L2:
    * E_H = max_n ||e_n||_L2, E_V = (k sum_n ||e_n||_V^2)^{1/2},
    * E_u = max_n ||u(t_n) - u_n||_V, and the same in the H1 seminorm.

@@ -16,7 +16,7 @@ namespace hemicontact
    * A normal damped response law -sigma_nu in dj(w_nu) on Gamma_3 (Clarke
    * subdifferential of a locally Lipschitz, possibly nonconvex potential j).
    *
-   * Every law is written in the split of design.md section 1,
+   * Every law is written in the split of doc/theory.md section 1,
    *   dj(r) = d(a r_+)(r) + p(r),
    * with the convex jump part d(a r_+) = {0} (r<0), [0,a] (r=0), {a} (r>0)
    * and a single-valued Lipschitz remainder p with p(r) = 0 for r <= 0.

@@ -147,7 +147,7 @@ namespace hemicontact
   /**
    * A manufactured solution: the exact displacement u(x,t) and the
    * multiplier choices where the contact subdifferentials are intervals;
-   * f0, f2, f3, u0 and w0 are derived from them (design.md section 4).
+   * f0, f2, f3, u0 and w0 are derived from them (doc/theory.md section 4).
    */
   struct ManufacturedParameters
   {

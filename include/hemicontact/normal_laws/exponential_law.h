@@ -5,7 +5,7 @@
 namespace hemicontact
 {
   /**
-   * The reference nonmonotone law of design.md section 1:
+   * The reference nonmonotone law of doc/theory.md section 1:
    * dj(r) = 0 (r<0), [0,a] (r=0), (a-b) exp(-beta r) + b (r>0),
    * with a >= b >= 0, beta >= 0; alpha = beta (a - b).
    */
