@@ -84,13 +84,20 @@ checks = {
     "tangential stick: w_tau = 0": (tstick.w_tau_norm <= tol_w).all(),
     "|w_tau| is the norm of w_tau": np.allclose(np.linalg.norm(w_tau, axis=1), later.w_tau_norm, atol=tol_w),
 }
-# on slipping nodes sigma_tau = -F_b w_tau/|w_tau|: antiparallel to w_tau
+# on slipping nodes sigma_tau = -F(|w_tau|) w_tau/|w_tau|: antiparallel to w_tau
 moving = (later.tangential_branch == 1).to_numpy() & (later.w_tau_norm > 1e3 * tol_w).to_numpy()
 dots = np.einsum("ij,ij->i", w_tau[moving], s_tau[moving])
 norms = later.w_tau_norm.to_numpy()[moving] * later.sigma_tau_norm.to_numpy()[moving]
 checks["slip: sigma_tau antiparallel to w_tau"] = np.allclose(dots, -norms, atol=1e-6 * max(norms.max(initial=0), 1e-300))
-# sigma_tau is bounded by the friction bound, reached on slipping nodes
-if len(slip):
+# the friction law itself: |sigma_tau| is the law's force F(|w_tau|) on
+# slipping nodes and inside the disk of radius F_b on sticking ones
+if "friction_response" in later.columns:
+    slipping = later[moving]
+    checks["slip: |sigma_tau| = friction law's F(|w_tau|)"] = np.allclose(
+        slipping.sigma_tau_norm, slipping.friction_response, rtol=1e-6, atol=tol_s)
+    checks["stick: |sigma_tau| <= friction_bound"] = (
+        tstick.sigma_tau_norm <= tstick.friction_bound * (1 + 1e-6) + tol_s).all()
+elif len(slip):
     checks["stick: |sigma_tau| <= max slip |sigma_tau|"] = (
         tstick.sigma_tau_norm <= slip.sigma_tau_norm.max() * (1 + 1e-6) + tol_s).all()
 for name, ok in checks.items():
