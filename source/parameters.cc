@@ -4,6 +4,10 @@
 #include <hemicontact/input_error.h>
 #include <hemicontact/parameters.h>
 
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -110,10 +114,21 @@ namespace hemicontact
     require(!contact_ids.empty(),
             "boundary: 'contact boundary ids' is empty; the contact part "
             "Gamma_3 must have positive measure.");
-    for (const unsigned int c : contact_ids)
-      for (const unsigned int d : clamped_ids)
-        require(c != d, "boundary: id " + std::to_string(c) +
-                          " is listed both as clamped and as contact.");
+    // Gamma_1, Gamma_2 and Gamma_3 are disjoint parts of the boundary
+    const auto require_disjoint = [](const std::vector<unsigned int> &a,
+                                     const std::vector<unsigned int> &b,
+                                     const std::string &what) {
+      for (const unsigned int i : a)
+        for (const unsigned int j : b)
+          require(i != j, "boundary: id " + std::to_string(i) +
+                            " is listed both as " + what +
+                            "; Gamma_1 (clamped), Gamma_2 (traction) and "
+                            "Gamma_3 (contact) are disjoint parts of the "
+                            "boundary, so each id belongs to one list.");
+    };
+    require_disjoint(contact_ids, clamped_ids, "clamped and as contact");
+    require_disjoint(traction_ids, contact_ids, "traction and as contact");
+    require_disjoint(traction_ids, clamped_ids, "clamped and as traction");
   }
 
   void
@@ -224,6 +239,20 @@ namespace hemicontact
     require(time_step <= end_time,
             "time: 'time step' = " + std::to_string(time_step) +
               " is larger than 'end time' = " + std::to_string(end_time) + ".");
+    // the scheme takes N uniform steps k = T/N: a time step that does not
+    // divide the end time would be changed, so it is refused
+    const double n_steps = end_time / time_step;
+    if (std::abs(n_steps - std::round(n_steps)) > 1e-8 * n_steps)
+      {
+        std::ostringstream message;
+        message << std::setprecision(12) << "time: 'end time' = " << end_time
+                << " is not a whole number of steps of 'time step' = "
+                << time_step << " (" << n_steps
+                << " steps); the scheme takes uniform steps, so choose a "
+                   "time step that divides the end time (e.g. "
+                << end_time / std::max(1., std::round(n_steps)) << ").";
+        throw InputError(message.str());
+      }
   }
 
   void
@@ -736,6 +765,19 @@ namespace hemicontact
     prm.enter_subsection("normal law");
     normal_law_name = prm.get("law");
     prm.leave_subsection();
+
+    {
+      std::ostringstream message;
+      message << "nonlinear solver: 'tolerance' = "
+              << nonlinear_solver.tolerance
+              << " is below 'linear solver/relative tolerance' = "
+              << linear_solver.relative_tolerance
+              << ", the accuracy of every linear solve; Newton could not "
+                 "reach it. Raise the Newton tolerance or lower the linear "
+                 "solver's relative tolerance below it.";
+      require(nonlinear_solver.tolerance >= linear_solver.relative_tolerance,
+              message.str());
+    }
 
     require(adaptivity.interval == 0 || geometry.cell_type == "hypercube",
             "adaptivity: adaptive refinement needs 'geometry/cell type = "

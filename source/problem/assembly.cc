@@ -1,11 +1,16 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <hemicontact/contact_problem.h>
+#include <hemicontact/input_error.h>
 
+#include <cmath>
 #include <set>
+#include <sstream>
+#include <string>
 
 namespace hemicontact
 {
@@ -130,6 +135,29 @@ namespace hemicontact
       !is_zero(data.contact_traction.get()) ||
       data.contact_traction_with_normal != nullptr;
 
+    // a value that is not a finite number is reported by name, point and
+    // time, on every rank (none may wait for another in compress())
+    std::string not_finite;
+    const auto  check_finite = [&](const std::vector<Vector<double>> &v,
+                                  const std::vector<Point<dim>> &    points,
+                                  const std::string &                name) {
+      if (!not_finite.empty())
+        return;
+      for (unsigned int q = 0; q < v.size(); ++q)
+        for (unsigned int c = 0; c < dim; ++c)
+          if (!std::isfinite(v[q](c)))
+            {
+              std::ostringstream message;
+              message << "data: " << name << " is not a finite number ("
+                      << v[q](c) << " in component " << c << ") at x = ("
+                      << points[q] << "), t = " << time
+                      << "; check the expression for that point and time.";
+              not_finite = message.str();
+              return;
+            }
+    };
+    const bool manufactured = data.surface_traction_with_normal != nullptr;
+
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -139,6 +167,12 @@ namespace hemicontact
               fe_values.reinit(cell);
               data.body_force->vector_value_list(
                 fe_values.get_quadrature_points(), values);
+              check_finite(values, fe_values.get_quadrature_points(),
+                           manufactured ?
+                             "the body force f0 derived from 'manufactured "
+                             "solution/exact displacement'" :
+                             "'body force' = '" +
+                               parameters.data.body_force + "'");
               for (const unsigned int q : fe_values.quadrature_point_indices())
                 for (unsigned int i = 0; i < n; ++i)
                   {
@@ -165,6 +199,18 @@ namespace hemicontact
                                        fe_face.get_quadrature_points(),
                                        fe_face.get_normal_vectors(),
                                        face_values);
+                check_finite(
+                  face_values, fe_face.get_quadrature_points(),
+                  manufactured ?
+                    std::string(on_traction ? "the traction f2" :
+                                              "the contact traction f3") +
+                      " derived from 'manufactured solution/exact "
+                      "displacement' and the multipliers" :
+                    on_traction ?
+                    "'surface traction' = '" +
+                      parameters.data.surface_traction + "'" :
+                    "'contact traction' = '" +
+                      parameters.data.contact_traction + "'");
                 for (const unsigned int q : fe_face.quadrature_point_indices())
                   for (unsigned int i = 0; i < n; ++i)
                     {
@@ -180,6 +226,10 @@ namespace hemicontact
           cell->get_dof_indices(dofs);
           base_constraints.distribute_local_to_global(cell_load, dofs, load);
         }
+    for (const std::string &message :
+         Utilities::MPI::all_gather(mpi_communicator, not_finite))
+      if (!message.empty())
+        throw InputError(message);
     load.compress(VectorOperation::add);
   }
 
