@@ -8,6 +8,7 @@
 #include <hemicontact/parameters.h>
 
 #include <cctype>
+#include <set>
 #include <fstream>
 #include <sstream>
 
@@ -23,6 +24,43 @@ namespace hemicontact
 
   namespace
   {
+    /**
+     * The entries of @p prm that define the problem, as "path/entry =
+     * value", from its short listing (subsection / set / end lines).
+     */
+    std::vector<std::string>
+    problem_definition(const ParameterHandler &prm)
+    {
+      static const std::set<std::string> not_defining = {
+        "output", "checkpoint", "linear solver", "nonlinear solver",
+        "convergence study"};
+      std::ostringstream listing;
+      prm.print_parameters(listing, ParameterHandler::ShortPRM);
+      std::istringstream       in(listing.str());
+      std::vector<std::string> path, entries;
+      std::string              line;
+      while (std::getline(in, line))
+        {
+          const std::size_t start = line.find_first_not_of(' ');
+          if (start == std::string::npos)
+            continue;
+          line = line.substr(start);
+          if (line.rfind("subsection ", 0) == 0)
+            path.push_back(line.substr(11));
+          else if (line == "end")
+            path.pop_back();
+          else if (line.rfind("set ", 0) == 0 &&
+                   (path.empty() || not_defining.count(path.front()) == 0))
+            {
+              std::string prefix;
+              for (const std::string &p : path)
+                prefix += p + "/";
+              entries.push_back(prefix + line.substr(4));
+            }
+        }
+      return entries;
+    }
+
     /**
      * The message of a deal.II exception without its stack trace, with
      * its line breaks and indentation collapsed into one paragraph.
@@ -65,6 +103,7 @@ namespace hemicontact
       try
         {
           parameters.parse(prm);
+          parameters.problem_definition = problem_definition(prm);
         }
       catch (const ExceptionBase &e)
         {

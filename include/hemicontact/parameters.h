@@ -219,6 +219,13 @@ namespace hemicontact
     ConvergenceStudyParameters study;
     /** The normal law is parsed by its own factory (see normal_law.h). */
     std::string normal_law_name;
+    /**
+     * Every entry that defines the problem, as "path/entry = value" (all
+     * subsections but output, checkpoint, the solvers and the convergence
+     * study): a checkpoint records them, and a resume that would change
+     * one is refused.
+     */
+    std::vector<std::string> problem_definition;
 
     static void declare(ParameterHandler &prm);
     void        parse(ParameterHandler &prm);

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <sstream>
 
 namespace hemicontact
@@ -31,12 +32,15 @@ namespace hemicontact
       unsigned int                                n_steps     = 0;
       std::vector<double>                         energy;
       std::vector<std::pair<double, std::string>> pvd_records;
+      /** Parameters::problem_definition of the run that wrote it. */
+      std::vector<std::string> problem_definition;
 
       template <class Archive>
       void
       serialize(Archive &ar, const unsigned int)
       {
-        ar &step_number &time_step &n_steps &energy &pvd_records;
+        ar &step_number &time_step &n_steps &energy &pvd_records
+          &problem_definition;
       }
     };
 
@@ -180,6 +184,7 @@ namespace hemicontact
         state.n_steps     = n_steps;
         state.energy      = to_vector(energy);
         state.pvd_records = pvd_records;
+        state.problem_definition = parameters.problem_definition;
         {
           std::ofstream                 out(aside / (name + ".state"));
           boost::archive::text_oarchive archive(out);
@@ -242,6 +247,38 @@ namespace hemicontact
             "checkpoint: the checkpoint was written with another time step or "
             "end time than the parameter file now sets; resume with the "
             "parameters of the interrupted run.");
+    {
+      // a resume continues the same problem: every entry that defines it
+      // must be as the checkpoint recorded it
+      const auto split = [](const std::vector<std::string> &entries) {
+        std::map<std::string, std::string> result;
+        for (const std::string &e : entries)
+          {
+            const std::size_t eq = e.find(" = ");
+            result[e.substr(0, eq)] =
+              eq == std::string::npos ? "" : e.substr(eq + 3);
+          }
+        return result;
+      };
+      const auto  before = split(state.problem_definition);
+      const auto  now    = split(parameters.problem_definition);
+      std::string changes;
+      for (const auto &[entry, value] : now)
+        {
+          const auto it = before.find(entry);
+          const std::string old_value =
+            it == before.end() ? "(not recorded)" : it->second;
+          if (old_value != value)
+            changes += (changes.empty() ? "" : "; ") + entry + " = '" + value +
+                       "' (the checkpoint's run: '" + old_value + "')";
+        }
+      require(changes.empty(),
+              "checkpoint: the parameter file defines another problem than "
+              "the run that wrote '" +
+                (dir / (name + ".state")).string() + "': " + changes +
+                ". A resume continues the same problem; restore these "
+                "entries, or start a new run without --resume.");
+    }
 
     // the coarse mesh, then the refined one with its fields
     discretization.make_mesh(parameters.geometry, /*refine=*/false);

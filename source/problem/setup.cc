@@ -276,6 +276,15 @@ namespace hemicontact
                                          TrilinosWrappers::MPI::Vector &v,
                                          const std::string &          name) {
       VectorTools::interpolate(*discretization.mapping, dof_handler, f, v);
+      unsigned int n_not_finite = 0;
+      for (const auto i : locally_owned_dofs)
+        n_not_finite += !std::isfinite(v[i]);
+      require(Utilities::MPI::sum(n_not_finite, mpi_communicator) == 0,
+              "data: the " + name + " is not a finite number (NaN or Inf) at " +
+                std::to_string(Utilities::MPI::sum(n_not_finite,
+                                                   mpi_communicator)) +
+                " nodal values; check its expression ('data/" + name +
+                "', or 'manufactured solution/exact displacement').");
       double on_clamped = 0, largest = 0;
       for (const auto i : locally_owned_dofs)
         {
