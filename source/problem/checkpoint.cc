@@ -7,6 +7,7 @@
 
 #include <boost/archive/text_iarchive.hpp>
 #include <boost/archive/text_oarchive.hpp>
+#include <boost/crc.hpp>
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
@@ -34,15 +35,72 @@ namespace hemicontact
       std::vector<std::pair<double, std::string>> pvd_records;
       /** Parameters::problem_definition of the run that wrote it. */
       std::vector<std::string> problem_definition;
+      /** "name size crc32" of every other file of the checkpoint. */
+      std::vector<std::string> file_signatures;
 
       template <class Archive>
       void
       serialize(Archive &ar, const unsigned int)
       {
         ar &step_number &time_step &n_steps &energy &pvd_records
-          &problem_definition;
+          &problem_definition &file_signatures;
       }
     };
+
+    /** "name size crc32" of @p file ("name missing" if it cannot be read). */
+    std::string
+    file_signature(const fs::path &file)
+    {
+      std::ifstream in(file, std::ios::binary);
+      if (!in)
+        return file.filename().string() + " missing";
+      boost::crc_32_type crc;
+      std::vector<char>  buffer(1 << 20);
+      std::uintmax_t     size = 0;
+      while (in)
+        {
+          in.read(buffer.data(), buffer.size());
+          crc.process_bytes(buffer.data(), in.gcount());
+          size += in.gcount();
+        }
+      return file.filename().string() + " " + std::to_string(size) + " " +
+             std::to_string(crc.checksum());
+    }
+
+    /**
+     * Read the state of checkpoint @p name in @p dir into @p state and
+     * check every file against the signature it records. Returns why the
+     * checkpoint cannot be used, or an empty string.
+     */
+    std::string
+    checkpoint_damage(const fs::path &dir, const std::string &name,
+                      CheckpointState &state)
+    {
+      const fs::path state_file = dir / (name + ".state");
+      try
+        {
+          std::ifstream                 in(state_file);
+          boost::archive::text_iarchive archive(in);
+          archive >> state;
+        }
+      catch (const std::exception &e)
+        {
+          return "cannot read '" + state_file.string() + "': " + e.what();
+        }
+      if (state.file_signatures.empty())
+        return "'" + state_file.string() + "' lists no files";
+      for (const std::string &expected : state.file_signatures)
+        {
+          const std::string file = expected.substr(0, expected.find(' '));
+          const std::string found = file_signature(dir / file);
+          if (found != expected)
+            return "'" + (dir / file).string() +
+                   "' is not the file the checkpoint wrote (size and CRC-32 '" +
+                   found.substr(file.size() + 1) + "', recorded '" +
+                   expected.substr(file.size() + 1) + "')";
+        }
+      return "";
+    }
 
     std::vector<double>
     to_vector(const EnergyBalance &e)
@@ -175,10 +233,14 @@ namespace hemicontact
     transfer.prepare_for_serialization(
       std::vector<const TrilinosWrappers::MPI::Vector *>{&w, &u, &b});
     tria.save((aside / (name + ".mesh")).string());
+    MPI_Barrier(mpi_communicator);
 
     if (root)
       {
         CheckpointState state;
+        for (const auto &entry : fs::directory_iterator(aside))
+          state.file_signatures.push_back(file_signature(entry.path()));
+        std::sort(state.file_signatures.begin(), state.file_signatures.end());
         state.step_number = step_number;
         state.time_step   = time_step;
         state.n_steps     = n_steps;
@@ -225,22 +287,36 @@ namespace hemicontact
             "checkpoint: 'resume' is set but '" + dir.string() +
               "' holds no complete checkpoint; run without resume first (with "
               "'checkpoint/interval' > 0).");
-    const std::string name = checkpoint_name(steps.back());
-
-    CheckpointState state;
+    // the newest checkpoint whose files are all as written (checked on the
+    // root, which reads them anyway); a damaged one is reported and skipped
+    int         chosen = -1;
+    std::string damage;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      for (int i = static_cast<int>(steps.size()) - 1; i >= 0; --i)
+        {
+          CheckpointState   probe;
+          const std::string why =
+            checkpoint_damage(dir, checkpoint_name(steps[i]), probe);
+          if (why.empty())
+            {
+              chosen = i;
+              break;
+            }
+          damage += (damage.empty() ? "" : "; ") + why;
+          std::cerr << "hemicontact: warning: the checkpoint of step "
+                    << steps[i] << " is damaged: " << why << "."
+                    << (i > 0 ? " Trying the one before it." : "")
+                    << std::endl;
+        }
+    chosen = Utilities::MPI::broadcast(mpi_communicator, chosen, 0);
+    damage = Utilities::MPI::broadcast(mpi_communicator, damage, 0);
+    require(chosen >= 0, "checkpoint: no checkpoint in '" + dir.string() +
+                           "' can be resumed from: " + damage + ".");
+    const std::string name = checkpoint_name(steps[chosen]);
+    CheckpointState   state;
     {
-      std::ifstream in(dir / (name + ".state"));
-      try
-        {
-          boost::archive::text_iarchive archive(in);
-          archive >> state;
-        }
-      catch (const std::exception &e)
-        {
-          throw InputError("checkpoint: cannot read '" +
-                           (dir / (name + ".state")).string() +
-                           "': " + e.what());
-        }
+      const std::string why = checkpoint_damage(dir, name, state);
+      require(why.empty(), "checkpoint: " + why + ".");
     }
     require(std::abs(state.time_step - time_step) <= 1e-12 * time_step &&
               state.n_steps == n_steps,
