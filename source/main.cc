@@ -38,7 +38,9 @@ namespace
          "  hemicontact --help              this text\n\n"
          "Exit codes: 0 success, 1 usage, 2 input error, 3 solver failure,\n"
          "4 internal error, 5 interrupted (SIGTERM or 'checkpoint/stop after';\n"
-         "a checkpoint was written: continue with --resume).\n";
+         "a checkpoint was written: continue with --resume), 6 I/O error\n"
+         "(output could not be written, e.g. no space left on device; what\n"
+         "was written before stays valid).\n";
   }
 
   int
@@ -109,6 +111,12 @@ main(int argc, char **argv)
       if (root)
         std::cerr << "hemicontact: solver failure: " << e.what() << std::endl;
       return 3;
+    }
+  catch (const OutputError &e)
+    {
+      if (root)
+        std::cerr << "hemicontact: I/O error: " << e.what() << std::endl;
+      return 6;
     }
   catch (const RunInterrupted &e)
     {

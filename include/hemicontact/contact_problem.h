@@ -403,6 +403,13 @@ namespace hemicontact
      */
     void
     write_contact_csv();
+    /**
+     * On the root: the gathered rows (@p width values each) sorted by
+     * coordinates, written atomically; returns the reason of a failure.
+     */
+    std::string
+    write_contact_table(const std::vector<std::vector<double>> &gathered,
+                        const unsigned int                      width) const;
 
     MPI_Comm           mpi_communicator;
     Parameters         parameters;

@@ -32,6 +32,20 @@ namespace hemicontact
   };
 
   /**
+   * Output could not be written (no space left on device, no permission):
+   * the message names the file and the system's reason. main() exits with
+   * code 6; what was written before stays valid (tables end on a complete
+   * row, the .pvd series lists only complete files).
+   */
+  class OutputError : public std::runtime_error
+  {
+  public:
+    explicit OutputError(const std::string &message)
+      : std::runtime_error(message)
+    {}
+  };
+
+  /**
    * The run stopped before its end time on request (SIGTERM, or
    * 'checkpoint/stop after'), after writing a checkpoint to resume from.
    * main() exits with code 5.

@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <hemicontact/contact_problem.h>
+#include <hemicontact/output_file.h>
 
 #include <algorithm>
 #include <fstream>
@@ -62,8 +63,18 @@ namespace hemicontact
 
     const std::vector<std::vector<double>> gathered =
       Utilities::MPI::gather(mpi_communicator, rows, 0);
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
-      return;
+    std::string error;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      error = write_contact_table(gathered, width);
+    throw_if_any(error, mpi_communicator);
+  }
+
+  template <int dim>
+  std::string
+  ContactProblem<dim>::write_contact_table(
+    const std::vector<std::vector<double>> &gathered,
+    const unsigned int                      width) const
+  {
 
     std::vector<std::vector<double>> table;
     for (const std::vector<double> &part : gathered)
@@ -79,7 +90,7 @@ namespace hemicontact
     std::ostringstream name;
     name << parameters.output.directory << "/contact_"
          << Utilities::int_to_string(step_number, 5) << ".csv";
-    std::ofstream file(name.str());
+    std::ostringstream file;
     const char   *xyz[] = {"x", "y", "z"};
     for (unsigned int d = 0; d < dim; ++d)
       file << xyz[d] << ",";
@@ -113,10 +124,13 @@ namespace hemicontact
           }
         file << "\n";
       }
+    return write_atomically(name.str(), file.str());
   }
 
 #define HEMICONTACT_INSTANTIATE(dim)                                           \
-  template void ContactProblem<dim>::write_contact_csv();
+  template void        ContactProblem<dim>::write_contact_csv();              \
+  template std::string ContactProblem<dim>::write_contact_table(              \
+    const std::vector<std::vector<double>> &, const unsigned int) const;
 
   HEMICONTACT_INSTANTIATE(2)
   HEMICONTACT_INSTANTIATE(3)

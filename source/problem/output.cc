@@ -6,7 +6,10 @@
 
 #include <hemicontact/contact_problem.h>
 #include <hemicontact/input_error.h>
+#include <hemicontact/output_file.h>
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -172,22 +175,27 @@ namespace hemicontact
       VectorTools::point_values<dim>(probe_cache, dof_handler, w);
     const auto u_values =
       VectorTools::point_values<dim>(probe_cache, dof_handler, u);
+    std::string error;
     if (probes_file.is_open())
       {
-        probes_file << std::setprecision(10);
+        std::ostringstream rows;
+        rows << std::setprecision(10);
         for (unsigned int p = 0; p < probe_points.size(); ++p)
           {
-            probes_file << step_number << "," << get_time() << "," << p;
+            rows << step_number << "," << get_time() << "," << p;
             for (unsigned int d = 0; d < dim; ++d)
-              probes_file << "," << probe_points[p][d];
+              rows << "," << probe_points[p][d];
             for (unsigned int d = 0; d < dim; ++d)
-              probes_file << "," << w_values[p][d];
+              rows << "," << w_values[p][d];
             for (unsigned int d = 0; d < dim; ++d)
-              probes_file << "," << u_values[p][d];
-            probes_file << "\n";
+              rows << "," << u_values[p][d];
+            rows << "\n";
           }
-        probes_file.flush();
+        error = append_complete(probes_file,
+                                parameters.output.directory + "/probes.csv",
+                                rows.str());
       }
+    throw_if_any(error, mpi_communicator);
   }
 
   template <int dim>
@@ -270,40 +278,66 @@ namespace hemicontact
       }
 
     data_out.build_patches(*discretization.mapping);
-    const std::string pvtu = data_out.write_vtu_with_pvtu_record(
-      parameters.output.directory + "/", "solution", step_number,
-      mpi_communicator, 5);
+    // a failed write (no space left) names the files; the .pvd series is
+    // replaced atomically and lists only the files written completely
+    std::string pvtu, error;
+    errno = 0;
+    try
+      {
+        pvtu = data_out.write_vtu_with_pvtu_record(
+          parameters.output.directory + "/", "solution", step_number,
+          mpi_communicator, 5);
+      }
+    catch (const ExceptionBase &)
+      {
+        error = "cannot write the solution files of step " +
+                std::to_string(step_number) + " in '" +
+                parameters.output.directory + "': " +
+                (errno != 0 ? std::strerror(errno) : "the write failed") + ".";
+      }
+    throw_if_any(error, mpi_communicator);
     pvd_records.emplace_back(get_time(), pvtu);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
-        std::ofstream pvd(parameters.output.directory + "/solution.pvd");
+        std::ostringstream pvd;
         DataOutBase::write_pvd_record(pvd, pvd_records);
+        error = write_atomically(parameters.output.directory + "/solution.pvd",
+                                 pvd.str());
+        if (!error.empty())
+          pvd_records.pop_back();
       }
+    throw_if_any(error, mpi_communicator);
   }
 
   template <int dim>
   void
   ContactProblem<dim>::write_step_row(const StepStatistics &s)
   {
-    if (!steps_file.is_open())
-      return;
-    const EnergyBalance &e = energy;
-    steps_file << std::setprecision(12) << s.step << "," << s.time << ","
-               << s.n_cells << "," << s.n_dofs << "," << s.newton_iterations << ","
-               << s.linear_iterations << "," << s.n_separating << ","
-               << s.n_normal_stick << "," << s.n_damped << "," << s.n_stick
-               << "," << s.n_slip << "," << s.residual << "," << e.kinetic
-               << "," << e.elastic << "," << e.viscous_dissipation << ","
-               << e.friction_dissipation << "," << e.damping_dissipation << ","
-               << e.external_work << "," << e.numerical_dissipation << ","
-               << e.defect() << "," << e.relative_defect() << ","
-               << s.n_damped_steps << "," << s.wall_seconds << ","
-               << (s.adapted ? 1 : 0) << "," << s.kinetic_before_adaptation
-               << "," << s.elastic_before_adaptation << ","
-               << s.kinetic_after_adaptation << ","
-               << s.elastic_after_adaptation << "," << e.transfer_change
-               << "," << s.time_step_halvings << "\n";
-    steps_file.flush();
+    std::string error;
+    if (steps_file.is_open())
+      {
+        const EnergyBalance &e = energy;
+        std::ostringstream   row;
+        row << std::setprecision(12) << s.step << "," << s.time << ","
+            << s.n_cells << "," << s.n_dofs << "," << s.newton_iterations
+            << "," << s.linear_iterations << "," << s.n_separating << ","
+            << s.n_normal_stick << "," << s.n_damped << "," << s.n_stick << ","
+            << s.n_slip << "," << s.residual << "," << e.kinetic << ","
+            << e.elastic << "," << e.viscous_dissipation << ","
+            << e.friction_dissipation << "," << e.damping_dissipation << ","
+            << e.external_work << "," << e.numerical_dissipation << ","
+            << e.defect() << "," << e.relative_defect() << ","
+            << s.n_damped_steps << "," << s.wall_seconds << ","
+            << (s.adapted ? 1 : 0) << "," << s.kinetic_before_adaptation << ","
+            << s.elastic_before_adaptation << ","
+            << s.kinetic_after_adaptation << "," << s.elastic_after_adaptation
+            << "," << e.transfer_change << "," << s.time_step_halvings
+            << "\n";
+        error = append_complete(steps_file,
+                                parameters.output.directory + "/steps.csv",
+                                row.str());
+      }
+    throw_if_any(error, mpi_communicator);
   }
 
   template <int dim>

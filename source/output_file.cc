@@ -1,0 +1,78 @@
+#include <deal.II/base/mpi.h>
+
+#include <hemicontact/input_error.h>
+#include <hemicontact/output_file.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <system_error>
+
+namespace hemicontact
+{
+  namespace
+  {
+    std::string
+    reason(const std::string &path, const int error_number)
+    {
+      return "cannot write '" + path + "': " +
+             (error_number != 0 ? std::strerror(error_number) :
+                                  "the write failed") +
+             ".";
+    }
+  } // namespace
+
+  std::string
+  append_complete(std::ofstream &file, const std::string &path,
+                  const std::string &text)
+  {
+    const std::streampos before = file.tellp();
+    errno                       = 0;
+    file << text;
+    file.flush();
+    if (file)
+      return "";
+    const int error_number = errno;
+    file.close();
+    std::error_code ec;
+    if (before >= 0)
+      std::filesystem::resize_file(path, static_cast<std::uintmax_t>(before),
+                                   ec);
+    return reason(path, error_number);
+  }
+
+  std::string
+  write_atomically(const std::string &path, const std::string &text)
+  {
+    const std::string aside = path + ".tmp";
+    errno                   = 0;
+    {
+      std::ofstream out(aside);
+      out << text;
+      out.flush();
+      if (out)
+        {
+          out.close();
+          std::error_code ec;
+          std::filesystem::rename(aside, path, ec);
+          if (!ec)
+            return "";
+          std::filesystem::remove(aside, ec);
+          return "cannot write '" + path + "': " + ec.message() + ".";
+        }
+    }
+    const int       error_number = errno;
+    std::error_code ec;
+    std::filesystem::remove(aside, ec);
+    return reason(path, error_number);
+  }
+
+  void
+  throw_if_any(const std::string &error, MPI_Comm comm)
+  {
+    for (const std::string &message :
+         dealii::Utilities::MPI::all_gather(comm, error))
+      if (!message.empty())
+        throw OutputError(message);
+  }
+} // namespace hemicontact
