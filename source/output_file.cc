@@ -3,6 +3,10 @@
 #include <hemicontact/input_error.h>
 #include <hemicontact/output_file.h>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -65,6 +69,31 @@ namespace hemicontact
     std::error_code ec;
     std::filesystem::remove(aside, ec);
     return reason(path, error_number);
+  }
+
+  OutputLock::OutputLock(const std::string &directory)
+  {
+    const std::string path = directory + "/.hemicontact.lock";
+    descriptor             = ::open(path.c_str(), O_RDWR | O_CREAT, 0644);
+    if (descriptor < 0)
+      throw OutputError("cannot create the lock file '" + path +
+                        "': " + std::strerror(errno) + ".");
+    if (::flock(descriptor, LOCK_EX | LOCK_NB) != 0)
+      {
+        ::close(descriptor);
+        descriptor = -1;
+        throw InputError(
+          "another hemicontact run is writing into '" + directory +
+          "' (it holds '" + path +
+          "'); two runs in one output directory would mix their files. Set "
+          "another 'output/directory', or wait for the other run to end.");
+      }
+  }
+
+  OutputLock::~OutputLock()
+  {
+    if (descriptor >= 0)
+      ::close(descriptor);
   }
 
   void

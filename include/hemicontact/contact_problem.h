@@ -18,6 +18,7 @@
 #include <hemicontact/energy_balance.h>
 #include <hemicontact/kelvin_voigt.h>
 #include <hemicontact/linear_solver.h>
+#include <hemicontact/output_file.h>
 #include <hemicontact/normal_law.h>
 #include <hemicontact/parameters.h>
 #include <hemicontact/problem_data.h>
@@ -471,6 +472,8 @@ namespace hemicontact
     std::vector<Point<dim>>                     probe_points;
     Utilities::MPI::RemotePointEvaluation<dim>  probe_cache;
     std::ofstream                               steps_file;
+    /** Held by the root while the run writes its output directory. */
+    std::unique_ptr<OutputLock>                 output_lock;
     std::ofstream                               probes_file;
   };
 } // namespace hemicontact

@@ -35,4 +35,25 @@ namespace hemicontact
   void
   throw_if_any(const std::string &error, MPI_Comm comm);
   /** @} */
+
+  /**
+   * An exclusive lock on an output directory for the lifetime of the
+   * object (an flock on DIRECTORY/.hemicontact.lock, released by the
+   * system also when the process is killed): a second run writing into
+   * the same directory at the same time is refused.
+   */
+  class OutputLock
+  {
+  public:
+    /** Lock @p directory (which must exist); throws an InputError naming
+     *  it if another process holds the lock. */
+    explicit OutputLock(const std::string &directory);
+    ~OutputLock();
+    OutputLock(const OutputLock &) = delete;
+    OutputLock &
+    operator=(const OutputLock &) = delete;
+
+  private:
+    int descriptor = -1;
+  };
 } // namespace hemicontact

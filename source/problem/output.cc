@@ -76,6 +76,15 @@ namespace hemicontact
           error = "cannot create the output directory '" + dir +
                   "': " + ec.message() + ".";
         else
+          try
+            {
+              output_lock = std::make_unique<OutputLock>(dir);
+            }
+          catch (const std::exception &e)
+            {
+              error = e.what();
+            }
+        if (error.empty())
           {
             const bool continuing =
               parameters.checkpoint.resume &&
