@@ -7,7 +7,10 @@
 #include <hemicontact/normal_law.h>
 #include <hemicontact/parameters.h>
 
+#include <algorithm>
 #include <cctype>
+#include <filesystem>
+#include <iterator>
 #include <set>
 #include <fstream>
 #include <sstream>
@@ -124,14 +127,43 @@ namespace hemicontact
   read_parameters(ParameterHandler &prm, const std::string &filename,
                   const std::string &overrides)
   {
+    std::string text;
     {
-      std::ifstream probe(filename);
+      std::error_code ec;
+      require(!std::filesystem::is_directory(filename, ec),
+              "the parameter file '" + filename +
+                "' is a directory; give the .prm file in it.");
+      std::ifstream probe(filename, std::ios::binary);
       require(static_cast<bool>(probe),
               "cannot open the parameter file '" + filename +
                 "': no such file or not readable.");
+      text.assign(std::istreambuf_iterator<char>(probe),
+                  std::istreambuf_iterator<char>());
+      require(text.find_first_not_of(" \t\r\n") != std::string::npos,
+              "the parameter file '" + filename +
+                "' is empty; it must at least set what differs from the "
+                "defaults (hemicontact --print-parameters lists them).");
     }
+    {
+      const std::string head = text.substr(0, 4096);
+      require(std::none_of(head.begin(), head.end(),
+                           [](const char c) {
+                             const auto u = static_cast<unsigned char>(c);
+                             return u < 32 && c != '\t' && c != '\n' &&
+                                    c != '\r' && c != '\f';
+                           }),
+              "the parameter file '" + filename +
+                "' is not a text file (it holds control characters); give "
+                "a .prm file (hemicontact --print-parameters writes one).");
+    }
+    // a UTF-8 byte order mark (written by some editors) is not part of the
+    // first line
+    const bool bom = text.rfind("\xEF\xBB\xBF", 0) == 0;
     return read_with(prm, "'" + filename + "'", [&]() {
-      prm.parse_input(filename);
+      if (bom)
+        prm.parse_input_from_string(text.substr(3), "", false);
+      else
+        prm.parse_input(filename);
       if (!overrides.empty())
         prm.parse_input_from_string(overrides);
     });

@@ -113,6 +113,27 @@ namespace hemicontact
            "kinetic_before_adaptation,elastic_before_adaptation,"
            "kinetic_after_adaptation,elastic_after_adaptation,"
            "energy_transfer_change,time_step_halvings\n";
+    // probes.csv (setup_probes() has checked the points)
+    if (!probe_points.empty() &&
+        Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        const std::string file = dir + "/probes.csv";
+        if (parameters.checkpoint.resume && std::filesystem::exists(file))
+          probes_file.open(file, std::ios::app); // continue_tables() cut it
+        else
+          {
+            probes_file.open(file);
+            probes_file << "step,time,point";
+            const char *xyz[] = {"x", "y", "z"};
+            for (unsigned int d = 0; d < dim; ++d)
+              probes_file << "," << xyz[d];
+            for (unsigned int d = 0; d < dim; ++d)
+              probes_file << ",w_" << xyz[d];
+            for (unsigned int d = 0; d < dim; ++d)
+              probes_file << ",u_" << xyz[d];
+            probes_file << "\n";
+          }
+      }
   }
 
   template <int dim>
@@ -148,25 +169,6 @@ namespace hemicontact
                        *discretization.mapping);
     require(probe_cache.all_points_found(),
             "output: a probe point lies outside the mesh.");
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      {
-        const std::string file = parameters.output.directory + "/probes.csv";
-        if (parameters.checkpoint.resume && std::filesystem::exists(file))
-          {
-            probes_file.open(file, std::ios::app); // continue_tables() cut it
-            return;
-          }
-        probes_file.open(file);
-        probes_file << "step,time,point";
-        const char *xyz[] = {"x", "y", "z"};
-        for (unsigned int d = 0; d < dim; ++d)
-          probes_file << "," << xyz[d];
-        for (unsigned int d = 0; d < dim; ++d)
-          probes_file << ",w_" << xyz[d];
-        for (unsigned int d = 0; d < dim; ++d)
-          probes_file << ",u_" << xyz[d];
-        probes_file << "\n";
-      }
   }
 
   template <int dim>

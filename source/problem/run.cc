@@ -165,8 +165,8 @@ namespace hemicontact
       setup_from_checkpoint();
     else
       setup();
+    setup_probes(); // checks the points before the output is touched
     open_tables();
-    setup_probes();
     termination_requested = 0;
     std::signal(SIGTERM, request_termination);
 

@@ -26,8 +26,19 @@ file(REMOVE_RECURSE ${_dir})
 file(MAKE_DIRECTORY ${_dir})
 # output of an earlier run in the default output directory must survive
 file(WRITE ${_dir}/output/steps.csv "an earlier run\n")
+# @BAD_INPUT_DIR@ in the file (e.g. a mesh file shipped in bad_input/meshes)
+# stands for the directory of the corpus: the run reads a copy with it
+# replaced
+file(READ ${PRM} _text)
+set(_file ${PRM})
+if(_text MATCHES "@BAD_INPUT_DIR@")
+  get_filename_component(_corpus ${PRM} DIRECTORY)
+  string(REPLACE "@BAD_INPUT_DIR@" "${_corpus}" _text "${_text}")
+  set(_file ${_dir}/run.prm)
+  file(WRITE ${_file} "${_text}")
+endif()
 if(NOT DEFINED _argument)
-  set(_argument ${PRM})
+  set(_argument ${_file})
 endif()
 execute_process(COMMAND ${EXE} ${_argument}
   WORKING_DIRECTORY ${_dir}
