@@ -8,12 +8,13 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <hemicontact/contact_laws.h>
 #include <hemicontact/contact_problem.h>
 #include <hemicontact/convergence_study.h>
 #include <hemicontact/input_error.h>
-#include <hemicontact/contact_laws.h>
 #include <hemicontact/parameters.h>
 
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -94,6 +95,14 @@ namespace
 int
 main(int argc, char **argv)
 {
+  // OpenMPI's MPI-IO guards every file open (the checkpoints' field data)
+  // with a named POSIX semaphore of its 'sm' shared-file-pointer component,
+  // keyed by the file's name. A run killed inside that open leaves the
+  // semaphore taken, and every later run that opens a file of the same
+  // name (the resume) waits for it forever. The other components lock with
+  // fcntl, which the system releases when a process dies; a user's own
+  // setting of the variable is kept.
+  setenv("OMPI_MCA_sharedfp", "^sm", /*overwrite=*/0);
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   try

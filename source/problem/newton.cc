@@ -430,10 +430,20 @@ namespace hemicontact
             " iterations: relative nonsmooth residual " +
             format_number(stats.residual) + " (tolerance " +
             format_number(settings.tolerance) + "), " +
-            std::to_string(n_changed) +
-            " nodes still changing branch. Reduce the time step, raise "
-            "'nonlinear solver/max iterations', or check the convexity "
-            "warning at start-up.");
+            (n_changed > 0 ?
+               std::to_string(n_changed) +
+                 " nodes still changing branch. Reduce the time step, raise "
+                 "'nonlinear solver/max iterations', or check the convexity "
+                 "warning at start-up." :
+               std::string(
+                 "with no node changing branch: the iteration stalled on "
+                 "fixed branches, where it is a linear solve, so the "
+                 "residual is limited by the accuracy of the linear solves "
+                 "('linear solver/relative tolerance' = ") +
+                 format_number(lin_settings.relative_tolerance) +
+                 ") or by the convexity of the step. Loosen the Newton "
+                 "tolerance, tighten the linear solver's, or reduce the "
+                 "time step."));
 
         // inexact Newton: the Krylov tolerance follows the decrease of the
         // nonsmooth residual (Eisenstat-Walker, choice 2), but never asks for
