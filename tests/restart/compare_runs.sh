@@ -7,10 +7,23 @@
 set -euo pipefail
 a=$1; b=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+# the compared columns of steps.csv, by name (all columns of probes.csv)
+steps_columns="step time n_cells n_dofs n_separating n_normal_stick n_damped n_stick n_slip
+  kinetic_energy elastic_energy viscous_dissipation friction_dissipation
+  normal_damping_dissipation external_work numerical_dissipation"
+columns_of() { # FILE [COLUMN...]: those columns (all if none), in that order
+  local file=$1; shift
+  awk -F, -v want="$*" 'BEGIN { OFS = "," }
+    NR == 1 { n = split(want, w, " "); if (n == 0) for (i = 1; i <= NF; ++i) w[++n] = $i
+              for (j = 1; j <= n; ++j) { col[j] = 0
+                for (i = 1; i <= NF; ++i) if ($i == w[j]) col[j] = i
+                if (col[j] == 0) { print "no column " w[j] " in " FILENAME > "/dev/stderr"; exit 1 } } }
+    { line = $col[1]; for (j = 2; j <= n; ++j) line = line OFS $col[j]; print line }' "$file"
+}
 for f in steps.csv probes.csv; do
   [ -f "$a/$f" ] || continue
-  if [ "$f" = steps.csv ]; then fields=1-4,7-11,13-19; else fields=1-; fi
-  cut -d, -f$fields "$a/$f" > "$tmp/a"; cut -d, -f$fields "$b/$f" > "$tmp/b"
+  if [ "$f" = steps.csv ]; then columns=$steps_columns; else columns=""; fi
+  columns_of "$a/$f" $columns > "$tmp/a"; columns_of "$b/$f" $columns > "$tmp/b"
   if [ "$(wc -l < "$tmp/a")" != "$(wc -l < "$tmp/b")" ]; then
     echo "FAIL: $f has $(wc -l < "$tmp/a") rows in $a but $(wc -l < "$tmp/b") in $b"; exit 1
   fi
