@@ -24,6 +24,7 @@
 #include <hemicontact/problem_data.h>
 #include <hemicontact/step_statistics.h>
 
+#include <chrono>
 #include <fstream>
 #include <memory>
 #include <string>
@@ -469,6 +470,10 @@ namespace hemicontact
     unsigned int step_number = 0;
 
     std::vector<std::pair<double, std::string>> pvd_records;
+    /** Wall clock and step number when the time loop started (for the
+     *  time left on the progress line). */
+    std::chrono::steady_clock::time_point loop_start;
+    unsigned int                          loop_start_step = 0;
     std::vector<Point<dim>>                     probe_points;
     Utilities::MPI::RemotePointEvaluation<dim>  probe_cache;
     std::ofstream                               steps_file;

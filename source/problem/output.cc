@@ -9,6 +9,8 @@
 #include <hemicontact/output_file.h>
 
 #include <cerrno>
+#include <chrono>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <iomanip>
@@ -376,7 +378,23 @@ namespace hemicontact
       }
     else
       {
-        line << "step " << std::setw(5) << s.step << "  t = " << std::fixed
+        // the time left, from the mean wall time of this run's steps
+        const double elapsed =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                        loop_start)
+            .count();
+        const unsigned int done = s.step - loop_start_step;
+        const double left = done > 0 ? elapsed / done * (n_steps - s.step) : 0;
+        const auto   seconds = static_cast<unsigned long>(std::lround(left));
+        std::ostringstream eta;
+        if (seconds >= 3600)
+          eta << seconds / 3600 << "h" << std::setw(2) << std::setfill('0')
+              << seconds % 3600 / 60 << "m";
+        else
+          eta << seconds / 60 << "m" << std::setw(2) << std::setfill('0')
+              << seconds % 60 << "s";
+        line << "step " << std::setw(5) << s.step << "/" << n_steps
+             << "  left " << std::setw(6) << eta.str() << "  t = " << std::fixed
              << std::setprecision(4) << s.time << "  newton " << std::setw(2)
              << s.newton_iterations << "  krylov " << std::setw(4)
              << s.linear_iterations << "  sep/stick/damped " << s.n_separating

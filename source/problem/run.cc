@@ -218,6 +218,8 @@ namespace hemicontact
       }
     Timer        since_checkpoint;
     unsigned int steps_this_run = 0;
+    loop_start      = std::chrono::steady_clock::now();
+    loop_start_step = step_number;
 
     RunTotals totals;
     bool      restarted = false; // by 'adaptivity/pre-refinement steps'
