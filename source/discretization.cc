@@ -18,6 +18,25 @@
 
 namespace hemicontact
 {
+  namespace
+  {
+    /**
+     * Whether the Gmsh file read by @p file says in its $MeshFormat
+     * section that it is binary (file-type 1); rewinds the stream.
+     */
+    bool
+    gmsh_file_is_binary(std::ifstream &file)
+    {
+      std::string section, version;
+      int         file_type = 0;
+      file >> section >> version >> file_type;
+      const bool binary = section == "$MeshFormat" && file_type == 1;
+      file.clear();
+      file.seekg(0);
+      return binary;
+    }
+  } // namespace
+
   template <int dim>
   Discretization<dim>::Discretization(const GeometryParameters &geometry,
                                       MPI_Comm                  comm)
@@ -104,7 +123,14 @@ namespace hemicontact
         grid_in.attach_triangulation(*triangulation);
         try
           {
-            grid_in.read_msh(file);
+            // MSH 2.2 and 4.1 in ASCII: deal.II's own reader, which takes
+            // every physical tag (named or not) as the boundary id. Binary
+            // files: the Gmsh library's reader (deal.II 9.4 assigns it
+            // boundary ids of named physical groups only).
+            if (gmsh_file_is_binary(file))
+              grid_in.read_msh(geometry.mesh_file);
+            else
+              grid_in.read_msh(file);
           }
         catch (const ExceptionBase &e)
           {
@@ -112,6 +138,11 @@ namespace hemicontact
             e.print_info(s);
             throw InputError("geometry: cannot read the Gmsh file '" +
                              geometry.mesh_file + "': " + s.str());
+          }
+        catch (const std::string &gmsh_message)
+          {
+            throw InputError("geometry: cannot read the Gmsh file '" +
+                             geometry.mesh_file + "': " + gmsh_message);
           }
         const bool all_hypercubes =
           triangulation->all_reference_cells_are_hyper_cube();

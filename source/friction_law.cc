@@ -29,26 +29,32 @@ namespace hemicontact
 
   namespace
   {
-    template <class Law>
-    FrictionLawEntry
-    entry()
+    std::vector<FrictionLawEntry> &
+    registry()
     {
-      return {Law::law_name, &Law::declare_parameters,
-              [](ParameterHandler &prm) -> std::unique_ptr<FrictionLaw> {
-                return std::make_unique<Law>(prm);
-              }};
+      static std::vector<FrictionLawEntry> laws = {
+        friction_law_entry<TrescaLaw>(),
+        friction_law_entry<SlipRateWeakeningLaw>(),
+        friction_law_entry<PiecewiseLinearFrictionLaw>(),
+      };
+      return laws;
     }
   } // namespace
 
   const std::vector<FrictionLawEntry> &
   friction_law_registry()
   {
-    static const std::vector<FrictionLawEntry> registry = {
-      entry<TrescaLaw>(),
-      entry<SlipRateWeakeningLaw>(),
-      entry<PiecewiseLinearFrictionLaw>(),
-    };
-    return registry;
+    return registry();
+  }
+
+  void
+  register_friction_law(const FrictionLawEntry &entry)
+  {
+    for (const FrictionLawEntry &e : registry())
+      AssertThrow(e.name != entry.name,
+                  ExcMessage("friction law '" + entry.name +
+                             "' is registered twice."));
+    registry().push_back(entry);
   }
 
   void

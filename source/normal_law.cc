@@ -43,27 +43,33 @@ namespace hemicontact
 
   namespace
   {
-    template <class Law>
-    NormalLawEntry
-    entry()
+    std::vector<NormalLawEntry> &
+    registry()
     {
-      return {Law::law_name, &Law::declare_parameters,
-              [](ParameterHandler &prm) -> std::unique_ptr<NormalLaw> {
-                return std::make_unique<Law>(prm);
-              }};
+      static std::vector<NormalLawEntry> laws = {
+        normal_law_entry<ExponentialLaw>(),
+        normal_law_entry<PiecewiseLinearLaw>(),
+        normal_law_entry<LinearDampingLaw>(),
+        normal_law_entry<NoNormalResistance>(),
+      };
+      return laws;
     }
   } // namespace
 
   const std::vector<NormalLawEntry> &
   normal_law_registry()
   {
-    static const std::vector<NormalLawEntry> registry = {
-      entry<ExponentialLaw>(),
-      entry<PiecewiseLinearLaw>(),
-      entry<LinearDampingLaw>(),
-      entry<NoNormalResistance>(),
-    };
-    return registry;
+    return registry();
+  }
+
+  void
+  register_normal_law(const NormalLawEntry &entry)
+  {
+    for (const NormalLawEntry &e : registry())
+      AssertThrow(e.name != entry.name,
+                  ExcMessage("normal law '" + entry.name +
+                             "' is registered twice."));
+    registry().push_back(entry);
   }
 
   void

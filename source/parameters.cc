@@ -220,8 +220,8 @@ namespace hemicontact
     prm.enter_subsection("time");
     prm.declare_entry("end time", "1", Patterns::Double(), "Final time T > 0.");
     prm.declare_entry("time step", "0.01", Patterns::Double(),
-                      "Time step k > 0; the number of steps is round(T/k) and "
-                      "k is adjusted to T/N.");
+                      "Time step k > 0; it must divide the end time (the run "
+                      "takes T/k uniform steps).");
     prm.leave_subsection();
   }
 

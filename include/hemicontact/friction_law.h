@@ -82,9 +82,35 @@ namespace hemicontact
     std::function<std::unique_ptr<FrictionLaw>(ParameterHandler &)> create;
   };
 
-  /** All registered friction laws. Adding a law = one class + one line here. */
+  /**
+   * The registry entry of a law class with a static `law_name`, a static
+   * `declare_parameters(ParameterHandler &)` and a constructor from the
+   * ParameterHandler (positioned in subsection "friction law").
+   */
+  template <class Law>
+  FrictionLawEntry
+  friction_law_entry()
+  {
+    return {Law::law_name, &Law::declare_parameters,
+            [](ParameterHandler &prm) -> std::unique_ptr<FrictionLaw> {
+              return std::make_unique<Law>(prm);
+            }};
+  }
+
+  /**
+   * All registered friction laws: the shipped ones (one line each in
+   * source/friction_law.cc) and those added by register_friction_law().
+   */
   const std::vector<FrictionLawEntry> &
   friction_law_registry();
+
+  /**
+   * Add a law to the registry, e.g. from a program that links the library:
+   * register_friction_law(friction_law_entry<MyLaw>()). Call it before any
+   * parameters are declared; a name that is already registered throws.
+   */
+  void
+  register_friction_law(const FrictionLawEntry &entry);
 
   /** Declare subsection "friction law" with "law" and one subsection per law. */
   void

@@ -88,9 +88,35 @@ namespace hemicontact
   get_law_double(ParameterHandler &prm, const std::string &law,
                  const std::string &key);
 
-  /** All registered laws. Adding a law = one class + one line here. */
+  /**
+   * All registered normal laws: the shipped ones (one line each in
+   * source/normal_law.cc) and those added by register_normal_law().
+   */
   const std::vector<NormalLawEntry> &
   normal_law_registry();
+
+  /**
+   * The registry entry of a law class with a static `law_name`, a static
+   * `declare_parameters(ParameterHandler &)` and a constructor from the
+   * ParameterHandler (positioned in subsection "normal law").
+   */
+  template <class Law>
+  NormalLawEntry
+  normal_law_entry()
+  {
+    return {Law::law_name, &Law::declare_parameters,
+            [](ParameterHandler &prm) -> std::unique_ptr<NormalLaw> {
+              return std::make_unique<Law>(prm);
+            }};
+  }
+
+  /**
+   * Add a law to the registry, e.g. from a program that links the library:
+   * register_normal_law(normal_law_entry<MyLaw>()). Call it before any
+   * parameters are declared; a name that is already registered throws.
+   */
+  void
+  register_normal_law(const NormalLawEntry &entry);
 
   /** Declare subsection "normal law" with "law" and one subsection per law. */
   void

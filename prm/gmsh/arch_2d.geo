@@ -3,10 +3,12 @@
 // its right foot rests on the foundation (contact), the outer arc carries
 // the load. A structured quadrilateral mesh (Recombine + Transfinite).
 //
-// Regenerate the committed mesh (Gmsh 4.8, Debian package 'gmsh'):
-//   gmsh -2 -format msh22 prm/gmsh/arch_2d.geo -o prm/gmsh/arch_2d.msh
+// Regenerate the committed mesh (Gmsh 4.8, Debian package 'gmsh'; MSH 4.1):
+//   gmsh -2 prm/gmsh/arch_2d.geo -o prm/gmsh/arch_2d.msh
+// (tests/io/meshes/ holds the same mesh as MSH 2.2, '-format msh22', and
+// as binary MSH 4.1, '-bin', for tests/io/gmsh_formats.sh.)
 //
-// Physical tags become deal.II boundary ids:
+// Physical tags (the groups are named) become deal.II boundary ids:
 //   1 left foot (x in [-1.5,-1], y = 0)   -> clamped boundary ids
 //   2 right foot (x in [1,1.5], y = 0)    -> contact boundary ids
 //   3 outer arc (radius 1.5)              -> traction boundary ids
@@ -43,8 +45,8 @@ Transfinite Surface{1};
 Transfinite Surface{2};
 Recombine Surface{1, 2};
 
-Physical Curve(1) = {4};
-Physical Curve(2) = {1};
-Physical Curve(3) = {2, 3};
-Physical Curve(4) = {5, 6};
-Physical Surface(10) = {1, 2};
+Physical Curve("clamped", 1) = {4};
+Physical Curve("contact", 2) = {1};
+Physical Curve("load", 3) = {2, 3};
+Physical Curve("free", 4) = {5, 6};
+Physical Surface("arch", 10) = {1, 2};
