@@ -2,55 +2,23 @@
 """Read deal.II's 2D VTU output and compare Q1 fields exactly on a fine grid.
 
 deal.II writes every cell as a patch of its own four vertices (lexicographic
-order) in zlib-compressed, base64-encoded binary arrays. A Q1 field of a
+order); meshio reads the file. A Q1 field of a
 mesh that refines the same coarse mesh of axis-parallel rectangles is
 bilinear on every cell of any finer uniform grid of that mesh, so its values
 at the fine grid's vertices represent it exactly there: the L2 and H1
 norms of a difference are then computed exactly, cell by cell, with the Q1
 mass and stiffness matrices.
 """
-import base64
-import re
-import struct
-import zlib
-
+import meshio
 import numpy as np
-
-_TYPES = {"Float32": np.float32, "Float64": np.float64, "Int32": np.int32,
-          "UInt8": np.uint8, "Int64": np.int64}
-
-
-def _decode(text, dtype):
-    """One compressed binary DataArray: a base64 header (block count, block
-    size, last block size, compressed sizes) then the base64 blocks."""
-    text = text.strip()
-    first = base64.b64decode(text[:8])
-    n_blocks = struct.unpack("<I", first[:4])[0]
-    header_chars = 4 * ((4 * (3 + n_blocks) + 2) // 3)
-    header = struct.unpack("<%dI" % (3 + n_blocks),
-                           base64.b64decode(text[:header_chars])[:4 * (3 + n_blocks)])
-    data = base64.b64decode(text[header_chars:])
-    raw, offset = b"", 0
-    for size in header[3:]:
-        raw += zlib.decompress(data[offset:offset + size])
-        offset += size
-    return np.frombuffer(raw, dtype=dtype)
 
 
 def read_vtu(path):
-    """Points (n x 3) and the named point data arrays of one VTU piece."""
-    text = open(path).read()
-    arrays = {}
-    for match in re.finditer(r'<DataArray([^>]*)>(.*?)</DataArray>', text,
-                             re.S):
-        attributes, body = match.groups()
-        name = re.search(r'Name="([^"]*)"', attributes)
-        dtype = _TYPES[re.search(r'type="([^"]*)"', attributes).group(1)]
-        components = re.search(r'NumberOfComponents="(\d+)"', attributes)
-        values = _decode(body, dtype)
-        if components:
-            values = values.reshape(-1, int(components.group(1)))
-        arrays[name.group(1) if name else "points"] = values
+    """Points (n x 3) and the named point data arrays of one VTU piece
+    (read with meshio; deal.II writes every field as point data)."""
+    mesh = meshio.read(path)
+    arrays = dict(mesh.point_data)
+    arrays["points"] = mesh.points
     return arrays
 
 
