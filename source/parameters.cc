@@ -480,6 +480,13 @@ namespace hemicontact
     prm.declare_entry("vtu interval", "10", Patterns::Integer(0),
                       "Write VTU/PVTU (and the .pvd series) every this many "
                       "steps; 0 writes none.");
+    prm.declare_entry("compression", "best speed",
+                      Patterns::Selection("best speed|default|best "
+                                          "compression|none"),
+                      "zlib compression of the VTU files: 'best speed' "
+                      "(fast, files somewhat larger), 'default', 'best "
+                      "compression' (smallest files, slowest) or 'none'. "
+                      "Lossless at every level.");
     prm.declare_entry("probe points", "", Patterns::Anything(),
                       "Points whose w and u are written to probes.csv each "
                       "step, separated by ';', coordinates by ',' (e.g. "
@@ -509,6 +516,12 @@ namespace hemicontact
     vtu_interval   = prm.get_integer("vtu interval");
     probe_points   = prm.get("probe points");
     terminal       = prm.get("terminal");
+    const std::string level = prm.get("compression");
+    compression =
+      level == "none"             ? DataOutBase::VtkFlags::no_compression :
+      level == "default"          ? DataOutBase::VtkFlags::default_compression :
+      level == "best compression" ? DataOutBase::VtkFlags::best_compression :
+                                    DataOutBase::VtkFlags::best_speed;
     timing_summary = prm.get_bool("timing summary");
     performance_summary = prm.get_bool("performance summary");
     prm.leave_subsection();

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
@@ -136,6 +137,8 @@ namespace hemicontact
     unsigned int vtu_interval; ///< every this many steps, 0 = never
     std::string  probe_points; ///< "x,y; x,y" (empty: none)
     std::string  terminal;     ///< "progress", "quiet" or "test"
+    /** zlib level of the VTU files (lossless at every level). */
+    DataOutBase::VtkFlags::ZlibCompressionLevel compression;
     bool         timing_summary;
     /** Write performance.csv (and time one step-matrix solve) at the end. */
     bool         performance_summary;

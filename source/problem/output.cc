@@ -291,6 +291,9 @@ namespace hemicontact
       }
 
     data_out.build_patches(*discretization.mapping);
+    DataOutBase::VtkFlags flags;
+    flags.compression_level = parameters.output.compression;
+    data_out.set_flags(flags);
     // a failed write (no space left) names the files; the .pvd series is
     // replaced atomically and lists only the files written completely
     std::string pvtu, error;
