@@ -29,14 +29,20 @@ namespace hemicontact
 
   namespace
   {
-    std::vector<FrictionLawEntry> &
+    LawRegistry<FrictionLaw> &
     registry()
     {
-      static std::vector<FrictionLawEntry> laws = {
-        friction_law_entry<TrescaLaw>(),
-        friction_law_entry<SlipRateWeakeningLaw>(),
-        friction_law_entry<PiecewiseLinearFrictionLaw>(),
-      };
+      static LawRegistry<FrictionLaw> laws(
+        "friction law", "tresca",
+        "Friction law -sigma_tau in dphi(w_tau) on the contact boundary: the "
+        "Tresca disk of radius 'data/friction bound' plus the law's "
+        "remainder in the slip speed. Each law has its own subsection "
+        "below.",
+        {
+          friction_law_entry<TrescaLaw>(),
+          friction_law_entry<SlipRateWeakeningLaw>(),
+          friction_law_entry<PiecewiseLinearFrictionLaw>(),
+        });
       return laws;
     }
   } // namespace
@@ -44,55 +50,24 @@ namespace hemicontact
   const std::vector<FrictionLawEntry> &
   friction_law_registry()
   {
-    return registry();
+    return registry().entries();
   }
 
   void
   register_friction_law(const FrictionLawEntry &entry)
   {
-    for (const FrictionLawEntry &e : registry())
-      AssertThrow(e.name != entry.name,
-                  ExcMessage("friction law '" + entry.name +
-                             "' is registered twice."));
-    registry().push_back(entry);
+    registry().add(entry);
   }
 
   void
   declare_friction_law_parameters(ParameterHandler &prm)
   {
-    std::string names;
-    for (const FrictionLawEntry &e : friction_law_registry())
-      names += (names.empty() ? "" : "|") + e.name;
-    prm.enter_subsection("friction law");
-    prm.declare_entry("law", "tresca", Patterns::Selection(names),
-                      "Friction law -sigma_tau in dphi(w_tau) on the contact "
-                      "boundary: the Tresca disk of radius 'data/friction "
-                      "bound' plus the law's remainder in the slip speed. "
-                      "Each law has its own subsection below.");
-    for (const FrictionLawEntry &e : friction_law_registry())
-      e.declare(prm);
-    prm.leave_subsection();
+    registry().declare(prm);
   }
 
   std::unique_ptr<FrictionLaw>
   create_friction_law(ParameterHandler &prm)
   {
-    prm.enter_subsection("friction law");
-    const std::string            name = prm.get("law");
-    std::unique_ptr<FrictionLaw> law;
-    try
-      {
-        for (const FrictionLawEntry &e : friction_law_registry())
-          if (e.name == name)
-            law = e.create(prm);
-      }
-    catch (...)
-      {
-        prm.leave_subsection();
-        throw;
-      }
-    prm.leave_subsection();
-    require(law != nullptr, "friction law: unknown law '" + name + "'.");
-    return law;
+    return registry().create(prm);
   }
 } // namespace hemicontact

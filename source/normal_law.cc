@@ -43,15 +43,19 @@ namespace hemicontact
 
   namespace
   {
-    std::vector<NormalLawEntry> &
+    LawRegistry<NormalLaw> &
     registry()
     {
-      static std::vector<NormalLawEntry> laws = {
-        normal_law_entry<ExponentialLaw>(),
-        normal_law_entry<PiecewiseLinearLaw>(),
-        normal_law_entry<LinearDampingLaw>(),
-        normal_law_entry<NoNormalResistance>(),
-      };
+      static LawRegistry<NormalLaw> laws(
+        "normal law", "exponential",
+        "Normal damped response law -sigma_nu in dj(w_nu) on the contact "
+        "boundary. Each law has its own subsection below.",
+        {
+          normal_law_entry<ExponentialLaw>(),
+          normal_law_entry<PiecewiseLinearLaw>(),
+          normal_law_entry<LinearDampingLaw>(),
+          normal_law_entry<NoNormalResistance>(),
+        });
       return laws;
     }
   } // namespace
@@ -59,54 +63,24 @@ namespace hemicontact
   const std::vector<NormalLawEntry> &
   normal_law_registry()
   {
-    return registry();
+    return registry().entries();
   }
 
   void
   register_normal_law(const NormalLawEntry &entry)
   {
-    for (const NormalLawEntry &e : registry())
-      AssertThrow(e.name != entry.name,
-                  ExcMessage("normal law '" + entry.name +
-                             "' is registered twice."));
-    registry().push_back(entry);
+    registry().add(entry);
   }
 
   void
   declare_normal_law_parameters(ParameterHandler &prm)
   {
-    std::string names;
-    for (const NormalLawEntry &e : normal_law_registry())
-      names += (names.empty() ? "" : "|") + e.name;
-    prm.enter_subsection("normal law");
-    prm.declare_entry("law", "exponential", Patterns::Selection(names),
-                      "Normal damped response law -sigma_nu in dj(w_nu) on "
-                      "the contact boundary. Each law has its own "
-                      "subsection below.");
-    for (const NormalLawEntry &e : normal_law_registry())
-      e.declare(prm);
-    prm.leave_subsection();
+    registry().declare(prm);
   }
 
   std::unique_ptr<NormalLaw>
   create_normal_law(ParameterHandler &prm)
   {
-    prm.enter_subsection("normal law");
-    const std::string name = prm.get("law");
-    std::unique_ptr<NormalLaw> law;
-    try
-      {
-        for (const NormalLawEntry &e : normal_law_registry())
-          if (e.name == name)
-            law = e.create(prm);
-      }
-    catch (...)
-      {
-        prm.leave_subsection();
-        throw;
-      }
-    prm.leave_subsection();
-    require(law != nullptr, "normal law: unknown law '" + name + "'.");
-    return law;
+    return registry().create(prm);
   }
 } // namespace hemicontact

@@ -2,6 +2,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <hemicontact/law_registry.h>
+
 #include <functional>
 #include <memory>
 #include <string>
@@ -71,30 +73,15 @@ namespace hemicontact
     remainder_over_slip(const double bound, const double s) const;
   };
 
-  /**
-   * One entry of the registry of friction laws: how to declare its
-   * parameters (inside subsection "friction law") and how to create it.
-   */
-  struct FrictionLawEntry
-  {
-    std::string                                                   name;
-    std::function<void(ParameterHandler &)>                       declare;
-    std::function<std::unique_ptr<FrictionLaw>(ParameterHandler &)> create;
-  };
+  /** One entry of the registry of friction laws (subsection "friction law"). */
+  using FrictionLawEntry = LawEntry<FrictionLaw>;
 
-  /**
-   * The registry entry of a law class with a static `law_name`, a static
-   * `declare_parameters(ParameterHandler &)` and a constructor from the
-   * ParameterHandler (positioned in subsection "friction law").
-   */
+  /** The registry entry of a friction law class (see make_law_entry()). */
   template <class Law>
   FrictionLawEntry
   friction_law_entry()
   {
-    return {Law::law_name, &Law::declare_parameters,
-            [](ParameterHandler &prm) -> std::unique_ptr<FrictionLaw> {
-              return std::make_unique<Law>(prm);
-            }};
+    return make_law_entry<FrictionLaw, Law>();
   }
 
   /**

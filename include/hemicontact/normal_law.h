@@ -2,6 +2,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <hemicontact/law_registry.h>
+
 #include <functional>
 #include <memory>
 #include <string>
@@ -72,16 +74,8 @@ namespace hemicontact
     subgradient(const double r) const;
   };
 
-  /**
-   * One entry of the registry of normal laws: how to declare its
-   * parameters (inside subsection "normal law") and how to create it.
-   */
-  struct NormalLawEntry
-  {
-    std::string                                                name;
-    std::function<void(ParameterHandler &)>                    declare;
-    std::function<std::unique_ptr<NormalLaw>(ParameterHandler &)> create;
-  };
+  /** One entry of the registry of normal laws (subsection "normal law"). */
+  using NormalLawEntry = LawEntry<NormalLaw>;
 
   /** Read entry @p key of subsection @p law of the current subsection. */
   double
@@ -95,19 +89,12 @@ namespace hemicontact
   const std::vector<NormalLawEntry> &
   normal_law_registry();
 
-  /**
-   * The registry entry of a law class with a static `law_name`, a static
-   * `declare_parameters(ParameterHandler &)` and a constructor from the
-   * ParameterHandler (positioned in subsection "normal law").
-   */
+  /** The registry entry of a normal law class (see make_law_entry()). */
   template <class Law>
   NormalLawEntry
   normal_law_entry()
   {
-    return {Law::law_name, &Law::declare_parameters,
-            [](ParameterHandler &prm) -> std::unique_ptr<NormalLaw> {
-              return std::make_unique<Law>(prm);
-            }};
+    return make_law_entry<NormalLaw, Law>();
   }
 
   /**
