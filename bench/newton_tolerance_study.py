@@ -3,8 +3,7 @@
 
 Runs prm/block_2d.prm at 4, 5, 6 and prm/block_3d.prm at 2, 3, 4 global
 refinements (k = 0.01, 100 steps, one rank) with 'nonlinear solver/
-tolerance' = 1e-9 (the default until the twelfth session), 1e-8 (the
-default since) and looser values. It prints per run the Newton iterations
+tolerance' = 1e-9, 1e-8 (the default) and looser values. It prints per run the Newton iterations
 per step (mean / max), the Krylov iterations per step, the wall time per
 step, how far the probe velocities moved against the 1e-9 run (max over
 steps and probes of |w - w_1e-9|, relative to max |w_1e-9|) and the largest

@@ -83,13 +83,12 @@ def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None,
                                    "maximum forcing term": "0.1"},
                            nonlinear={"initial guess": "previous"}))
     # the AMG of K0 alone, without the stiff contact directions split off
-    # (the default until the fifth session)
     for r in levels_3d:
         result.append(case(f"3d-r{r}-no-split", "block_3d.prm", r,
                            solver={"stiff contact threshold": "0"},
                            group="3D, fixed k, no stiff split"))
     # the AMG of K0 alone, not built with the contact constraints of the
-    # first Newton solve (the default until the ninth session)
+    # first Newton solve
     for r in levels_3d:
         result.append(case(f"3d-r{r}-plain-amg", "block_3d.prm", r,
                            solver={"constrained preconditioner": "false"},
