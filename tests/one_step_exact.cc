@@ -18,6 +18,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "one_step_block.h"
 #include "tests.h"
 
 using namespace hemicontact;
@@ -27,15 +28,6 @@ namespace
   const double rho = 2, mu_v = 1.5, lambda_v = 0.7, k = 0.1, V = 0.3,
                Fb = 0.4, a = 1, b = 0.4, beta = 3, H = 1;
 
-  std::string
-  num(const double x)
-  {
-    std::ostringstream s;
-    s.precision(17);
-    s << x;
-    return s.str();
-  }
-
   std::string cell_type = "hypercube";
 
   std::string
@@ -43,28 +35,7 @@ namespace
                  const std::string &f2, const std::string &f3)
   {
     std::ostringstream p;
-    p << "set dimension = " << dim << "\n"
-      << "subsection geometry\n  set cell type = " << cell_type << "\n"
-      << (dim == 2 ? "  set upper right corner = 2, 1\n"
-                     "  set subdivisions = 2, 1\n" :
-                     "  set upper right corner = 1, 1, 1\n"
-                     "  set subdivisions = 1, 1, 1\n")
-      << "  set global refinements = 2\nend\n"
-      << "subsection boundary\n"
-      << (dim == 2 ? "  set clamped boundary ids = 3\n"
-                     "  set traction boundary ids = 0, 1\n"
-                     "  set contact boundary ids = 2\n" :
-                     "  set clamped boundary ids = 5\n"
-                     "  set traction boundary ids = 0, 1, 2, 3\n"
-                     "  set contact boundary ids = 4\n")
-      << "end\n"
-      << "subsection material\n  set density = " << rho << "\n"
-      << "  subsection viscosity\n    set mu = " << mu_v
-      << "\n    set lambda = " << lambda_v << "\n  end\n"
-      << "  subsection elasticity\n    set mu = 10\n    set lambda = 5\n  end\n"
-      << "end\n"
-      << "subsection time\n  set end time = " << k << "\n  set time step = " << k
-      << "\nend\n"
+    p << one_step_block(dim, cell_type, {rho, mu_v, lambda_v, 10, 5}, k)
       << "subsection data\n"
       << "  set constants = V=" << num(V) << ", rho=" << rho << ", k=" << k
       << ", mv=" << mu_v << ", lv=" << lambda_v << ", Fb=" << Fb
@@ -87,21 +58,10 @@ namespace
   check(const std::string &name, const std::string &f0, const std::string &f2,
         const std::string &f3, const std::string &exact_w)
   {
-    ParameterHandler prm;
-    const Parameters parameters =
-      read_parameters_from_string(prm, parameter_file(dim, f0, f2, f3));
-    ContactProblem<dim> problem(parameters, create_contact_laws(prm),
-                                MPI_COMM_WORLD);
-    problem.setup();
-    const StepStatistics stats = problem.advance();
-
-    auto exact = parse_function<dim>(exact_w, dim, "V=" + num(V) + ", H=1",
-                                     "exact velocity");
-    TrilinosWrappers::MPI::Vector w(problem.get_velocity());
-    VectorTools::interpolate(problem.get_mapping(), problem.get_dof_handler(),
-                             *exact, w);
-    w -= problem.get_velocity();
-    const double error = w.linfty_norm() / V;
+    const OneStepResult result =
+      one_step<dim>(parameter_file(dim, f0, f2, f3), exact_w, V);
+    const StepStatistics &stats = result.stats;
+    const double          error = result.error;
 
     out() << cell_type << " " << name << ": relative max error < 1e-9: "
           << (error < 1e-9 ? "yes" : "no") << "; contact nodes sep/stick/"

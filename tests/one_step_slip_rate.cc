@@ -19,6 +19,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "one_step_block.h"
 #include "tests.h"
 
 using namespace hemicontact;
@@ -28,15 +29,6 @@ namespace
   const double rho = 2, mu_v = 1.5, lambda_v = 0.7, mu_e = 10, lambda_e = 5,
                k = 0.1, V = 0.3, Fb = 0.4, a = 1, H = 1, mu_s = 0.6,
                mu_d = 0.3, v0 = 0.5, cp = 3, d = 0.02;
-
-  std::string
-  num(const double x)
-  {
-    std::ostringstream s;
-    s.precision(17);
-    s << x;
-    return s.str();
-  }
 
   /** The law's friction force at slip speed V for the bound @p bound. */
   double
@@ -53,29 +45,7 @@ namespace
                  const std::string &u0, const std::string &bound)
   {
     std::ostringstream p;
-    p << "set dimension = " << dim << "\n"
-      << "subsection geometry\n  set cell type = " << cell_type << "\n"
-      << (dim == 2 ? "  set upper right corner = 2, 1\n"
-                     "  set subdivisions = 2, 1\n" :
-                     "  set upper right corner = 1, 1, 1\n"
-                     "  set subdivisions = 1, 1, 1\n")
-      << "  set global refinements = 2\nend\n"
-      << "subsection boundary\n"
-      << (dim == 2 ? "  set clamped boundary ids = 3\n"
-                     "  set traction boundary ids = 0, 1\n"
-                     "  set contact boundary ids = 2\n" :
-                     "  set clamped boundary ids = 5\n"
-                     "  set traction boundary ids = 0, 1, 2, 3\n"
-                     "  set contact boundary ids = 4\n")
-      << "end\n"
-      << "subsection material\n  set density = " << rho << "\n"
-      << "  subsection viscosity\n    set mu = " << mu_v
-      << "\n    set lambda = " << lambda_v << "\n  end\n"
-      << "  subsection elasticity\n    set mu = " << mu_e
-      << "\n    set lambda = " << lambda_e << "\n  end\n"
-      << "end\n"
-      << "subsection time\n  set end time = " << k << "\n  set time step = " << k
-      << "\nend\n"
+    p << one_step_block(dim, cell_type, {rho, mu_v, lambda_v, mu_e, lambda_e}, k)
       << "subsection data\n"
       << "  set constants = V=" << num(V) << ", rho=" << rho << ", k=" << k
       << ", mv=" << mu_v << ", le=" << lambda_e << ", me=" << mu_e
@@ -105,25 +75,14 @@ namespace
         const std::string &f3, const std::string &u0, const std::string &bound,
         const std::string &exact_w)
   {
-    ParameterHandler    prm;
-    const Parameters    parameters = read_parameters_from_string(
-      prm, parameter_file(dim, f0, f2, f3, u0, bound));
-    ContactProblem<dim> problem(parameters, create_contact_laws(prm),
-                                MPI_COMM_WORLD);
-    problem.setup();
-    const StepStatistics stats = problem.advance();
-
-    auto exact = parse_function<dim>(exact_w, dim, "V=" + num(V) + ", H=1",
-                                     "exact velocity");
-    TrilinosWrappers::MPI::Vector w(problem.get_velocity());
-    VectorTools::interpolate(problem.get_mapping(), problem.get_dof_handler(),
-                             *exact, w);
-    w -= problem.get_velocity();
-    const double error = w.linfty_norm() / V;
+    const OneStepResult result = one_step<dim>(
+      parameter_file(dim, f0, f2, f3, u0, bound), exact_w, V);
+    const StepStatistics &stats = result.stats;
+    const double          error = result.error;
 
     out() << cell_type << " " << name << ": relative max error < 1e-9: "
           << (error < 1e-9 ? "yes" : "no") << "; convex: "
-          << (problem.get_convexity_bound() > 1 ? "yes" : "no")
+          << (result.convexity_bound > 1 ? "yes" : "no")
           << "; contact nodes sep/stick/damped " << stats.n_separating << "/"
           << stats.n_normal_stick << "/" << stats.n_damped << ", stick/slip "
           << stats.n_stick << "/" << stats.n_slip << std::endl;
