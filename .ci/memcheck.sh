@@ -26,7 +26,7 @@ jobs=${JOBS:-2}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
 # the tests run under the sanitizers: unit tests, short runs, bad inputs
-asan_tests='^tests/(normal_laws|node_contact|one_step_exact|one_step_rotated_gmsh|block_2d_short|block_3d_short|manufactured_data|projected_vs_assembled)\.|^bad_input/'
+asan_tests='^tests/(normal_laws|node_contact|one_step_exact|one_step_rotated_gmsh|block_2d_short|block_3d_short|manufactured_data|projected_vs_direct)\.|^bad_input/'
 
 run_asan() {
   local build=$root/build-asan log=$root/build-asan/memcheck-asan.log

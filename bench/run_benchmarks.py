@@ -3,7 +3,8 @@
 
 Runs fixed cases -- the default 2D example and its 3D version at three
 successive refinements, once at the examples' time step and once with the
-time step halved with h, solver variants on the middle levels, and a large
+time step halved with h, the non-default solver choices on the middle
+levels, and a large
 3D case (811,923 dofs) on 1 and 2 MPI ranks -- with 'performance summary =
 true', reads each run's performance.csv and prints one table plus the growth
 exponents of the time per step against the number of dofs. Every figure is
@@ -16,8 +17,6 @@ also written to bench/results/benchmark.csv (or --output).
                                     # chosen cases, fastest of 3 runs each
   /usr/bin/python3 bench/run_benchmarks.py --levels-3d 3,4,5 --only '^3d-r[345]$'
                                     # the 3D levels one finer (r5: 421k dofs)
-  /usr/bin/python3 bench/run_benchmarks.py --amg-grid --only '^3d-r[234](-agg|$)'
-                                    # ML parameters around the defaults
 
 Needs a Release build in build/ (cmake -S . -B build -DCMAKE_BUILD_TYPE=Release).
 """
@@ -42,8 +41,7 @@ def case(name, base, refinements, end_time=1.0, ranks=1, subdivisions=None,
                 nonlinear=nonlinear or {}, keep_probes=keep_probes)
 
 
-def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None,
-          amg_grid=False):
+def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None):
     result = []
     levels_2d = levels_2d or ([3, 4, 5] if quick else [4, 5, 6])
     levels_3d = levels_3d or ([1, 2, 3] if quick else [2, 3, 4])
@@ -63,58 +61,21 @@ def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None,
         # the first level (k = 0.01) is the fixed-k run's, not run again
         first = next(c for c in result if c["name"] == f"{dim}d-r{levels[0]}")
         result.append(dict(first, group=f"{dim}D, k ~ h", shared=True))
-    # the trade-off of reusing the AMG of the step matrix, and of inexact
-    # Newton, on the middle 3D level
+    # inexact Newton against fixed Krylov tolerances, and Newton from
+    # w_{n-1} instead of the extrapolated guess, on the middle levels
     middle = levels_3d[1]
-    for operator in ("projected", "assembled"):
-        for forcing in ("eisenstat-walker", "fixed"):
-            if operator == "projected" and forcing == "eisenstat-walker":
-                continue  # the default: already run above
-            result.append(case(f"3d-r{middle}-{operator}-{forcing}",
-                               "block_3d.prm", middle,
-                               solver={"newton operator": operator,
-                                       "forcing term": forcing}))
-    # the warm starts off (the defaults until 2026-11-22): Newton from
-    # w_{n-1}, Eisenstat-Walker up to 0.1 also once the branches have settled
+    result.append(case(f"3d-r{middle}-fixed-forcing", "block_3d.prm", middle,
+                       solver={"forcing term": "fixed"}))
     for name, base, r in (("2d", "block_2d.prm", levels_2d[1]),
                           ("3d", "block_3d.prm", middle)):
-        result.append(case(f"{name}-r{r}-cold-start", base, r,
-                           solver={"exact solve when settled": "false",
-                                   "maximum forcing term": "0.1"},
+        result.append(case(f"{name}-r{r}-previous-guess", base, r,
                            nonlinear={"initial guess": "previous"}))
-    # the AMG of K0 alone, without the stiff contact directions split off
-    for r in levels_3d:
-        result.append(case(f"3d-r{r}-no-split", "block_3d.prm", r,
-                           solver={"stiff contact threshold": "0"},
-                           group="3D, fixed k, no stiff split"))
-    # the AMG of K0 alone, not built with the contact constraints of the
-    # first Newton solve
-    for r in levels_3d:
-        result.append(case(f"3d-r{r}-plain-amg", "block_3d.prm", r,
-                           solver={"constrained preconditioner": "false"},
-                           group="3D, fixed k, plain AMG"))
-    if amg_grid:
-        # ML's aggregation threshold and smoother sweeps (Chebyshev degree)
-        # around the defaults 1e-4 and 2
-        for threshold, sweeps in (("1e-4", "3"), ("0.02", "1"), ("0.02", "2"),
-                                  ("0.05", "2")):
-            for r in levels_3d:
-                result.append(case(
-                    f"3d-r{r}-agg{threshold}-sw{sweeps}", "block_3d.prm", r,
-                    solver={"aggregation threshold": threshold,
-                            "smoother sweeps": sweeps},
-                    group=f"3D, fixed k, aggregation threshold {threshold}, "
-                    f"{sweeps} sweeps"))
     if not skip_large and not quick:
         # 160 x 40 x 40 hexahedra: 811,923 dofs; the first steps
         for ranks in (1, 2):
             result.append(case(f"3d-large-np{ranks}", "block_3d.prm", 3,
                                end_time=0.01 * large_steps, ranks=ranks,
                                subdivisions="20, 5, 5"))
-        result.append(case("3d-large-np1-plain-amg", "block_3d.prm", 3,
-                           end_time=0.01 * large_steps,
-                           subdivisions="20, 5, 5",
-                           solver={"constrained preconditioner": "false"}))
     return result
 
 
@@ -220,9 +181,6 @@ def main():
     parser.add_argument("--levels-3d", default=None,
                         help="the three 3D refinements, e.g. 2,3,4 (default; "
                         "1,2,3 with --quick); 3,4,5 takes ~15 min more")
-    parser.add_argument("--amg-grid", action="store_true",
-                        help="add the 3D levels with other ML aggregation "
-                        "thresholds and smoother sweeps (~6 min)")
     parser.add_argument("--reuse", action="store_true",
                         help="reuse the results of cases already in --work")
     parser.add_argument("--repeat", type=int, default=1,
@@ -246,8 +204,7 @@ def main():
     def levels(text):
         return [int(x) for x in text.split(",")] if text else None
     all_cases = cases(args.quick, args.skip_large, args.large_steps,
-                      levels(args.levels_2d), levels(args.levels_3d),
-                      args.amg_grid)
+                      levels(args.levels_2d), levels(args.levels_3d))
     if args.only:
         all_cases = [c for c in all_cases if re.search(args.only, c["name"])]
     to_run = [c for c in all_cases if not c.get("shared")]

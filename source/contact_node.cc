@@ -8,15 +8,15 @@
 
 namespace hemicontact
 {
-  namespace NodeContact
+  namespace nodal
   {
     template <int dim>
-    NodeMultipliers<dim>
-    multipliers(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
+    NodeState<dim>
+    state(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
                 const Tensor<1, dim> &force, const NormalLaw &law,
                 const FrictionLaw &friction)
     {
-      NodeMultipliers<dim> m;
+      NodeState<dim> m;
       const Tensor<1, dim> &nu = node.normal;
       m.w_normal               = velocity * nu;
       m.w_tangential           = velocity - m.w_normal * nu;
@@ -32,7 +32,7 @@ namespace hemicontact
 
     template <int dim>
     NormalBranch
-    normal_branch(const ContactNode<dim> &node, const NodeMultipliers<dim> &m,
+    normal_branch(const ContactNode<dim> &node, const NodeState<dim> &m,
                   const NormalLaw &law)
     {
       const double q = m.s + node.c * m.w_normal;
@@ -60,7 +60,7 @@ namespace hemicontact
     template <int dim>
     TangentialBranch
     tangential_branch(const ContactNode<dim> &node,
-                      const NodeMultipliers<dim> &m)
+                      const NodeState<dim> &m)
     {
       return FrictionDisk::sticks(m.lambda + node.c * m.w_tangential,
                                     node.friction_bound) ?
@@ -71,7 +71,7 @@ namespace hemicontact
     template <int dim>
     double
     normal_complementarity(const ContactNode<dim> &node,
-                           const NodeMultipliers<dim> &m, const NormalLaw &law)
+                           const NodeState<dim> &m, const NormalLaw &law)
     {
       const double q = m.s + node.c * m.w_normal;
       return m.s - std::clamp(q, 0., law.jump());
@@ -80,7 +80,7 @@ namespace hemicontact
     template <int dim>
     Tensor<1, dim>
     tangential_complementarity(const ContactNode<dim> &node,
-                               const NodeMultipliers<dim> &m)
+                               const NodeState<dim> &m)
     {
       return m.lambda -
              FrictionDisk::project(m.lambda + node.c * m.w_tangential,
@@ -89,7 +89,7 @@ namespace hemicontact
 
     template <int dim>
     NodeLinearization<dim>
-    linearize(const ContactNode<dim> &node, const NodeMultipliers<dim> &m,
+    linearize(const ContactNode<dim> &node, const NodeState<dim> &m,
               const NormalLaw &law, const FrictionLaw &friction)
     {
       NodeLinearization<dim> lin;
@@ -211,72 +211,24 @@ namespace hemicontact
       return projector;
     }
 
-    template <int dim>
-    std::vector<
-      std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>>
-    eliminate(const std::vector<Tensor<1, dim>> &directions)
-    {
-      const unsigned int n_rows = directions.size();
-      std::vector<std::array<double, dim>> a(n_rows);
-      for (unsigned int r = 0; r < n_rows; ++r)
-        for (unsigned int j = 0; j < dim; ++j)
-          a[r][j] = directions[r][j];
-
-      std::array<bool, dim>     is_pivot{};
-      std::vector<unsigned int> pivot(n_rows);
-      for (unsigned int r = 0; r < n_rows; ++r)
-        {
-          unsigned int best = dim;
-          for (unsigned int j = 0; j < dim; ++j)
-            if (!is_pivot[j] &&
-                (best == dim || std::abs(a[r][j]) > std::abs(a[r][best])))
-              best = j;
-          pivot[r]       = best;
-          is_pivot[best] = true;
-          const double p = a[r][best];
-          for (unsigned int j = 0; j < dim; ++j)
-            a[r][j] /= p;
-          for (unsigned int o = 0; o < n_rows; ++o)
-            if (o != r)
-              {
-                const double f = a[o][best];
-                for (unsigned int j = 0; j < dim; ++j)
-                  a[o][j] -= f * a[r][j];
-              }
-        }
-
-      std::vector<
-        std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>>
-        result;
-      for (unsigned int r = 0; r < n_rows; ++r)
-        {
-          std::vector<std::pair<unsigned int, double>> entries;
-          for (unsigned int j = 0; j < dim; ++j)
-            if (!is_pivot[j] && std::abs(a[r][j]) > 1e-14)
-              entries.emplace_back(j, -a[r][j]);
-          result.emplace_back(pivot[r], entries);
-        }
-      return result;
-    }
-
 #define HEMICONTACT_INSTANTIATE(dim)                                           \
-  template NodeMultipliers<dim> multipliers(const ContactNode<dim> &,         \
+  template NodeState<dim> state(const ContactNode<dim> &,         \
                                             const Tensor<1, dim> &,            \
                                             const Tensor<1, dim> &,            \
                                             const NormalLaw &,                 \
                                             const FrictionLaw &);              \
   template NormalBranch         normal_branch(const ContactNode<dim> &,       \
-                                      const NodeMultipliers<dim> &,            \
+                                      const NodeState<dim> &,            \
                                       const NormalLaw &);                      \
   template TangentialBranch     tangential_branch(const ContactNode<dim> &,   \
-                                              const NodeMultipliers<dim> &);   \
+                                              const NodeState<dim> &);   \
   template double normal_complementarity(const ContactNode<dim> &,            \
-                                         const NodeMultipliers<dim> &,         \
+                                         const NodeState<dim> &,         \
                                          const NormalLaw &);                   \
   template Tensor<1, dim> tangential_complementarity(                         \
-    const ContactNode<dim> &, const NodeMultipliers<dim> &);                   \
+    const ContactNode<dim> &, const NodeState<dim> &);                   \
   template NodeLinearization<dim> linearize(const ContactNode<dim> &,         \
-                                            const NodeMultipliers<dim> &,      \
+                                            const NodeState<dim> &,      \
                                             const NormalLaw &,                 \
                                             const FrictionLaw &);              \
   template double energy(const ContactNode<dim> &, const Tensor<1, dim> &,    \
@@ -288,13 +240,10 @@ namespace hemicontact
     const Tensor<1, dim> &);                                                   \
   template std::vector<Tensor<1, dim>> constrained_directions(                \
     const ContactNode<dim> &);                                                 \
-  template Tensor<2, dim> free_projector(const ContactNode<dim> &);           \
-  template std::vector<                                                        \
-    std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>>     \
-  eliminate(const std::vector<Tensor<1, dim>> &);
+  template Tensor<2, dim> free_projector(const ContactNode<dim> &);
 
     HEMICONTACT_INSTANTIATE(2)
     HEMICONTACT_INSTANTIATE(3)
 #undef HEMICONTACT_INSTANTIATE
-  } // namespace NodeContact
+  } // namespace nodal
 } // namespace hemicontact

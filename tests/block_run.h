@@ -2,6 +2,7 @@
 // Shared by the tests that rerun the short block examples with different
 // solver settings: run 0.15 time units of a .prm plus extra settings and
 // return the final velocity and the Newton and Krylov iterations it took.
+// The solver's tuning constants (SolverTuning) are changed from C++.
 // The 0.15 time units are 3 steps in 2D (k = 0.05, as in
 // tests/block_2d_short.prm) and 8 steps in 3D (k = 0.01875, the nearest
 // divisor of 0.15 to the 0.02 of tests/block_3d_short.prm).
@@ -9,6 +10,7 @@
 #include <hemicontact/parameters.h>
 
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 
@@ -21,7 +23,8 @@ struct BlockRun
 
 template <int dim>
 BlockRun
-run_block(const std::string &file, const std::string &settings)
+run_block(const std::string &file, const std::string &settings,
+          const std::function<void(hemicontact::SolverTuning &)> &tune = {})
 {
   using namespace hemicontact;
   std::ifstream     in(file);
@@ -34,7 +37,9 @@ run_block(const std::string &file, const std::string &settings)
        << "d\n  set terminal = quiet\nend\n"
        << settings;
   dealii::ParameterHandler prm;
-  const Parameters parameters = read_parameters_from_string(prm, text.str());
+  Parameters parameters = read_parameters_from_string(prm, text.str());
+  if (tune)
+    tune(parameters.solver_tuning);
   ContactProblem<dim> problem(parameters, create_contact_laws(prm),
                               MPI_COMM_WORLD);
   problem.setup();

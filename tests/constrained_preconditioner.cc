@@ -1,4 +1,5 @@
-// The constrained AMG of the projected solver ('constrained preconditioner'):
+// The constrained AMG of the projected solver (SolverTuning::
+// constrained_preconditioner):
 // the first AMG of a mesh is built from rho/k M + A plus a penalty on the
 // directions the contact branches constrain, so that it treats stuck nodes
 // as Dirichlet conditions, and is given up for the AMG of rho/k M + A once
@@ -20,9 +21,9 @@ namespace
   {
     const BlockRun constrained = run_block<dim>(file, extra);
     const BlockRun plain =
-      run_block<dim>(file, extra + "subsection linear solver\n"
-                                   "  set constrained preconditioner = false\n"
-                                   "end\n");
+      run_block<dim>(file, extra, [](SolverTuning &tuning) {
+        tuning.constrained_preconditioner = false;
+      });
     out() << "  " << dim << "D constrained vs plain AMG: "
           << agreement(constrained.velocity, plain.velocity) << "\n";
     out() << "  " << dim << "D Krylov iterations with the constrained AMG: "

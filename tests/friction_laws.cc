@@ -163,19 +163,19 @@ namespace
     const NoNormalResistance none;
 
     // a slipping velocity with no normal part and the exact contact force
-    const auto   t = NodeContact::tangent_basis(node.normal);
+    const auto   t = nodal::tangent_basis(node.normal);
     Tensor<1, 3> w = 0.12 * t[0] - 0.05 * t[1];
     const Tensor<1, 3> force = friction_force(node, law, w);
-    const NodeMultipliers<3> m =
-      NodeContact::multipliers(node, w, force, none, law);
+    const NodeState<3> m =
+      nodal::state(node, w, force, none, law);
     const Tensor<1, 3> e = m.w_tangential / m.w_tangential.norm();
     std::cout << "  multiplier of the convex part = F_b e: "
               << yes((m.lambda - node.friction_bound * e).norm() < 1e-14) << "\n"
               << "  tangential complementarity vanishes: "
-              << yes(NodeContact::tangential_complementarity(node, m).norm() <
+              << yes(nodal::tangential_complementarity(node, m).norm() <
                      1e-14)
               << ", branch slip: "
-              << yes(NodeContact::tangential_branch(node, m) ==
+              << yes(nodal::tangential_branch(node, m) ==
                      TangentialBranch::slip)
               << "\n";
 
@@ -183,7 +183,7 @@ namespace
     // Jacobian of the force in the tangent plane
     node.tangential_branch         = TangentialBranch::slip;
     node.normal_branch             = NormalBranch::separating;
-    const NodeLinearization<3> lin = NodeContact::linearize(node, m, none, law);
+    const NodeLinearization<3> lin = nodal::linearize(node, m, none, law);
     Tensor<2, 3> projector = unit_symmetric_tensor<3>();
     projector -= outer_product(node.normal, node.normal);
     Tensor<2, 3> jacobian;
@@ -212,15 +212,15 @@ namespace
       {
         Tensor<1, 3> dw;
         dw[j]       = 1e-6;
-        gradient[j] = (NodeContact::energy(node, w + dw, none, law) -
-                       NodeContact::energy(node, w - dw, none, law)) /
+        gradient[j] = (nodal::energy(node, w + dw, none, law) -
+                       nodal::energy(node, w - dw, none, law)) /
                       2e-6;
       }
     std::cout << "  gradient of the nodal energy = the force: "
               << yes((gradient - force).norm() < 1e-7 * force.norm()) << "\n";
 
     // the work rate booked in the energy balance is xi . w = m F(s) s
-    const auto work = NodeContact::contact_work(node, w, none, law);
+    const auto work = nodal::contact_work(node, w, none, law);
     std::cout << "  friction work = m F(s) s: "
               << yes(std::abs(work.second - force * w) < 1e-14) << "\n";
   }

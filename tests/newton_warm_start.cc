@@ -19,14 +19,15 @@ namespace
     const BlockRun cold =
       run_block<dim>(file,
                      "subsection nonlinear solver\n"
-                     "  set initial guess = previous\nend\n"
-                     "subsection linear solver\n"
-                     "  set exact solve when settled = false\n"
-                     "  set maximum forcing term = 0.1\nend\n");
+                     "  set initial guess = previous\nend\n",
+                     [](SolverTuning &tuning) {
+                       tuning.exact_solve_when_settled = false;
+                       tuning.maximum_forcing_term     = 0.1;
+                     });
     const BlockRun extrapolated_only =
-      run_block<dim>(file,
-                     "subsection linear solver\n"
-                     "  set exact solve when settled = false\nend\n");
+      run_block<dim>(file, "", [](SolverTuning &tuning) {
+        tuning.exact_solve_when_settled = false;
+      });
 
     for (const auto &[name, r] :
          {std::make_pair("defaults", &warm),

@@ -80,13 +80,13 @@ main()
   for (const double s : {-0.2, 0., 0.5, 1., 1.2})
     for (const double wn : {-0.01, 0., 0.01})
       {
-        NodeMultipliers<2> m;
+        NodeState<2> m;
         m.s        = s;
         m.w_normal = wn;
         std::cout << "  s = " << s << ", w_nu = " << wn << ": "
-                  << name(NodeContact::normal_branch(node, m, law))
+                  << name(nodal::normal_branch(node, m, law))
                   << ", C_nu = "
-                  << NodeContact::normal_complementarity(node, m, law) << "\n";
+                  << nodal::normal_complementarity(node, m, law) << "\n";
       }
 
   // a Newton iteration's normal branch: separating <-> damped passes through
@@ -101,10 +101,10 @@ main()
       for (const NormalBranch predicted : all)
         std::cout << "  " << name(current) << " -> " << name(predicted)
                   << ": "
-                  << name(NodeContact::gradual_normal_branch(current, predicted,
+                  << name(nodal::gradual_normal_branch(current, predicted,
                                                              law))
                   << " / "
-                  << name(NodeContact::gradual_normal_branch(current, predicted,
+                  << name(nodal::gradual_normal_branch(current, predicted,
                                                              no_jump))
                   << "\n";
   }
@@ -115,19 +115,19 @@ main()
   for (const double l : {0., 0.29, 0.3, 0.31})
     for (const double wt : {0., 0.001})
       {
-        NodeMultipliers<2> m;
+        NodeState<2> m;
         m.lambda       = l * tau;
         m.w_tangential = wt * tau;
-        const Tensor<1, 2> ct = NodeContact::tangential_complementarity(node, m);
+        const Tensor<1, 2> ct = nodal::tangential_complementarity(node, m);
         std::cout << "  |lambda| = " << l << ", |w_tau| = " << wt << ": "
-                  << name(NodeContact::tangential_branch(node, m))
+                  << name(nodal::tangential_branch(node, m))
                   << ", |C_tau| = " << std::abs(ct * tau) << "\n";
       }
 
   // the split of velocity and force into normal and tangential parts
   {
     const Tensor<1, 2>       w({0.3, 0.1}), force({0.2, -0.5});
-    const NodeMultipliers<2> m = NodeContact::multipliers(node, w, force, law, TrescaLaw());
+    const NodeState<2> m = nodal::state(node, w, force, law, TrescaLaw());
     const double recombined =
       (node.mass * ((m.s + law.remainder(m.w_normal)) * node.normal + m.lambda) -
        force)
@@ -153,7 +153,7 @@ main()
               << FrictionDisk::project(outside, 0.3) << "\n";
   }
 
-  // elimination: every allowed velocity satisfies the constraints
+  // the free projector: every projected velocity satisfies the constraints
   for (const auto &branches :
        {std::make_pair(NormalBranch::stick, TangentialBranch::slip),
         std::make_pair(NormalBranch::separating, TangentialBranch::stick),
@@ -163,17 +163,11 @@ main()
       n3.normal         = Tensor<1, 3>({0.36, 0.48, -0.8});
       n3.normal_branch     = branches.first;
       n3.tangential_branch = branches.second;
-      const auto directions = NodeContact::constrained_directions(n3);
-      const auto lines      = NodeContact::eliminate(directions);
-      // build w from arbitrary free components, fill eliminated ones
-      Tensor<1, 3> w({0.7, -1.3, 0.4});
-      for (const auto &line : lines)
-        {
-          w[line.first] = 0;
-          for (const auto &e : line.second)
-            w[line.first] += e.second * w[e.first];
-        }
-      double violation = 0;
+      const auto directions = nodal::constrained_directions(n3);
+      const Tensor<2, 3> pi = nodal::free_projector(n3);
+      const Tensor<1, 3> w  = pi * Tensor<1, 3>({0.7, -1.3, 0.4});
+      // a projector: Pi Pi = Pi
+      double violation = (pi * pi - pi).norm();
       for (const auto &d : directions)
         violation = std::max(violation, std::abs(d * w));
       std::cout << "3D " << name(branches.first) << "/" << name(branches.second)
@@ -184,7 +178,7 @@ main()
   // tangent basis is orthonormal and orthogonal to the normal
   {
     const Tensor<1, 3> nu({0.36, 0.48, -0.8});
-    const auto         t = NodeContact::tangent_basis(nu);
+    const auto         t = nodal::tangent_basis(nu);
     const double err = std::abs(t[0] * t[0] - 1) + std::abs(t[1] * t[1] - 1) +
                        std::abs(t[0] * t[1]) + std::abs(t[0] * nu) +
                        std::abs(t[1] * nu);
@@ -200,10 +194,10 @@ main()
     ContactNode<3> n3 = make_node<3>();
     n3.tangential_branch = TangentialBranch::slip;
     const Tensor<1, 3> t({0.8, 0.6, 0});
-    NodeMultipliers<3> m;
+    NodeState<3> m;
     m.lambda       = n3.friction_bound * t;
     m.w_tangential = 0.05 * t;
-    const NodeLinearization<3> lin = NodeContact::linearize(n3, m, law, TrescaLaw());
+    const NodeLinearization<3> lin = nodal::linearize(n3, m, law, TrescaLaw());
     const auto gradient = [&](const Tensor<1, 3> &wt) {
       return n3.mass * n3.friction_bound * wt / wt.norm();
     };
@@ -234,9 +228,9 @@ main()
   {
     ContactNode<2> n2 = make_node<2>();
     n2.normal_branch  = NormalBranch::damped;
-    NodeMultipliers<2> m;
+    NodeState<2> m;
     m.w_normal                       = 0.1;
-    const NodeLinearization<2> lin   = NodeContact::linearize(n2, m, law, TrescaLaw());
+    const NodeLinearization<2> lin   = nodal::linearize(n2, m, law, TrescaLaw());
     const double               expect = n2.mass * (law.jump() + law.remainder(0.1));
     std::cout << "damped force along the normal: "
               << (std::abs(lin.force * n2.normal - expect) < 1e-14 ? "yes" : "no")

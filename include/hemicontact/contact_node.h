@@ -51,13 +51,14 @@ namespace hemicontact
   };
 
   /**
-   * The node-wise multipliers at an iterate: from the nodal contact force
+   * The state of a contact node at an iterate: the velocity in normal and
+   * tangential components, and the multipliers of the laws' convex parts
+   * (normal s, tangential lambda) from the nodal contact force
    * G = m_i (s nu + p(w_nu) nu + lambda + r(|w_tau|) w_tau/|w_tau|)
-   * = -(K w - b)_i, the multipliers of the convex parts (normal s,
-   * tangential lambda), and the velocity in normal/tangential components.
+   * = -(K w - b)_i.
    */
   template <int dim>
-  struct NodeMultipliers
+  struct NodeState
   {
     double         s;
     Tensor<1, dim> lambda;
@@ -73,23 +74,23 @@ namespace hemicontact
     Tensor<1, dim> force;
   };
 
-  /** The pure, node-wise pieces of the active-set method. */
-  namespace NodeContact
+  /** The pure, node-wise pieces of the active-set method (nodal::). */
+  namespace nodal
   {
     /**
      * Split velocity and contact force G into normal/tangential parts and
      * take off the laws' remainders, leaving the convex parts' multipliers.
      */
     template <int dim>
-    NodeMultipliers<dim>
-    multipliers(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
+    NodeState<dim>
+    state(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
                 const Tensor<1, dim> &force, const NormalLaw &law,
                 const FrictionLaw &friction);
 
     /** Branch from s + c w_nu against [0, a]. */
     template <int dim>
     NormalBranch
-    normal_branch(const ContactNode<dim> &node, const NodeMultipliers<dim> &m,
+    normal_branch(const ContactNode<dim> &node, const NodeState<dim> &m,
                   const NormalLaw &law);
 
     /**
@@ -113,20 +114,20 @@ namespace hemicontact
     template <int dim>
     TangentialBranch
     tangential_branch(const ContactNode<dim> &node,
-                      const NodeMultipliers<dim> &m);
+                      const NodeState<dim> &m);
 
     /** Complementarity function s - P_[0,a](s + c w_nu) (a traction). */
     template <int dim>
     double
     normal_complementarity(const ContactNode<dim> &node,
-                           const NodeMultipliers<dim> &m,
+                           const NodeState<dim> &m,
                            const NormalLaw &law);
 
     /** lambda - P_{|.|<=F_b}(lambda + c w_tau) (a traction). */
     template <int dim>
     Tensor<1, dim>
     tangential_complementarity(const ContactNode<dim> &node,
-                               const NodeMultipliers<dim> &m);
+                               const NodeState<dim> &m);
 
     /**
      * Linearised nodal force m_i (traction) of the free branches (damped,
@@ -137,7 +138,7 @@ namespace hemicontact
      */
     template <int dim>
     NodeLinearization<dim>
-    linearize(const ContactNode<dim> &node, const NodeMultipliers<dim> &m,
+    linearize(const ContactNode<dim> &node, const NodeState<dim> &m,
               const NormalLaw &law, const FrictionLaw &friction);
 
     /**
@@ -182,15 +183,5 @@ namespace hemicontact
     std::array<Tensor<1, dim>, dim - 1>
     tangent_basis(const Tensor<1, dim> &normal);
 
-    /**
-     * Solve the homogeneous constraints e_r . w = 0 for some components:
-     * returns for each eliminated component p the coefficients a_pj with
-     * w_p = sum_j a_pj w_j over the remaining components (Gauss-Jordan with
-     * pivoting). Entries: (p, [(j, a_pj)...]).
-     */
-    template <int dim>
-    std::vector<std::pair<unsigned int,
-                          std::vector<std::pair<unsigned int, double>>>>
-    eliminate(const std::vector<Tensor<1, dim>> &directions);
-  } // namespace NodeContact
+  } // namespace nodal
 } // namespace hemicontact

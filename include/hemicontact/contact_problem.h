@@ -22,6 +22,7 @@
 #include <hemicontact/normal_law.h>
 #include <hemicontact/parameters.h>
 #include <hemicontact/problem_data.h>
+#include <hemicontact/step_preconditioner.h>
 #include <hemicontact/step_statistics.h>
 
 #include <chrono>
@@ -46,7 +47,7 @@ namespace hemicontact
    *
    * The member functions are spread over source/problem/: setup.cc (mesh,
    * dofs, constraints, contact nodes), assembly.cc (matrices and loads),
-   * newton.cc (one step), diagnostics.cc (energies, convexity), output.cc
+   * step.cc (one step, by ActiveSetNewton on a ContactStep), diagnostics.cc (energies, convexity), output.cc
    * and run.cc (the time loop).
    */
   template <int dim>
@@ -238,63 +239,11 @@ namespace hemicontact
     assemble_load(const double time);
     void
     assemble_step_rhs();
-    void
-    assemble_newton_system(const TrilinosWrappers::MPI::Vector &iterate,
-                           const std::vector<NodeMultipliers<dim>> &mult);
 
-    /** @name newton.cc */
-    /** Whether Newton iterations reassemble a matrix (else: projected operator). */
-    bool
-    assembles_newton_matrix() const
-    {
-      return parameters.linear_solver.type == "direct" ||
-             parameters.linear_solver.newton_operator == "assembled";
-    }
-    /**
-     * The share of contact nodes with a free direction that the constrained
-     * AMG in use treats as constrained (amg_constrained_directions).
-     */
-    double
-    constrained_amg_mismatch() const;
+    /** @name step.cc */
+    /** Solve the current step by ActiveSetNewton on a ContactStep. */
     StepStatistics
     solve_step();
-    void
-    compute_residual(const TrilinosWrappers::MPI::Vector &w,
-                     TrilinosWrappers::MPI::Vector &      residual) const;
-    std::vector<NodeMultipliers<dim>>
-    node_multipliers(const TrilinosWrappers::MPI::Vector &w_ghosted,
-                     const TrilinosWrappers::MPI::Vector &residual_ghosted) const;
-    unsigned int
-    solve_newton_system(const TrilinosWrappers::MPI::Vector &w,
-                        const TrilinosWrappers::MPI::Vector &w_ghosted,
-                        const std::vector<NodeMultipliers<dim>> &mult,
-                        const double                             reduction,
-                        const double                             absolute_tolerance,
-                        TrilinosWrappers::MPI::Vector &          trial);
-    unsigned int
-    solve_projected_system(const TrilinosWrappers::MPI::Vector &w,
-                           const TrilinosWrappers::MPI::Vector &w_ghosted,
-                           const std::vector<NodeMultipliers<dim>> &mult,
-                           const double                             reduction,
-                           const double absolute_tolerance,
-                           TrilinosWrappers::MPI::Vector &trial);
-    double
-    nonsmooth_residual(const TrilinosWrappers::MPI::Vector &residual,
-                       const std::vector<NodeMultipliers<dim>> &mult) const;
-    void
-    build_newton_constraints();
-    /**
-     * Move @p w towards @p trial by the backtracking step length on J_n and
-     * update @p residual (K0 w - b) to the new w: by the product K0 d that
-     * the line search needs anyway, so no extra matrix-vector product.
-     */
-    double
-    line_search(TrilinosWrappers::MPI::Vector &      w,
-                const TrilinosWrappers::MPI::Vector &trial,
-                TrilinosWrappers::MPI::Vector &      residual,
-                unsigned int &                       n_reductions);
-    double
-    nodal_energy(const TrilinosWrappers::MPI::Vector &w) const;
     void
     count_branches(StepStatistics &stats) const;
 
@@ -430,33 +379,23 @@ namespace hemicontact
 
     /** Hanging nodes and u = 0 on Gamma_1. */
     AffineConstraints<double> base_constraints;
-    /** Base constraints plus those of the constrained contact branches. */
-    AffineConstraints<double> newton_constraints;
 
     /** Constant on a fixed mesh, condensed with the base constraints. */
     TrilinosWrappers::SparseMatrix mass_matrix;    ///< M
     TrilinosWrappers::SparseMatrix step_matrix;    ///< K0 = rho/k M + A
     TrilinosWrappers::SparseMatrix elastic_matrix; ///< B
-    /** K0 with the contact linearisation and contact constraints (assembled
-     *  operator), or K0 plus the penalty of a constrained AMG (projected). */
-    TrilinosWrappers::SparseMatrix newton_matrix;
 
     TrilinosWrappers::MPI::Vector velocity;     ///< w_n
     TrilinosWrappers::MPI::Vector old_velocity; ///< w_{n-1}
     TrilinosWrappers::MPI::Vector displacement; ///< u_n
     TrilinosWrappers::MPI::Vector load;         ///< F_n = (f0, f2, f3) tested
     TrilinosWrappers::MPI::Vector step_rhs;     ///< b = rho/k M w_{n-1} - B u_n + F_n
-    TrilinosWrappers::MPI::Vector newton_rhs;
     TrilinosWrappers::MPI::Vector contact_traction;
 
     std::vector<ContactNode<dim>> contact_nodes; ///< locally relevant nodes
-    /**
-     * Per contact node, the directions the rebuilt AMG (LinearSolver's
-     * contact preconditioner) treats as constrained; valid while it exists.
-     */
-    std::vector<Tensor<2, dim>> amg_constrained_directions;
-
-    LinearSolver  linear_solver;
+    LinearSolver            linear_solver;
+    /** Every AMG of the mesh and the preconditioner of the Newton solves. */
+    StepPreconditioner<dim> preconditioner;
     EnergyBalance energy;
     double        convexity_bound = 0;
     bool          convexity_with_friction = false;

@@ -3,6 +3,8 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <hemicontact/solver_tuning.h>
+
 #include <string>
 #include <vector>
 
@@ -83,48 +85,49 @@ namespace hemicontact
     void        parse(ParameterHandler &prm);
   };
 
+  /** Where Newton starts in a step. */
+  enum class InitialGuess
+  {
+    extrapolated, ///< w_{n-1} + k_n/k_{n-1} (w_{n-1} - w_{n-2})
+    previous      ///< w_{n-1}
+  };
+
   /** Settings of the semismooth Newton / active-set iteration of one step. */
   struct NonlinearSolverParameters
   {
-    double       tolerance;          ///< relative nonsmooth residual
-    double       absolute_tolerance; ///< absolute floor of the residual
+    double       tolerance; ///< relative nonsmooth residual
     unsigned int max_iterations;
     /** How often a failing step may be retried with half the time step. */
     unsigned int time_step_halvings;
-    double       complementarity_factor; ///< c_i = factor * K_ii / m_i
     bool         line_search;
-    double       min_step_length;
-    /** "extrapolated" (w_{n-1} + k_n/k_{n-1} (w_{n-1} - w_{n-2})) or
-     * "previous" (w_{n-1}): where Newton starts. */
-    std::string  initial_guess;
-    /** Separating <-> damped passes through normal stick (one iteration). */
-    bool         gradual_normal_branches;
+    InitialGuess initial_guess;
     bool         strict_convexity_check;
 
     static void declare(ParameterHandler &prm);
     void        parse(ParameterHandler &prm);
   };
 
+  /** The linear solver of a Newton iteration. */
+  enum class LinearSolverType
+  {
+    cg_amg, ///< CG on the projected operator, AMG-based preconditioner
+    direct  ///< sparse direct solve of the projected Newton matrix (reference)
+  };
+
+  /** How far each Krylov solve of a Newton iteration goes. */
+  enum class ForcingTerm
+  {
+    eisenstat_walker, ///< follows the decrease of the Newton residual
+    fixed             ///< always to 'relative tolerance'
+  };
+
   /** Linear solver of each Newton step. */
   struct LinearSolverParameters
   {
-    std::string  type; ///< "cg amg" or "direct"
-    /** "projected" (K0 and its AMG once per mesh) or "assembled". */
-    std::string  newton_operator;
-    /** "eisenstat-walker" or "fixed" Krylov tolerance. */
-    std::string  forcing_term;
-    double       maximum_forcing_term;
-    /** Solve to the Newton tolerance once no node changes branch. */
-    bool         exact_solve_when_settled;
-    /** Rebuild the AMG when Krylov work per decade exceeds this factor. */
-    bool         constrained_preconditioner;
-    double       preconditioner_rebuild_factor;
-    /** Split contact directions stiffer than this times K0 off the AMG. */
-    double       stiff_contact_threshold;
-    double       relative_tolerance;
-    unsigned int max_iterations;
-    double       aggregation_threshold;
-    unsigned int smoother_sweeps;
+    LinearSolverType type;
+    ForcingTerm      forcing_term;
+    double           relative_tolerance;
+    unsigned int     max_iterations;
 
     static void declare(ParameterHandler &prm);
     void        parse(ParameterHandler &prm);
@@ -215,6 +218,8 @@ namespace hemicontact
     DataParameters             data;
     NonlinearSolverParameters  nonlinear_solver;
     LinearSolverParameters     linear_solver;
+    /** Set from C++ only (tests, benchmarks): see SolverTuning. */
+    SolverTuning               solver_tuning;
     OutputParameters           output;
     AdaptivityParameters       adaptivity;
     CheckpointParameters       checkpoint;

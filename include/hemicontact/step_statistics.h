@@ -14,7 +14,7 @@ namespace hemicontact
     unsigned int n_damped            = 0;
     unsigned int n_stick             = 0;
     unsigned int n_slip              = 0;
-    unsigned int n_damped_steps      = 0; ///< line-search reductions
+    unsigned int line_search_reductions = 0;
     double       residual            = 0; ///< relative nonsmooth residual
     double       wall_seconds        = 0;
     unsigned int time_step_halvings  = 0; ///< sub-steps added after failures

@@ -247,83 +247,13 @@ namespace hemicontact
     base_constraints.set_zero(step_rhs);
   }
 
-  template <int dim>
-  void
-  ContactProblem<dim>::assemble_newton_system(
-    const TrilinosWrappers::MPI::Vector &    iterate,
-    const std::vector<NodeMultipliers<dim>> &mult)
-  {
-    TimerOutput::Scope t(timer, "assembly: Newton system");
-    newton_matrix = 0;
-
-    const FiniteElement<dim> &fe = *discretization.fe;
-    FEValues<dim> fe_values(*discretization.mapping, fe,
-                            discretization.cell_quadrature(2),
-                            update_values | update_gradients |
-                              update_JxW_values);
-    const unsigned int n = fe.n_dofs_per_cell();
-    FullMatrix<double> cell_matrix(n, n), cell_mass(n, n), cell_elastic(n, n);
-    std::vector<types::global_dof_index> dofs(n);
-
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          // K0 = rho/k M + A
-          cell_matrices(fe_values, cell_mass, cell_matrix, cell_elastic);
-          cell_matrix.add(1. / time_step, cell_mass);
-          cell->get_dof_indices(dofs);
-          newton_constraints.distribute_local_to_global(cell_matrix, dofs,
-                                                        newton_matrix);
-        }
-
-    // right-hand side: b with the linearised contact forces, condensed
-    // node by node (the contact constraints couple only a node's own dofs)
-    newton_rhs = step_rhs;
-    for (const ContactNode<dim> &node : contact_nodes)
-      if (node.locally_owned)
-        for (unsigned int c = 0; c < dim; ++c)
-          newton_rhs[node.dofs[c]] = 0;
-    newton_rhs.compress(VectorOperation::insert);
-
-    FullMatrix<double>                   node_matrix(dim, dim);
-    Vector<double>                       node_rhs(dim);
-    std::vector<types::global_dof_index> node_dofs(dim);
-    for (unsigned int k = 0; k < contact_nodes.size(); ++k)
-      if (contact_nodes[k].locally_owned)
-        {
-          const ContactNode<dim> &node = contact_nodes[k];
-          const NodeLinearization<dim> lin =
-            NodeContact::linearize(node, mult[k], *law, *friction);
-          for (unsigned int a = 0; a < dim; ++a)
-            {
-              node_dofs[a] = node.dofs[a];
-              node_rhs(a)  = step_rhs[node.dofs[a]] - lin.force[a];
-              for (unsigned int b = 0; b < dim; ++b)
-                {
-                  node_matrix(a, b) = lin.matrix[a][b];
-                  node_rhs(a) += lin.matrix[a][b] * iterate[node.dofs[b]];
-                }
-            }
-          newton_constraints.distribute_local_to_global(node_matrix, node_rhs,
-                                                        node_dofs,
-                                                        newton_matrix,
-                                                        newton_rhs);
-        }
-    newton_matrix.compress(VectorOperation::add);
-    newton_rhs.compress(VectorOperation::add);
-  }
-
 #define HEMICONTACT_INSTANTIATE(dim)                                           \
   template void ContactProblem<dim>::assemble_constant_matrices();            \
   template void ContactProblem<dim>::cell_matrices(                           \
     const FEValues<dim> &, FullMatrix<double> &, FullMatrix<double> &,         \
     FullMatrix<double> &) const;                                               \
   template void ContactProblem<dim>::assemble_load(const double);             \
-  template void ContactProblem<dim>::assemble_step_rhs();                     \
-  template void ContactProblem<dim>::assemble_newton_system(                  \
-    const TrilinosWrappers::MPI::Vector &,                                     \
-    const std::vector<NodeMultipliers<dim>> &);
+  template void ContactProblem<dim>::assemble_step_rhs();
 
   HEMICONTACT_INSTANTIATE(2)
   HEMICONTACT_INSTANTIATE(3)

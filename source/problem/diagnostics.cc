@@ -90,7 +90,7 @@ namespace hemicontact
           for (unsigned int c = 0; c < dim; ++c)
             v[c] = velocity[node.dofs[c]];
           const auto [normal, tangential] =
-            NodeContact::contact_work(node, v, *law, *friction);
+            nodal::contact_work(node, v, *law, *friction);
           damping += normal;
           friction_work += tangential;
         }
@@ -154,7 +154,7 @@ namespace hemicontact
     };
     // preconditioned by one cycle of the AMG of K0, which the steps reuse
     const TrilinosWrappers::PreconditionAMG &amg =
-      linear_solver.step_preconditioner(step_matrix);
+      preconditioner.step_amg(step_matrix);
     const auto precondition = [&](const TrilinosWrappers::MPI::Vector &in,
                                   TrilinosWrappers::MPI::Vector &      out) {
       amg.vmult(out, in);
@@ -168,7 +168,7 @@ namespace hemicontact
         {
           Tensor<1, dim> start = node.normal;
           if (convexity_with_friction)
-            for (const Tensor<1, dim> &t : NodeContact::tangent_basis(node.normal))
+            for (const Tensor<1, dim> &t : nodal::tangent_basis(node.normal))
               start += t;
           for (unsigned int c = 0; c < dim; ++c)
             x[node.dofs[c]] = start[c];

@@ -343,7 +343,7 @@ namespace hemicontact
             << e.friction_dissipation << "," << e.damping_dissipation << ","
             << e.external_work << "," << e.numerical_dissipation << ","
             << e.defect() << "," << e.relative_defect() << ","
-            << s.n_damped_steps << "," << s.wall_seconds << ","
+            << s.line_search_reductions << "," << s.wall_seconds << ","
             << (s.adapted ? 1 : 0) << "," << s.kinetic_before_adaptation << ","
             << s.elastic_before_adaptation << ","
             << s.kinetic_after_adaptation << "," << s.elastic_after_adaptation

@@ -65,7 +65,7 @@ namespace hemicontact
     // is zero after the start, an adaptation or a resume (old_velocity =
     // velocity there)
     const bool extrapolate =
-      parameters.nonlinear_solver.initial_guess == "extrapolated" &&
+      parameters.nonlinear_solver.initial_guess == InitialGuess::extrapolated &&
       last_step_length > 0;
     TrilinosWrappers::MPI::Vector trend;
     if (extrapolate)
@@ -117,7 +117,7 @@ namespace hemicontact
     set_time_step(k);
     second.newton_iterations += first.newton_iterations;
     second.linear_iterations += first.linear_iterations;
-    second.n_damped_steps += first.n_damped_steps;
+    second.line_search_reductions += first.line_search_reductions;
     second.time_step_halvings += 1 + first.time_step_halvings;
     return second;
   }
@@ -132,7 +132,7 @@ namespace hemicontact
     const std::pair<double, double> before = stored_energy();
     time_step                              = k;
     assemble_constant_matrices();
-    linear_solver.clear_preconditioners();
+    preconditioner.clear();
     std::tie(energy.kinetic, energy.elastic) = stored_energy();
     energy.transfer_change += energy.kinetic + energy.elastic -
                               before.first - before.second;

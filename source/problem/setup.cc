@@ -39,6 +39,7 @@ namespace hemicontact
     , discretization(parameters.geometry, comm)
     , dof_handler(*discretization.triangulation)
     , linear_solver(parameters.linear_solver, comm)
+    , preconditioner(parameters.solver_tuning, comm)
   {
     AssertThrow(dim == parameters.dimension,
                 ExcMessage("ContactProblem<dim> built for another dimension."));
@@ -73,7 +74,7 @@ namespace hemicontact
     setup_dofs();
     assemble_constant_matrices();
     setup_contact_nodes();
-    linear_solver.set_rigid_body_modes(dof_handler, *discretization.mapping);
+    preconditioner.reinit(dof_handler, *discretization.mapping);
   }
 
   template <int dim>
@@ -98,16 +99,10 @@ namespace hemicontact
     for (TrilinosWrappers::SparseMatrix *m :
          {&mass_matrix, &step_matrix, &elastic_matrix})
       m->reinit(sparsity);
-    // the projected operator's constrained AMG copies K0 into newton_matrix
-    // (pattern and values) when it first needs it
-    if (assembles_newton_matrix())
-      newton_matrix.reinit(sparsity);
-    else
-      newton_matrix.clear();
 
     for (TrilinosWrappers::MPI::Vector *v :
          {&velocity, &old_velocity, &displacement, &load, &step_rhs,
-          &newton_rhs, &contact_traction})
+          &contact_traction})
       v->reinit(locally_owned_dofs, mpi_communicator);
   }
 
@@ -214,7 +209,7 @@ namespace hemicontact
                     diag += diagonal_g[node.dofs[c]] / dim;
                   }
                 node.normal /= node.normal.norm();
-                node.c = parameters.nonlinear_solver.complementarity_factor *
+                node.c = parameters.solver_tuning.complementarity_factor *
                          diag / node.mass;
                 node.locally_owned = locally_owned_dofs.is_element(node.dofs[0]);
                 contact_nodes.push_back(node);

@@ -160,9 +160,10 @@ namespace hemicontact
 
     // the interpolated fields are the initial guesses
     linear_solver.solve_mass(mass_matrix, w, m_w);
-    linear_solver.solve(elastic_matrix, u_next, b_u);
+    linear_solver.solve(elastic_matrix, preconditioner.amg_of(elastic_matrix),
+                        u_next, b_u);
     // free the AMG of B: nothing else on this mesh has been built yet
-    linear_solver.clear_preconditioners();
+    preconditioner.clear();
   }
 
   template void ContactProblem<2>::cell_functionals(

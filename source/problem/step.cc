@@ -1,0 +1,66 @@
+#include <deal.II/base/mpi.h>
+
+#include <hemicontact/active_set_newton.h>
+#include <hemicontact/contact_problem.h>
+#include <hemicontact/contact_step.h>
+
+namespace hemicontact
+{
+  template <int dim>
+  void
+  ContactProblem<dim>::count_branches(StepStatistics &stats) const
+  {
+    unsigned int counts[5] = {0, 0, 0, 0, 0};
+    for (const ContactNode<dim> &node : contact_nodes)
+      if (node.locally_owned)
+        {
+          ++counts[static_cast<unsigned int>(node.normal_branch)];
+          ++counts[3 + static_cast<unsigned int>(node.tangential_branch)];
+        }
+    for (unsigned int &c : counts)
+      c = Utilities::MPI::sum(c, mpi_communicator);
+    stats.n_separating   = counts[0];
+    stats.n_normal_stick = counts[1];
+    stats.n_damped       = counts[2];
+    stats.n_stick        = counts[3];
+    stats.n_slip         = counts[4];
+  }
+
+  template <int dim>
+  StepStatistics
+  ContactProblem<dim>::solve_step()
+  {
+    ContactStep<dim> step({step_matrix, step_rhs, base_constraints,
+                           locally_owned_dofs, locally_relevant_dofs,
+                           contact_nodes, *law, *friction, linear_solver,
+                           preconditioner, timer, mpi_communicator},
+                          parameters);
+    const ActiveSetNewton newton(newton_settings(parameters), &timer);
+
+    TrilinosWrappers::MPI::Vector w(velocity);
+    TrilinosWrappers::MPI::Vector residual(locally_owned_dofs,
+                                           mpi_communicator);
+    const ActiveSetNewton::Report report = newton.solve(step, w, residual);
+
+    velocity = w;
+    // the nodal contact traction -(K0 w - b)_i / m_i
+    for (const ContactNode<dim> &node : contact_nodes)
+      if (node.locally_owned)
+        for (unsigned int c = 0; c < dim; ++c)
+          contact_traction[node.dofs[c]] = -residual[node.dofs[c]] / node.mass;
+    contact_traction.compress(VectorOperation::insert);
+
+    StepStatistics stats;
+    stats.newton_iterations      = report.newton_iterations;
+    stats.linear_iterations      = report.linear_iterations;
+    stats.line_search_reductions = report.line_search_reductions;
+    stats.residual               = report.relative_residual;
+    count_branches(stats);
+    return stats;
+  }
+
+  template void ContactProblem<2>::count_branches(StepStatistics &) const;
+  template void ContactProblem<3>::count_branches(StepStatistics &) const;
+  template StepStatistics ContactProblem<2>::solve_step();
+  template StepStatistics ContactProblem<3>::solve_step();
+} // namespace hemicontact
