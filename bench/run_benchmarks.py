@@ -17,6 +17,8 @@ also written to bench/results/benchmark.csv (or --output).
                                     # chosen cases, fastest of 3 runs each
   /usr/bin/python3 bench/run_benchmarks.py --levels-3d 3,4,5 --only '^3d-r[345]$'
                                     # the 3D levels one finer (r5: 421k dofs)
+  /usr/bin/python3 bench/run_benchmarks.py --quick --skip-large --baseline /tmp/old/build/hemicontact --repeat 3
+                                    # against another build, ratios in one run
 
 Needs a Release build in build/ (cmake -S . -B build -DCMAKE_BUILD_TYPE=Release).
 """
@@ -34,11 +36,12 @@ EXE = os.path.join(ROOT, "build", "hemicontact")
 
 def case(name, base, refinements, end_time=1.0, ranks=1, subdivisions=None,
          solver=None, time_step=None, group=None, nonlinear=None,
-         keep_probes=False):
+         keep_probes=False, output=None):
     return dict(name=name, base=base, refinements=refinements,
                 end_time=end_time, ranks=ranks, subdivisions=subdivisions,
                 solver=solver or {}, time_step=time_step, group=group,
-                nonlinear=nonlinear or {}, keep_probes=keep_probes)
+                nonlinear=nonlinear or {}, keep_probes=keep_probes,
+                output=output or {"vtu interval": "0"})
 
 
 def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None):
@@ -70,6 +73,15 @@ def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None):
                           ("3d", "block_3d.prm", middle)):
         result.append(case(f"{name}-r{r}-previous-guess", base, r,
                            nonlinear={"initial guess": "previous"}))
+    # the cost of writing the solution: every step written, on the finest
+    # levels, in both formats
+    for name, base, r in (("2d", "block_2d.prm", levels_2d[-1]),
+                          ("3d", "block_3d.prm", levels_3d[-1])):
+        for format in ("vtu", "hdf5"):
+            result.append(case(f"{name}-r{r}-write-{format}", base, r,
+                               end_time=0.1,
+                               output={"vtu interval": "1",
+                                       "format": format}))
     if not skip_large and not quick:
         # 160 x 40 x 40 hexahedra: 811,923 dofs; the first steps
         for ranks in (1, 2):
@@ -96,8 +108,9 @@ def write_prm(c, directory):
     lines.append("end\nsubsection linear solver\n")
     for key, value in c["solver"].items():
         lines.append("  set %s = %s\n" % (key, value))
-    lines.append("end\nsubsection output\n  set directory = %s\n"
-                 "  set vtu interval = 0\n" % directory)
+    lines.append("end\nsubsection output\n  set directory = %s\n" % directory)
+    for key, value in c["output"].items():
+        lines.append("  set %s = %s\n" % (key, value))
     if not c["keep_probes"]:
         lines.append("  set probe points =\n")
     lines.append("  set terminal = quiet\n  set timing summary = false\n"
@@ -108,22 +121,22 @@ def write_prm(c, directory):
     return path
 
 
-def run(c, work, reuse=False):
-    directory = os.path.join(work, c["name"])
+def run(c, work, reuse=False, executable=EXE, suffix=""):
+    directory = os.path.join(work, c["name"] + suffix)
     result = os.path.join(directory, "performance.csv")
     if reuse and os.path.exists(result) and os.path.getsize(result) > 0:
         print(f"reusing {c['name']}", file=sys.stderr, flush=True)
-        return read_performance(result, c["name"])
+        return read_performance(result, c["name"] + suffix)
     os.makedirs(directory, exist_ok=True)
     prm = write_prm(c, directory)
-    command = [EXE, prm]
+    command = [executable, prm]
     if c["ranks"] > 1:
         command = ["mpirun", "-np", str(c["ranks"])] + command
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
                OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    print(f"running {c['name']} ...", file=sys.stderr, flush=True)
+    print(f"running {c['name']}{suffix} ...", file=sys.stderr, flush=True)
     subprocess.run(command, check=True, env=env, stdout=subprocess.DEVNULL)
-    return read_performance(result, c["name"])
+    return read_performance(result, c["name"] + suffix)
 
 
 def read_performance(path, name):
@@ -156,12 +169,12 @@ COLUMNS = [
     ("reference_cg_wall", "(CG)", "%8.4f"),
     ("ratio_step_to_reference", "ratio", "%6.2f"),
     ("time_assembly_load", "load", "%7.2f"),
-    ("time_assembly_newton", "asm", "%7.2f"),
     ("time_active_set_update", "act.set", "%7.2f"),
     ("time_preconditioner_setup", "AMG", "%7.2f"),
     ("time_linear_solve_without_setup", "Krylov", "%7.2f"),
     ("time_energy", "energy", "%7.2f"),
     ("time_output", "output", "%6.2f"),
+    ("write_to_step", "wr/stp", "%6.2f"),
     ("peak_memory_bytes", "MiB", "%7.0f"),
     ("bytes_per_dof", "B/dof", "%7.0f"),
 ]
@@ -181,6 +194,12 @@ def main():
     parser.add_argument("--levels-3d", default=None,
                         help="the three 3D refinements, e.g. 2,3,4 (default; "
                         "1,2,3 with --quick); 3,4,5 takes ~15 min more")
+    parser.add_argument("--baseline", default=None,
+                        help="another hemicontact executable (e.g. a build "
+                        "of an older commit): every case also runs with it, "
+                        "round-robin with build/hemicontact, and the table "
+                        "adds its rows ('@baseline') and the ratios of "
+                        "s/step and iterations")
     parser.add_argument("--reuse", action="store_true",
                         help="reuse the results of cases already in --work")
     parser.add_argument("--repeat", type=int, default=1,
@@ -208,16 +227,26 @@ def main():
     if args.only:
         all_cases = [c for c in all_cases if re.search(args.only, c["name"])]
     to_run = [c for c in all_cases if not c.get("shared")]
+    builds = [(EXE, "")]
+    if args.baseline:
+        builds.append((os.path.abspath(args.baseline), "@baseline"))
     fastest = {}
     for round in range(max(args.repeat, 1)):
         for c in to_run:
-            row = run(c, args.work, args.reuse and args.repeat <= 1)
-            best = fastest.get(c["name"])
-            if best is None or row["wall_per_step"] < best["wall_per_step"]:
-                fastest[c["name"]] = row
-    rows = [fastest[c["name"]] for c in to_run]
+            for executable, suffix in builds:
+                row = run(c, args.work, args.reuse and args.repeat <= 1,
+                          executable, suffix)
+                best = fastest.get(row["case"])
+                if best is None or row["wall_per_step"] < best["wall_per_step"]:
+                    fastest[row["case"]] = row
+    rows = [fastest[c["name"] + suffix] for c in to_run
+            for _, suffix in builds]
     for r in rows:
         r["peak_memory_bytes"] /= 2 ** 20
+        # one solution write against one step (0 when nothing was written)
+        r["write_to_step"] = (r["time_output"] / r["solution_writes"] /
+                              r["wall_per_step"]
+                              if r.get("solution_writes", 0) > 0 else 0.)
     by_name = {r["case"]: r for r in rows}
     groups = {}
     for c in all_cases:
@@ -245,6 +274,16 @@ def main():
                             " / ".join("%.2f" % m for m in means)))
             summary.append((f"Newton mean spread max-min ({group})",
                             max(means) - min(means)))
+    if args.baseline:
+        for c in to_run:
+            new, old = by_name[c["name"]], fastest[c["name"] + "@baseline"]
+            summary.append((f"{c['name']}: s/step, Newton, Krylov per solve "
+                            "against the baseline",
+                            "%.3f / %.3f / %.3f" % (
+                                new["wall_per_step"] / old["wall_per_step"],
+                                new["newton_mean"] / old["newton_mean"],
+                                new["linear_per_solve"] /
+                                max(old["linear_per_solve"], 1e-300))))
     large = {r["mpi_ranks"]: r for r in rows
              if re.fullmatch(r"3d-large-np\d", r["case"])}
     if 1 in large and 2 in large:
@@ -258,8 +297,8 @@ def main():
 
     os.makedirs(os.path.dirname(args.output), exist_ok=True)
     with open(args.output, "w", newline="") as f:
-        keys = ["case"] + sorted(k for k in rows[0] if k != "case")
-        writer = csv.DictWriter(f, fieldnames=keys)
+        keys = ["case"] + sorted({k for r in rows for k in r} - {"case"})
+        writer = csv.DictWriter(f, fieldnames=keys, restval="")
         writer.writeheader()
         writer.writerows(rows)
         for name, value in summary:

@@ -309,12 +309,17 @@ namespace hemicontact
     prm.declare_entry("directory", "output", Patterns::Anything(),
                       "Directory for all output (created if missing).");
     prm.declare_entry("vtu interval", "10", Patterns::Integer(0),
-                      "Write VTU/PVTU (and the .pvd series) every this many "
-                      "steps; 0 writes none.");
+                      "Write the solution files every this many steps; 0 "
+                      "writes none.");
+    prm.declare_entry("format", "vtu", Patterns::Selection("vtu|hdf5"),
+                      "Solution files: 'vtu' (.vtu per rank and .pvtu per "
+                      "output time, series solution.pvd) or 'hdf5' (one .h5 "
+                      "per output time written by all ranks, series "
+                      "solution.xdmf). ParaView opens either series.");
     prm.declare_entry("compression", "best speed",
                       Patterns::Selection("best speed|default|best "
                                           "compression|none"),
-                      "zlib compression of the VTU files: 'best speed' "
+                      "zlib compression of VTU files: 'best speed' "
                       "(fast, files somewhat larger), 'default', 'best "
                       "compression' (smallest files, slowest) or 'none'. "
                       "Lossless at every level.");
@@ -345,6 +350,8 @@ namespace hemicontact
     prm.enter_subsection("output");
     directory      = prm.get("directory");
     vtu_interval   = prm.get_integer("vtu interval");
+    format = prm.get("format") == "hdf5" ? SolutionFormat::hdf5 :
+                                           SolutionFormat::vtu;
     probe_points   = prm.get("probe points");
     terminal       = prm.get("terminal");
     const std::string level = prm.get("compression");
@@ -405,19 +412,11 @@ namespace hemicontact
     prm.declare_entry("type", "single",
                       Patterns::Selection("single|h|k|coupled"),
                       "With a manufactured solution: 'single' runs once; 'h' "
-                      "refines the mesh once per level with the time step "
-                      "fixed; 'k' halves the time step per level on the fixed "
-                      "mesh; 'coupled' does both (k = c h). Level 0 uses "
-                      "'geometry/global refinements' and 'time/time step'. "
-                      "Adaptive ('adaptivity/interval' > 0): each level "
-                      "adapts the mesh as a run does, and 'h' and 'coupled' "
-                      "raise 'adaptivity/max level' by one and multiply "
-                      "'adaptivity/max cells' by 2^dim per level, along "
-                      "with the global refinements of the starting mesh; "
-                      "the table then gives the mean and maximum dofs over "
-                      "the steps (convergence.csv: mean_dofs, max_dofs) and "
-                      "for 'h' and 'coupled' the orders -log(error "
-                      "ratio)/log(mean dofs ratio) (O(h) is 1/dim).");
+                      "refines the mesh once per level at a fixed time step; "
+                      "'k' halves the time step per level on a fixed mesh; "
+                      "'coupled' does both (k = c h). Level 0 uses "
+                      "'geometry/global refinements' and 'time/time step'; "
+                      "adaptive studies are described in doc/adaptivity.md.");
     prm.declare_entry("levels", "4", Patterns::Integer(1, 12),
                       "Number of levels.");
     prm.leave_subsection();
@@ -442,53 +441,32 @@ namespace hemicontact
     prm.declare_entry(
       "indicator", "kelly",
       Patterns::Selection("kelly|kelly contact|residual"),
-      "Cell indicator: 'kelly': Kelly's jump of the normal derivative of the "
-      "velocity w_n across faces; 'kelly contact': plus, on cells with a "
-      "face on Gamma_3, 'contact weight' times sqrt(h_F sum |t_i - t_j|^2) "
-      "over the face's pairs of contact nodes, t the nodal contact traction "
-      "(large at the edge of the contact zone and at stick-slip fronts); "
-      "'residual': the residual of the step in the cell, h_K^2 |f0 - rho/k "
-      "(w_n - w_{n-1}) + div sigma_h|^2, plus half of h_F |[sigma_h nu]|^2 "
-      "on each interior face, h_F |f2 - sigma_h nu|^2 on Gamma_2 (zero "
-      "traction on unlisted boundaries) and 'contact weight'^2 h_F |f3 - "
-      "sigma_h nu - xi_h|^2 on Gamma_3, sigma_h = A eps(w_n) + B eps(u_n) "
-      "and xi_h the nodal contact traction (square root of the sum).");
+      "Cell indicator: 'kelly' (jumps of the normal derivative of w_n), "
+      "'kelly contact' (plus the jumps of the nodal contact traction on "
+      "Gamma_3) or 'residual' (the step's residual in cells, on faces and "
+      "on Gamma_3). Formulas in doc/adaptivity.md.");
     prm.declare_entry("contact weight", "1", Patterns::Double(0),
                       "Weight of the contact term of 'kelly contact' and "
                       "'residual'.");
     prm.declare_entry(
       "pre-refinement steps", "0", Patterns::Integer(0),
-      "After this many steps (adapting as usual), start the run again, "
-      "once, from t = 0 and the initial state on the mesh reached, and go "
-      "on adapting from there (as deal.II's step-26), so that the errors of "
-      "the early steps on the coarse start mesh do not stay in the solution "
-      "(doc/adaptivity.md); 0: never. steps.csv, the probes and the output "
-      "files hold both parts (the step numbers start again at 1). Needs "
-      "'interval' > 0; not with checkpoints or manufactured solutions.");
+      "After this many steps, restart once from t = 0 on the mesh reached "
+      "(as deal.II's step-26), so that the early steps' coarse-mesh errors "
+      "do not stay in the solution; 0: never. Needs 'interval' > 0; not "
+      "with checkpoints or manufactured solutions.");
     prm.declare_entry("strategy", "fixed fraction",
                       Patterns::Selection("fixed fraction|fixed number"),
-                      "'fixed fraction': refine the fewest cells with the "
-                      "largest indicators that hold at least 'refine "
-                      "fraction' of the sum of all indicators, coarsen the "
-                      "most cells with the smallest indicators that hold at "
-                      "most 'coarsen fraction' of it; 'fixed number': "
-                      "refine/coarsen these fractions of the cells. Either "
-                      "way a cut between two indicators that differ by less "
-                      "than a relative 1e-5 moves to the nearest cut that "
-                      "does not (fewer refined or coarsened cells first), at "
-                      "most max(8, cells/1000) cells away (if there is none, "
-                      "to the widest gap within that distance), so "
-                      "round-off and solver tolerances do not change the "
-                      "mesh (the same on any number of MPI ranks). Both "
-                      "respect 'max cells' (fixed fraction: no refinement "
-                      "once the mesh has that many cells).");
+                      "'fixed fraction': refine the cells that hold 'refine "
+                      "fraction' of the summed indicator and coarsen those "
+                      "that hold 'coarsen fraction' of it; 'fixed number': "
+                      "refine/coarsen these fractions of the cells. Cuts "
+                      "avoid near-ties, so the mesh is the same on any number "
+                      "of ranks (doc/adaptivity.md).");
     prm.declare_entry("refine fraction", "0.3", Patterns::Double(0, 1),
                       "See 'strategy'.");
     prm.declare_entry(
       "coarsen fraction", "0.05", Patterns::Double(0, 1),
-      "See 'strategy'. Coarsened cells stay too coarse for later steps, and "
-      "these errors add up over a dynamic run (doc/adaptivity.md); 0 refines "
-      "only.");
+      "See 'strategy'; 0 refines only.");
     prm.declare_entry("max cells", "0", Patterns::Integer(0),
                       "Upper limit of the number of cells (0: none).");
     prm.declare_entry("min level", "0", Patterns::Integer(0, 30),
@@ -498,17 +476,10 @@ namespace hemicontact
     prm.declare_entry(
       "state transfer", "interpolation",
       Patterns::Selection("interpolation|projection"),
-      "How w_n and u_n move to the new mesh. 'interpolation': deal.II's "
-      "SolutionTransfer, exact on refined and kept cells, nodal values on "
-      "coarsened ones. 'projection': the next step sees the state only "
-      "through rho/k M w_n - B u_{n+1}, u_{n+1} = u_n + k w_n; this keeps "
-      "that functional exactly on the new mesh: w_n becomes the M-projection "
-      "and u_{n+1} the a_B-projection (Ritz) of the old fields, from their "
-      "integrals over the children of each coarsened cell. Costs two linear "
-      "solves per adaptation (the mass matrix by CG with Jacobi, the elastic "
-      "matrix by the linear solver with a new AMG set-up); the same as "
-      "'interpolation' when nothing is coarsened, up to the solver tolerance "
-      "(doc/adaptivity.md).");
+      "How w_n and u_n move to the new mesh: 'interpolation' (deal.II's "
+      "SolutionTransfer) or 'projection' (M- and a_B-projections that keep "
+      "what the next step sees of the state exactly, at two linear solves "
+      "per adaptation). See doc/adaptivity.md.");
     prm.leave_subsection();
   }
 

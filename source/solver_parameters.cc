@@ -26,11 +26,11 @@ namespace hemicontact
       "recursively up to this many times; 0: stop with a checkpoint of the "
       "last converged step.");
     prm.declare_entry("line search", "true", Patterns::Bool(),
-                      "Damp each Newton update by backtracking on the step "
+                      "Expert: damp each Newton update by backtracking on the step "
                       "energy J_n (needed for nonconvex laws).");
     prm.declare_entry("initial guess", "extrapolated",
                       Patterns::Selection("extrapolated|previous"),
-                      "Where Newton starts: 'extrapolated' w_{n-1} + "
+                      "Expert: where Newton starts, 'extrapolated' w_{n-1} + "
                       "k_n/k_{n-1} (w_{n-1} - w_{n-2}), or 'previous' "
                       "w_{n-1}. Changes the cost, not the solution.");
     prm.declare_entry("strict convexity check", "false", Patterns::Bool(),
@@ -71,11 +71,12 @@ namespace hemicontact
                       "residual; 'fixed' always solves to 'relative "
                       "tolerance'. Changes the cost, not the solution.");
     prm.declare_entry("relative tolerance", "1e-10", Patterns::Double(0),
-                      "Krylov tolerance relative to the right-hand side: the "
-                      "accuracy of every linear solve (at most the Newton "
-                      "tolerance).");
+                      "Expert: Krylov tolerance relative to the right-hand "
+                      "side, the accuracy of every linear solve (at most the "
+                      "Newton tolerance).");
     prm.declare_entry("max iterations", "1000", Patterns::Integer(1),
-                      "Krylov iterations allowed in one linear solve.");
+                      "Expert: Krylov iterations allowed in one linear "
+                      "solve.");
     prm.leave_subsection();
   }
 

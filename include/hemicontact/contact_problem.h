@@ -294,8 +294,12 @@ namespace hemicontact
                               TrilinosWrappers::MPI::Vector &u_next);
 
     /** @name output.cc */
+    /**
+     * Write the solution files of the current step ('output/format') and
+     * replace the series file (solution.pvd or solution.xdmf) atomically.
+     */
     void
-    write_vtu();
+    write_solution();
     void
     open_tables();
     void
@@ -408,6 +412,8 @@ namespace hemicontact
     unsigned int n_steps     = 0;
     unsigned int step_number = 0;
 
+    /** The series written so far: (time, .pvtu file) for VTU output,
+     *  (time, XDMF grid element) for HDF5 output. */
     std::vector<std::pair<double, std::string>> pvd_records;
     /** Wall clock and step number when the time loop started (for the
      *  time left on the progress line). */

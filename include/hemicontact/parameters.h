@@ -134,10 +134,18 @@ namespace hemicontact
   };
 
   /** What is written, where and how often. */
+  /** The format of the solution files. */
+  enum class SolutionFormat
+  {
+    vtu, ///< .vtu per rank, .pvtu per output time, the .pvd series
+    hdf5 ///< one .h5 per output time (parallel HDF5), the .xdmf series
+  };
+
   struct OutputParameters
   {
     std::string  directory;
     unsigned int vtu_interval; ///< every this many steps, 0 = never
+    SolutionFormat format;
     std::string  probe_points; ///< "x,y; x,y" (empty: none)
     std::string  terminal;     ///< "progress", "quiet" or "test"
     /** zlib level of the VTU files (lossless at every level). */

@@ -213,7 +213,7 @@ namespace hemicontact
 
   template <int dim>
   void
-  ContactProblem<dim>::write_vtu()
+  ContactProblem<dim>::write_solution()
   {
     TimerOutput::Scope t(timer, "output");
     TrilinosWrappers::MPI::Vector w(locally_owned_dofs, locally_relevant_dofs,
@@ -291,18 +291,37 @@ namespace hemicontact
       }
 
     data_out.build_patches(*discretization.mapping);
-    DataOutBase::VtkFlags flags;
-    flags.compression_level = parameters.output.compression;
-    data_out.set_flags(flags);
-    // a failed write (no space left) names the files; the .pvd series is
+    // a failed write (no space left) names the files; the series file is
     // replaced atomically and lists only the files written completely
-    std::string pvtu, error;
+    const std::string directory = parameters.output.directory + "/";
+    std::string       record, error;
     errno = 0;
     try
       {
-        pvtu = data_out.write_vtu_with_pvtu_record(
-          parameters.output.directory + "/", "solution", step_number,
-          mpi_communicator, 5);
+        if (parameters.output.format == SolutionFormat::hdf5)
+          {
+            DataOutBase::DataOutFilter filter(
+              DataOutBase::DataOutFilterFlags(/*filter_duplicates=*/false,
+                                              /*xdmf_hdf5_output=*/true));
+            data_out.write_filtered_data(filter);
+            const std::string h5 =
+              "solution_" + Utilities::int_to_string(step_number, 5) + ".h5";
+            data_out.write_hdf5_parallel(filter, directory + h5,
+                                         mpi_communicator);
+            record = data_out
+                       .create_xdmf_entry(filter, h5, get_time(),
+                                          mpi_communicator)
+                       .get_xdmf_content(3, discretization.fe->reference_cell());
+          }
+        else
+          {
+            DataOutBase::VtkFlags flags;
+            flags.compression_level = parameters.output.compression;
+            data_out.set_flags(flags);
+            record = data_out.write_vtu_with_pvtu_record(directory, "solution",
+                                                         step_number,
+                                                         mpi_communicator, 5);
+          }
       }
     catch (const ExceptionBase &)
       {
@@ -312,13 +331,37 @@ namespace hemicontact
                 (errno != 0 ? std::strerror(errno) : "the write failed") + ".";
       }
     throw_if_any(error, mpi_communicator);
-    pvd_records.emplace_back(get_time(), pvtu);
+    pvd_records.emplace_back(get_time(), record);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
-        std::ostringstream pvd;
-        DataOutBase::write_pvd_record(pvd, pvd_records);
-        error = write_atomically(parameters.output.directory + "/solution.pvd",
-                                 pvd.str());
+        std::ostringstream series;
+        if (parameters.output.format == SolutionFormat::hdf5)
+          {
+            // DataOutBase's XDMF layout, from the grid elements recorded
+            series << "<?xml version=\"1.0\" ?>\n"
+                   << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+                   << "<Xdmf Version=\"2.0\">\n"
+                   << "  <Domain>\n"
+                   << "    <Grid Name=\"CellTime\" GridType=\"Collection\" "
+                      "CollectionType=\"Temporal\">\n";
+            for (const auto &entry : pvd_records)
+              if (!entry.second.empty() && entry.second.front() == ' ')
+                series << entry.second;
+            series << "    </Grid>\n  </Domain>\n</Xdmf>\n";
+          }
+        else
+          {
+            std::vector<std::pair<double, std::string>> files;
+            for (const auto &entry : pvd_records)
+              if (!entry.second.empty() && entry.second.front() != ' ')
+                files.push_back(entry);
+            DataOutBase::write_pvd_record(series, files);
+          }
+        error = write_atomically(
+          directory + (parameters.output.format == SolutionFormat::hdf5 ?
+                         "solution.xdmf" :
+                         "solution.pvd"),
+          series.str());
         if (!error.empty())
           pvd_records.pop_back();
       }
@@ -415,7 +458,7 @@ namespace hemicontact
   template void ContactProblem<dim>::open_tables();                           \
   template void ContactProblem<dim>::setup_probes();                          \
   template void ContactProblem<dim>::write_probes();                          \
-  template void ContactProblem<dim>::write_vtu();                             \
+  template void ContactProblem<dim>::write_solution();                        \
   template void ContactProblem<dim>::write_step_row(const StepStatistics &);  \
   template void ContactProblem<dim>::print_step(const StepStatistics &) const;
 

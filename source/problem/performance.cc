@@ -105,6 +105,7 @@ namespace hemicontact
         << "time_line_search," << times.at("line search") << "\n"
         << "time_energy," << times.at("energy balance") << "\n"
         << "time_output," << times.at("output") << "\n"
+        << "solution_writes," << pvd_records.size() << "\n"
         << "peak_memory_bytes," << peak_bytes << "\n"
         << "bytes_per_dof," << peak_bytes / dof_handler.n_dofs() << "\n";
   }

@@ -211,7 +211,7 @@ namespace hemicontact
       {
         if (interval > 0)
           {
-            write_vtu();
+            write_solution();
             write_contact_csv();
           }
         write_probes();
@@ -234,7 +234,7 @@ namespace hemicontact
           {
             if (interval > 0)
               {
-                write_vtu();
+                write_solution();
                 write_contact_csv();
               }
             if (has_checkpoints())
@@ -257,7 +257,7 @@ namespace hemicontact
         write_probes();
         if (interval > 0 && (step_number % interval == 0 || finished()))
           {
-            write_vtu();
+            write_solution();
             write_contact_csv();
           }
         adapt_mesh_if_due(stats);
@@ -281,7 +281,7 @@ namespace hemicontact
                 // the series shows the restarted run; its files replace
                 // those of the same steps before the restart
                 pvd_records.clear();
-                write_vtu();
+                write_solution();
                 write_contact_csv();
               }
             continue;
