@@ -196,7 +196,7 @@ namespace hemicontact
         if (found == names.end())
           fail("unknown function '" + name + "'");
         const int  id           = found - names.begin();
-        const bool two_argument = id >= 12;
+        const bool two_argument = id >= Expression::first_binary_function;
         std::vector<NodePtr> args;
         args.push_back(expression());
         if (two_argument)
@@ -225,7 +225,7 @@ namespace hemicontact
   {
     static const std::vector<std::string> names = {
       "sin",  "cos",  "tan",  "exp", "log", "sqrt", "abs", "tanh",
-      "sinh", "cosh", "atan", "pos", "pow", "max",  "min"};
+      "sinh", "cosh", "atan", "pos", "step", "sign", "pow", "max", "min"};
     return names;
   }
 

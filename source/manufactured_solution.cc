@@ -4,8 +4,6 @@
 #include <hemicontact/input_error.h>
 #include <hemicontact/manufactured_solution.h>
 
-#include <Sacado.hpp>
-
 #include <cmath>
 
 namespace hemicontact
@@ -57,42 +55,53 @@ namespace hemicontact
                                          constants, "tangential multiplier");
     friction_bound = std::make_shared<FrictionBound<dim>>(
       parameters.data.friction_bound, parameters.data.constants);
+
+    // the derivatives, once: t is variable number dim
+    for (int c = 0; c < dim; ++c)
+      {
+        velocity.push_back(displacement[c].derivative(dim));
+        acceleration.push_back(velocity[c].derivative(dim));
+        for (int i = 0; i < dim; ++i)
+          {
+            displacement_gradient.push_back(displacement[c].derivative(i));
+            velocity_gradient.push_back(velocity[c].derivative(i));
+          }
+      }
+    for (int c = 0; c < dim; ++c) // in the order (c dim + i) dim + j
+      for (int i = 0; i < dim; ++i)
+        for (int j = 0; j < dim; ++j)
+          {
+            displacement_hessian.push_back(
+              displacement_gradient[c * dim + i].derivative(j));
+            velocity_hessian.push_back(
+              velocity_gradient[c * dim + i].derivative(j));
+          }
   }
 
   template <int dim>
   typename ManufacturedSolution<dim>::Values
   ManufacturedSolution<dim>::evaluate(const Point<dim> &p, const double t) const
   {
-    // three nested forward-AD levels: d/dt (outer), d/d(x,t), d/dx (inner)
-    using T1 = Sacado::Fad::SFad<double, dim>;
-    using T2 = Sacado::Fad::SFad<T1, dim + 1>;
-    using T3 = Sacado::Fad::SFad<T2, 1>;
-
-    std::vector<T3> variables(dim + 1);
+    Values v = evaluate_fields(p, t);
+    std::vector<double> at(dim + 1);
     for (int i = 0; i < dim; ++i)
-      variables[i] = T3(T2(dim + 1, i, T1(dim, i, p[i])));
-    variables[dim] = T3(1, 0, T2(dim + 1, dim, T1(t)));
+      at[i] = p[i];
+    at[dim] = t;
 
-    Values v;
     Tensor<3, dim> hessian_u, hessian_w; // [component][i][j]
     for (int c = 0; c < dim; ++c)
       {
-        const T3 r = displacement[c].evaluate(variables);
-        v.u[c]     = r.val().val().val();
-        v.w[c]     = r.dx(0).val().val();
-        v.w_dot[c] = r.dx(0).dx(dim).val();
+        v.w_dot[c] = acceleration[c].evaluate(at);
         for (int i = 0; i < dim; ++i)
-          {
-            v.grad_u[c][i] = r.val().val().dx(i);
-            v.grad_w[c][i] = r.dx(0).val().dx(i);
-            for (int j = 0; j < dim; ++j)
-              {
-                hessian_u[c][i][j] = r.val().dx(j).dx(i);
-                hessian_w[c][i][j] = r.dx(0).dx(j).dx(i);
-              }
-          }
+          for (int j = i; j < dim; ++j)
+            {
+              const unsigned int k = (c * dim + i) * dim + j;
+              hessian_u[c][i][j] = hessian_u[c][j][i] =
+                displacement_hessian[k].evaluate(at);
+              hessian_w[c][i][j] = hessian_w[c][j][i] =
+                velocity_hessian[k].evaluate(at);
+            }
       }
-
     v.div_sigma = material.stress_divergence(hessian_w, hessian_u);
     return v;
   }
@@ -102,24 +111,20 @@ namespace hemicontact
   ManufacturedSolution<dim>::evaluate_fields(const Point<dim> &p,
                                              const double      t) const
   {
-    // d/dt (outer) of d/dx (inner)
-    using T1 = Sacado::Fad::SFad<double, dim>;
-    using T2 = Sacado::Fad::SFad<T1, 1>;
-    std::vector<T2> variables(dim + 1);
+    std::vector<double> at(dim + 1);
     for (int i = 0; i < dim; ++i)
-      variables[i] = T2(T1(dim, i, p[i]));
-    variables[dim] = T2(1, 0, T1(t));
+      at[i] = p[i];
+    at[dim] = t;
 
     Values v;
     for (int c = 0; c < dim; ++c)
       {
-        const T2 r = displacement[c].evaluate(variables);
-        v.u[c]     = r.val().val();
-        v.w[c]     = r.dx(0).val();
+        v.u[c] = displacement[c].evaluate(at);
+        v.w[c] = velocity[c].evaluate(at);
         for (int i = 0; i < dim; ++i)
           {
-            v.grad_u[c][i] = r.val().dx(i);
-            v.grad_w[c][i] = r.dx(0).dx(i);
+            v.grad_u[c][i] = displacement_gradient[c * dim + i].evaluate(at);
+            v.grad_w[c][i] = velocity_gradient[c * dim + i].evaluate(at);
           }
       }
     return v;

@@ -14,8 +14,11 @@ namespace hemicontact
    * derivatives (muparser evaluates only doubles). Grammar: numbers,
    * variables and constants, + - * / ^, unary minus, parentheses, and the
    * functions sin cos tan exp log sqrt abs tanh sinh cosh atan, pos(a) =
-   * max(a, 0) (for C^2 cut-offs such as pos(x-0.4)^3), pow(a,b), max(a,b),
-   * min(a,b).
+   * max(a, 0) (for C^2 cut-offs such as pos(x-0.4)^3), step(a) (1 if a > 0,
+   * else 0), sign(a) (-1 if a < 0, else 1), pow(a,b), max(a,b), min(a,b).
+   *
+   * derivative() differentiates symbolically: the derivatives of a
+   * manufactured solution are plain expressions evaluated in doubles.
    */
   class Expression
   {
@@ -28,6 +31,15 @@ namespace hemicontact
     Expression(const std::string &text, const std::vector<std::string> &variables,
                const std::map<std::string, double> &constants,
                const std::string &parameter_name);
+
+    /**
+     * The partial derivative by the variable number @p index, as an
+     * expression of its own (simplified: no zero terms, no factors one).
+     * At the kinks of abs, pos, max and min it takes the one-sided
+     * derivative that evaluate() with forward AD gives.
+     */
+    Expression
+    derivative(const unsigned int index) const;
 
     /** Evaluate with @p values of the variables. */
     template <typename Number>
@@ -56,11 +68,20 @@ namespace hemicontact
     uses_variable(const unsigned int index) const;
 
     /** The functions the grammar knows, in the order of Node::function_id;
-     *  the first ones take one argument, the last three two. */
+     *  from first_binary_function on they take two arguments. */
     static const std::vector<std::string> &
     function_names();
 
+    /** The function_id of pow, the first function of two arguments. */
+    static constexpr int first_binary_function = 14;
+
+    /** The function_id of @p name (one of function_names()). */
+    static int
+    function_id(const std::string &name);
+
   private:
+    explicit Expression(std::unique_ptr<Node> root);
+
     template <typename Number>
     static Number
     eval(const Node &node, const std::vector<Number> &values);
@@ -160,15 +181,19 @@ namespace hemicontact
                   return atan(a);
                 case 11:
                   return a > 0 ? a : Number(0.);
+                case 12:
+                  return Number(a > 0 ? 1. : 0.);
+                case 13:
+                  return Number(a < 0 ? -1. : 1.);
                 default:
                   break;
               }
             const Number b = eval(*node.args[1], values);
-            if (node.function_id == 12)
+            if (node.function_id == 14)
               return pow(a, b);
-            if (node.function_id == 13)
+            if (node.function_id == 15)
               return a > b ? a : b;
-            return a < b ? a : b; // 14: min
+            return a < b ? a : b; // 16: min
           }
       }
   }

@@ -22,8 +22,9 @@ namespace hemicontact
 
   /**
    * A manufactured solution u(x,t) given as expressions, with everything
-   * derived from it exactly (forward automatic differentiation, Sacado):
-   * w = du/dt, dw/dt, grad u, grad w and Div sigma, hence
+   * derived from it exactly: w = du/dt, dw/dt, grad u, grad w and the second
+   * derivatives in Div sigma are differentiated symbolically once
+   * (Expression::derivative()) and evaluated in doubles, hence
    *   f0 = rho dw/dt - Div sigma,  f2 = sigma nu,
    *   f3 = sigma nu + xi_nu nu + xi_tau  (doc/theory.md, section 4),
    * with xi_nu in dj(w_nu), xi_tau in dphi(w_tau) (the friction law's force
@@ -83,6 +84,15 @@ namespace hemicontact
     const FrictionLaw &                 friction;
     KelvinVoigtMaterial<dim>            material;
     std::vector<Expression>             displacement;
+    /** @name The derivatives of u, one expression per component */
+    /** @{ */
+    std::vector<Expression> velocity;              ///< w_c = du_c/dt
+    std::vector<Expression> acceleration;          ///< dw_c/dt
+    std::vector<Expression> displacement_gradient; ///< [c dim + i]: du_c/dx_i
+    std::vector<Expression> velocity_gradient;     ///< [c dim + i]: dw_c/dx_i
+    /** [(c dim + i) dim + j]: d^2 u_c/dx_i dx_j (and of w_c) */
+    std::vector<Expression> displacement_hessian, velocity_hessian;
+    /** @} */
     std::unique_ptr<Expression>         normal_multiplier;
     std::vector<Expression>             tangential_multiplier;
     std::shared_ptr<const FrictionBound<dim>> friction_bound;
