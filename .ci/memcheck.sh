@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Memory-safety checks (not part of .ci/run; see README.md "Memory safety"
+# Memory-safety checks (not part of .ci/run; see doc/development.md "Memory safety"
 # and doc/robustness.md):
 #
 #   bash .ci/memcheck.sh asan       AddressSanitizer + UBSan + LeakSanitizer:

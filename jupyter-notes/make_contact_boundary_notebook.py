@@ -8,8 +8,8 @@ cells = [
 ("markdown", """# The contact boundary Γ3: tractions and velocities
 
 Reads the `contact_NNNNN.csv` files of one hemicontact run (one file per
-VTU output, one row per contact node; columns in the README, "What comes
-out") and plots along Γ3, at a few times, the normal velocity w_ν, the
+VTU output, one row per contact node; columns in
+`doc/outputs.md`) and plots along Γ3, at a few times, the normal velocity w_ν, the
 normal traction −σ_ν (the foundation's response ξ_ν ∈ ∂j_ν(w_ν)), the
 tangential (slip) velocity w_τ and the tangential traction σ_τ; then the
 branch of every node over space and time.

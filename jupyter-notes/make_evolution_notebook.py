@@ -10,8 +10,8 @@ cells = [
 Reads `steps.csv` of one hemicontact run (one row per time step) and plots
 over time: how many contact nodes are in each branch (normal: separating,
 normal stick, damped; tangential: stick, slip), the energies and the
-cumulative dissipations of the discrete energy identity (README, "Energy
-diagnostics"), and the Newton iterations per step. It fails if the run's
+cumulative dissipations of the discrete energy identity (`doc/outputs.md`,
+"Energy diagnostics"), and the Newton iterations per step. It fails if the run's
 energy identity is violated (relative defect above 1e-6).
 
 Run from the repository root after running the example:
