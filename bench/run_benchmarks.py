@@ -36,12 +36,12 @@ EXE = os.path.join(ROOT, "build", "hemicontact")
 
 def case(name, base, refinements, end_time=1.0, ranks=1, subdivisions=None,
          solver=None, time_step=None, group=None, nonlinear=None,
-         keep_probes=False, output=None):
+         keep_probes=False, output=None, extra=""):
     return dict(name=name, base=base, refinements=refinements,
                 end_time=end_time, ranks=ranks, subdivisions=subdivisions,
                 solver=solver or {}, time_step=time_step, group=group,
                 nonlinear=nonlinear or {}, keep_probes=keep_probes,
-                output=output or {"vtu interval": "0"})
+                output=output or {"vtu interval": "0"}, extra=extra)
 
 
 def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None):
@@ -82,6 +82,21 @@ def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None):
                                end_time=0.1,
                                output={"vtu interval": "1",
                                        "format": format}))
+    # a manufactured-solution step against a physical step on a mesh of the
+    # same cells (unit square refined r + 1 times, unit cube of 2 x 2 x 1
+    # cells refined r times), at the examples' k = 0.01
+    for name, base, r, geometry in (
+            ("2d", "verification/mms_2d_quad_exponential.prm", levels_2d[1],
+             "  set subdivisions = 1, 1\n  set global refinements = %d\n"
+             % (levels_2d[1] + 1)),
+            ("3d", "verification/mms_3d_hex_exponential.prm", levels_3d[1],
+             "  set subdivisions = 2, 2, 1\n  set global refinements = %d\n"
+             % levels_3d[1])):
+        result.append(case(f"{name}-r{r}-mms", base, r, end_time=1.0,
+                           time_step=0.01,
+                           extra="subsection geometry\n" + geometry + "end\n"
+                           "subsection convergence study\n"
+                           "  set type = single\nend\n"))
     if not skip_large and not quick:
         # 160 x 40 x 40 hexahedra: 811,923 dofs; the first steps
         for ranks in (1, 2):
@@ -115,6 +130,7 @@ def write_prm(c, directory):
         lines.append("  set probe points =\n")
     lines.append("  set terminal = quiet\n  set timing summary = false\n"
                  "  set performance summary = true\nend\n")
+    lines.append(c["extra"])
     path = os.path.join(directory, "run.prm")
     with open(path, "w") as f:
         f.write("".join(lines))
@@ -140,6 +156,19 @@ def run(c, work, reuse=False, executable=EXE, suffix=""):
 
 
 def read_performance(path, name):
+    study = os.path.join(os.path.dirname(path), "convergence.csv")
+    if not os.path.exists(path) and os.path.exists(study):
+        # a manufactured-solution run: its level's wall time (setup, steps
+        # and the error evaluation of every step) per step
+        with open(study) as f:
+            level = next(csv.DictReader(f))
+        return {"case": name, "n_dofs": float(level["n_dofs"]),
+                "steps": float(level["n_steps"]), "mpi_ranks": 1,
+                "newton_mean": float(level["mean_newton_iterations"]),
+                "newton_max": float(level["max_newton_iterations"]),
+                "wall_per_step": float(level["wall_seconds"]) /
+                float(level["n_steps"]),
+                "peak_memory_bytes": 0, "time_output": 0}
     with open(path) as f:
         values = {row["quantity"]: float(row["value"])
                   for row in csv.DictReader(f)}
@@ -261,7 +290,7 @@ def main():
                     .replace(".0f", "s")) % title
                    for _, title, fmt in COLUMNS))
     for r in rows:
-        print(" ".join(fmt % r[key] for key, _, fmt in COLUMNS))
+        print(" ".join(fmt % r.get(key, 0) for key, _, fmt in COLUMNS))
 
     summary = []
     for group, levels in groups.items():
@@ -282,8 +311,16 @@ def main():
                             "%.3f / %.3f / %.3f" % (
                                 new["wall_per_step"] / old["wall_per_step"],
                                 new["newton_mean"] / old["newton_mean"],
-                                new["linear_per_solve"] /
-                                max(old["linear_per_solve"], 1e-300))))
+                                new.get("linear_per_solve", 0) /
+                                max(old.get("linear_per_solve", 0), 1e-300))))
+    for r in rows:
+        match = re.fullmatch(r"(\dd-r\d+)-mms", r["case"])
+        if match and match.group(1) in by_name:
+            physical = by_name[match.group(1)]
+            summary.append((f"{r['case']}: s/step against {match.group(1)} "
+                            f"({r['n_dofs']:.0f} and {physical['n_dofs']:.0f} "
+                            "dofs)",
+                            r["wall_per_step"] / physical["wall_per_step"]))
     large = {r["mpi_ranks"]: r for r in rows
              if re.fullmatch(r"3d-large-np\d", r["case"])}
     if 1 in large and 2 in large:

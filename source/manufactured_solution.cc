@@ -76,32 +76,78 @@ namespace hemicontact
             velocity_hessian.push_back(
               velocity_gradient[c * dim + i].derivative(j));
           }
+
+    // the tapes, in the order unpack_fields() and evaluate() read them
+    std::vector<const Expression *> fields;
+    for (const auto *list : {&displacement, &velocity, &displacement_gradient,
+                             &velocity_gradient})
+      for (const Expression &e : *list)
+        fields.push_back(&e);
+    fields_tape = std::make_unique<ExpressionTape>(fields);
+    std::vector<const Expression *> all = fields;
+    for (const Expression &e : acceleration)
+      all.push_back(&e);
+    for (int c = 0; c < dim; ++c)
+      for (int i = 0; i < dim; ++i)
+        for (int j = i; j < dim; ++j)
+          {
+            all.push_back(&displacement_hessian[(c * dim + i) * dim + j]);
+            all.push_back(&velocity_hessian[(c * dim + i) * dim + j]);
+          }
+    all_tape = std::make_unique<ExpressionTape>(all);
   }
+
+  namespace
+  {
+    template <int dim>
+    std::vector<double>
+    point_and_time(const Point<dim> &p, const double t)
+    {
+      std::vector<double> at(dim + 1);
+      for (int i = 0; i < dim; ++i)
+        at[i] = p[i];
+      at[dim] = t;
+      return at;
+    }
+
+    /** u, w, grad u, grad w from the first outputs of a tape. */
+    template <int dim>
+    void
+    unpack_fields(const std::vector<double> &                       r,
+                  typename ManufacturedSolution<dim>::Values &v)
+    {
+      for (int c = 0; c < dim; ++c)
+        {
+          v.u[c] = r[c];
+          v.w[c] = r[dim + c];
+          for (int i = 0; i < dim; ++i)
+            {
+              v.grad_u[c][i] = r[2 * dim + c * dim + i];
+              v.grad_w[c][i] = r[2 * dim + dim * dim + c * dim + i];
+            }
+        }
+    }
+  } // namespace
 
   template <int dim>
   typename ManufacturedSolution<dim>::Values
   ManufacturedSolution<dim>::evaluate(const Point<dim> &p, const double t) const
   {
-    Values v = evaluate_fields(p, t);
-    std::vector<double> at(dim + 1);
-    for (int i = 0; i < dim; ++i)
-      at[i] = p[i];
-    at[dim] = t;
-
+    std::vector<double> r;
+    all_tape->evaluate(point_and_time(p, t), r);
+    Values v;
+    unpack_fields<dim>(r, v);
+    unsigned int k = 2 * dim + 2 * dim * dim;
+    for (int c = 0; c < dim; ++c)
+      v.w_dot[c] = r[k++];
     Tensor<3, dim> hessian_u, hessian_w; // [component][i][j]
     for (int c = 0; c < dim; ++c)
-      {
-        v.w_dot[c] = acceleration[c].evaluate(at);
-        for (int i = 0; i < dim; ++i)
-          for (int j = i; j < dim; ++j)
-            {
-              const unsigned int k = (c * dim + i) * dim + j;
-              hessian_u[c][i][j] = hessian_u[c][j][i] =
-                displacement_hessian[k].evaluate(at);
-              hessian_w[c][i][j] = hessian_w[c][j][i] =
-                velocity_hessian[k].evaluate(at);
-            }
-      }
+      for (int i = 0; i < dim; ++i)
+        for (int j = i; j < dim; ++j)
+          {
+            hessian_u[c][i][j] = hessian_u[c][j][i] = r[k++];
+            hessian_w[c][i][j] = hessian_w[c][j][i] = r[k++];
+          }
     v.div_sigma = material.stress_divergence(hessian_w, hessian_u);
     return v;
   }
@@ -111,22 +157,10 @@ namespace hemicontact
   ManufacturedSolution<dim>::evaluate_fields(const Point<dim> &p,
                                              const double      t) const
   {
-    std::vector<double> at(dim + 1);
-    for (int i = 0; i < dim; ++i)
-      at[i] = p[i];
-    at[dim] = t;
-
+    std::vector<double> r;
+    fields_tape->evaluate(point_and_time(p, t), r);
     Values v;
-    for (int c = 0; c < dim; ++c)
-      {
-        v.u[c] = displacement[c].evaluate(at);
-        v.w[c] = velocity[c].evaluate(at);
-        for (int i = 0; i < dim; ++i)
-          {
-            v.grad_u[c][i] = displacement_gradient[c * dim + i].evaluate(at);
-            v.grad_w[c][i] = velocity_gradient[c * dim + i].evaluate(at);
-          }
-      }
+    unpack_fields<dim>(r, v);
     return v;
   }
 

@@ -10,7 +10,7 @@ namespace hemicontact
 {
   /**
    * A scalar expression in named variables, parsed once and evaluated with
-   * any number type -- double, or Sacado forward-AD numbers for exact
+   * any number type -- double, or forward-AD numbers (Sacado) for exact
    * derivatives (muparser evaluates only doubles). Grammar: numbers,
    * variables and constants, + - * / ^, unary minus, parentheses, and the
    * functions sin cos tan exp log sqrt abs tanh sinh cosh atan, pos(a) =
@@ -62,6 +62,17 @@ namespace hemicontact
       int function_id = -1; ///< index into function_names()
       std::vector<std::unique_ptr<Node>> args;
     };
+
+    /** The expression tree (e.g. for ExpressionTape). */
+    const Node &
+    tree() const
+    {
+      return *root;
+    }
+
+    /** The number of nodes of the expression tree. */
+    unsigned int
+    size() const;
 
     /** Whether the expression refers to the variable number @p index. */
     bool

@@ -6,6 +6,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <hemicontact/expression.h>
+#include <hemicontact/expression_tape.h>
 #include <hemicontact/friction_bound.h>
 #include <hemicontact/friction_law.h>
 #include <hemicontact/kelvin_voigt.h>
@@ -24,7 +25,8 @@ namespace hemicontact
    * A manufactured solution u(x,t) given as expressions, with everything
    * derived from it exactly: w = du/dt, dw/dt, grad u, grad w and the second
    * derivatives in Div sigma are differentiated symbolically once
-   * (Expression::derivative()) and evaluated in doubles, hence
+   * (Expression::derivative()) and evaluated in doubles, all of them in one
+   * pass with their common subexpressions shared (ExpressionTape), hence
    *   f0 = rho dw/dt - Div sigma,  f2 = sigma nu,
    *   f3 = sigma nu + xi_nu nu + xi_tau  (doc/theory.md, section 4),
    * with xi_nu in dj(w_nu), xi_tau in dphi(w_tau) (the friction law's force
@@ -93,6 +95,10 @@ namespace hemicontact
     /** [(c dim + i) dim + j]: d^2 u_c/dx_i dx_j (and of w_c) */
     std::vector<Expression> displacement_hessian, velocity_hessian;
     /** @} */
+    /** u, w and their gradients in one pass (evaluate_fields()). */
+    std::unique_ptr<ExpressionTape> fields_tape;
+    /** Those, dw/dt and the second derivatives with j >= i (evaluate()). */
+    std::unique_ptr<ExpressionTape> all_tape;
     std::unique_ptr<Expression>         normal_multiplier;
     std::vector<Expression>             tangential_multiplier;
     std::shared_ptr<const FrictionBound<dim>> friction_bound;
