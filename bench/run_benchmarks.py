@@ -98,6 +98,15 @@ def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None):
                            "subsection convergence study\n"
                            "  set type = single\nend\n"))
     if not skip_large and not quick:
+        # tetrahedra against hexahedra on the same vertices (421,443 dofs),
+        # the first steps, on 1 and 2 ranks
+        for cells, extra in (("hex", ""), ("tet", "subsection geometry\n"
+                                           "  set cell type = simplex\nend\n")):
+            for ranks in (1, 2):
+                result.append(case(f"3d-{cells}-r5-np{ranks}", "block_3d.prm",
+                                   5, end_time=0.01 * max(large_steps // 4, 1),
+                                   ranks=ranks, extra=extra))
+
         # 160 x 40 x 40 hexahedra: 811,923 dofs; the first steps
         for ranks in (1, 2):
             result.append(case(f"3d-large-np{ranks}", "block_3d.prm", 3,

@@ -113,7 +113,7 @@ run_command_line(int argc, char **argv)
   // fcntl, which the system releases when a process dies; a user's own
   // setting of the variable is kept.
   setenv("OMPI_MCA_sharedfp", "^sm", /*overwrite=*/0);
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, numbers::invalid_unsigned_int);
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   try
     {

@@ -1,5 +1,5 @@
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_simplex_p.h>
@@ -8,6 +8,8 @@
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria_description.h>
 
 #include <hemicontact/discretization.h>
 #include <hemicontact/input_error.h>
@@ -46,7 +48,8 @@ namespace hemicontact
     if (simplex)
       {
         triangulation =
-          std::make_unique<parallel::shared::Triangulation<dim>>(comm);
+          std::make_unique<parallel::fullydistributed::Triangulation<dim>>(
+            comm);
         fe = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(1), dim);
         mapping = std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
       }
@@ -70,6 +73,28 @@ namespace hemicontact
   void
   Discretization<dim>::make_mesh(const GeometryParameters &geometry,
                                  const bool                refine)
+  {
+    if (!simplex)
+      {
+        build_mesh(*triangulation, geometry, refine);
+        return;
+      }
+    // every rank builds the whole mesh, partitions it the same way (METIS)
+    // and keeps only its cells and a layer of ghosts
+    Triangulation<dim> whole;
+    build_mesh(whole, geometry, refine);
+    GridTools::partition_triangulation(
+      Utilities::MPI::n_mpi_processes(mpi_communicator), whole);
+    triangulation->create_triangulation(
+      TriangulationDescription::Utilities::create_description_from_triangulation(
+        whole, mpi_communicator));
+  }
+
+  template <int dim>
+  void
+  Discretization<dim>::build_mesh(Triangulation<dim> &       mesh,
+                                  const GeometryParameters &geometry,
+                                  const bool                refine) const
   {
     unsigned int refinements = geometry.global_refinements;
     if (geometry.mesh_type == "rectangle")
@@ -95,9 +120,9 @@ namespace hemicontact
             // deal.II 9.4 does not colorize simplex rectangles: set the ids
             // 2d (lower) and 2d+1 (upper) from the face centres
             GridGenerator::subdivided_hyper_rectangle_with_simplices(
-              *triangulation, repetitions, p0, p1, /*colorize=*/false);
+              mesh, repetitions, p0, p1, /*colorize=*/false);
             const double tolerance = 1e-10 * (p1 - p0).norm();
-            for (const auto &cell : triangulation->active_cell_iterators())
+            for (const auto &cell : mesh.active_cell_iterators())
               for (const auto &face : cell->face_iterators())
                 if (face->at_boundary())
                   for (unsigned int d = 0; d < dim; ++d)
@@ -109,7 +134,7 @@ namespace hemicontact
                     }
           }
         else
-          GridGenerator::subdivided_hyper_rectangle(*triangulation,
+          GridGenerator::subdivided_hyper_rectangle(mesh,
                                                     repetitions, p0, p1,
                                                     /*colorize=*/true);
       }
@@ -120,7 +145,7 @@ namespace hemicontact
                 "geometry: cannot open the mesh file '" + geometry.mesh_file +
                   "' (no such file or not readable).");
         GridIn<dim> grid_in;
-        grid_in.attach_triangulation(*triangulation);
+        grid_in.attach_triangulation(mesh);
         try
           {
             // MSH 2.2 and 4.1 in ASCII: deal.II's own reader, which takes
@@ -145,7 +170,7 @@ namespace hemicontact
                              geometry.mesh_file + "': " + gmsh_message);
           }
         const bool all_hypercubes =
-          triangulation->all_reference_cells_are_hyper_cube();
+          mesh.all_reference_cells_are_hyper_cube();
         require(all_hypercubes != simplex,
                 "geometry: the mesh file '" + geometry.mesh_file +
                   "' holds " +
@@ -154,7 +179,7 @@ namespace hemicontact
                   " but 'cell type' = " + geometry.cell_type + ".");
       }
     if (refine)
-      triangulation->refine_global(refinements);
+      mesh.refine_global(refinements);
   }
 
   template <int dim>

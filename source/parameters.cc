@@ -39,8 +39,8 @@ namespace hemicontact
                       Patterns::Selection("hypercube|simplex"),
                       "'hypercube': quadrilaterals/hexahedra, FE_Q(1)^d on a "
                       "p4est distributed mesh. 'simplex': triangles/tetrahedra, "
-                      "FE_SimplexP(1)^d on a shared mesh (uniform refinement "
-                      "only).");
+                      "FE_SimplexP(1)^d on a fully distributed mesh (uniform "
+                      "refinement only).");
     prm.declare_entry("lower left corner", "0, 0, 0",
                       Patterns::List(Patterns::Double(), 2, 3),
                       "Corner (x0, y0[, z0]) of the rectangle/box; only the "
@@ -604,11 +604,6 @@ namespace hemicontact
                checkpoint.stop_after == 0 && !checkpoint.resume),
             "adaptivity: 'pre-refinement steps' > 0 needs 'interval' > 0 and "
             "works neither with checkpoints nor with manufactured solutions.");
-    require((checkpoint.interval == 0 && checkpoint.wall_interval == 0 &&
-             checkpoint.stop_after == 0 && !checkpoint.resume) ||
-              geometry.cell_type == "hypercube",
-            "checkpoint: checkpoints need 'geometry/cell type = hypercube' "
-            "(p4est meshes).");
     require(geometry.mesh_type != "rectangle" ||
               (geometry.lower_left.size() >= dimension &&
                geometry.upper_right.size() >= dimension &&

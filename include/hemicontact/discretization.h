@@ -18,8 +18,9 @@ namespace hemicontact
    * The spatial discretisation: the mesh, the P1/Q1 vector element, its
    * mapping and quadratures. 'hypercube' gives FE_Q(1)^d on a p4est
    * parallel::distributed::Triangulation; 'simplex' gives FE_SimplexP(1)^d
-   * on a parallel::shared::Triangulation. The rest of the program sees
-   * only the base classes, so it is not tied to either.
+   * on a parallel::fullydistributed::Triangulation (each rank stores its
+   * cells and one layer of ghosts). The rest of the program sees only the
+   * base classes, so it is not tied to either.
    */
   template <int dim>
   class Discretization
@@ -27,7 +28,11 @@ namespace hemicontact
   public:
     Discretization(const GeometryParameters &geometry, MPI_Comm comm);
 
-    /** Build the coarse mesh and refine it globally. */
+    /**
+     * Build the mesh: the coarse mesh refined globally (hypercubes: the
+     * p4est forest; simplices: built whole on every rank, partitioned, and
+     * each rank keeps its part).
+     */
     void
     make_mesh(const GeometryParameters &geometry, const bool refine = true);
 
@@ -65,6 +70,11 @@ namespace hemicontact
     std::unique_ptr<Mapping<dim>>       mapping;
 
   private:
+    /** The rectangle/box or the Gmsh mesh of @p geometry in @p mesh. */
+    void
+    build_mesh(Triangulation<dim> &mesh, const GeometryParameters &geometry,
+               const bool refine) const;
+
     bool simplex;
   };
 } // namespace hemicontact

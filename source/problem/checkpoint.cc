@@ -4,6 +4,7 @@
 
 #include <hemicontact/contact_problem.h>
 #include <hemicontact/input_error.h>
+#include <hemicontact/output_file.h>
 
 #include <boost/archive/text_iarchive.hpp>
 #include <boost/archive/text_oarchive.hpp>
@@ -37,15 +38,74 @@ namespace hemicontact
       std::vector<std::string> problem_definition;
       /** "name size crc32" of every other file of the checkpoint. */
       std::vector<std::string> file_signatures;
+      /** The number of MPI ranks that wrote it. */
+      unsigned int n_ranks = 0;
 
       template <class Archive>
       void
       serialize(Archive &ar, const unsigned int)
       {
         ar &step_number &time_step &n_steps &energy &pvd_records
-          &problem_definition &file_signatures;
+          &problem_definition &file_signatures &n_ranks;
       }
     };
+
+    /**
+     * The fields of a simplex-mesh checkpoint on one rank: the owned
+     * entries of w_n, u_n and the branches, each with its global dof index
+     * (the mesh itself is rebuilt from the parameters, partitioned the same
+     * way on the same number of ranks). Returns the reason of a failure.
+     */
+    std::string
+    write_rank_fields(const fs::path &file, const IndexSet &owned,
+                      const std::vector<const TrilinosWrappers::MPI::Vector *>
+                        &fields)
+    {
+      std::ofstream       out(file, std::ios::binary);
+      const std::uint64_t n = owned.n_elements();
+      out.write(reinterpret_cast<const char *>(&n), sizeof n);
+      for (const types::global_dof_index i : owned)
+        {
+          const std::uint64_t index = i;
+          out.write(reinterpret_cast<const char *>(&index), sizeof index);
+          for (const TrilinosWrappers::MPI::Vector *v : fields)
+            {
+              const double value = (*v)[i];
+              out.write(reinterpret_cast<const char *>(&value), sizeof value);
+            }
+        }
+      out.close();
+      return out ? "" : "cannot write '" + file.string() + "'";
+    }
+
+    /** Read write_rank_fields()'s file; the reason if it does not fit. */
+    std::string
+    read_rank_fields(const fs::path &file, const IndexSet &owned,
+                     const std::vector<TrilinosWrappers::MPI::Vector *> &fields)
+    {
+      const std::string other_partition =
+        "'" + file.string() +
+        "' holds the fields of another mesh partition than this run builds";
+      std::ifstream in(file, std::ios::binary);
+      std::uint64_t n = 0;
+      in.read(reinterpret_cast<char *>(&n), sizeof n);
+      if (!in || n != owned.n_elements())
+        return other_partition;
+      for (std::uint64_t k = 0; k < n; ++k)
+        {
+          std::uint64_t index = 0;
+          in.read(reinterpret_cast<char *>(&index), sizeof index);
+          if (!in || !owned.is_element(index))
+            return other_partition;
+          for (TrilinosWrappers::MPI::Vector *v : fields)
+            {
+              double value = 0;
+              in.read(reinterpret_cast<char *>(&value), sizeof value);
+              (*v)[index] = value;
+            }
+        }
+      return in ? "" : "'" + file.string() + "' is cut short";
+    }
 
     /** "name size crc32" of @p file ("name missing" if it cannot be read). */
     std::string
@@ -190,7 +250,8 @@ namespace hemicontact
   bool
   ContactProblem<dim>::has_checkpoints() const
   {
-    return dynamic_cast<const parallel::distributed::Triangulation<dim> *>(
+    return discretization.is_simplex() ||
+           dynamic_cast<const parallel::distributed::Triangulation<dim> *>(
              discretization.triangulation.get()) != nullptr;
   }
 
@@ -199,8 +260,6 @@ namespace hemicontact
   ContactProblem<dim>::write_checkpoint()
   {
     TimerOutput::Scope t(timer, "checkpoint");
-    auto &tria = dynamic_cast<parallel::distributed::Triangulation<dim> &>(
-      *discretization.triangulation);
     const fs::path     dir  = fs::path(parameters.output.directory) / "checkpoint";
     const fs::path     aside = dir / "writing";
     const std::string  name = checkpoint_name(step_number);
@@ -213,7 +272,9 @@ namespace hemicontact
     MPI_Barrier(mpi_communicator);
 
     // the fields: w_n, u_n and the branches (normal at the node's first
-    // dof, tangential at its second), attached to the p4est mesh
+    // dof, tangential at its second): attached to the p4est mesh, or, on a
+    // simplex mesh (rebuilt from the parameters on resume), one file per
+    // rank in dof order
     TrilinosWrappers::MPI::Vector branches(locally_owned_dofs, mpi_communicator);
     for (const ContactNode<dim> &node : contact_nodes)
       if (node.locally_owned)
@@ -222,17 +283,31 @@ namespace hemicontact
           branches[node.dofs[1]] = static_cast<double>(node.tangential_branch);
         }
     branches.compress(VectorOperation::insert);
-    TrilinosWrappers::MPI::Vector w(locally_owned_dofs, locally_relevant_dofs,
-                                   mpi_communicator);
-    TrilinosWrappers::MPI::Vector u(w), b(w);
-    w = velocity;
-    u = displacement;
-    b = branches;
-    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
-      transfer(dof_handler);
-    transfer.prepare_for_serialization(
-      std::vector<const TrilinosWrappers::MPI::Vector *>{&w, &u, &b});
-    tria.save((aside / (name + ".mesh")).string());
+    if (discretization.is_simplex())
+      throw_if_any(write_rank_fields(
+                     aside / (name + ".fields." +
+                              std::to_string(Utilities::MPI::this_mpi_process(
+                                mpi_communicator))),
+                     locally_owned_dofs, {&velocity, &displacement, &branches}),
+                   mpi_communicator);
+    else
+      {
+        TrilinosWrappers::MPI::Vector w(locally_owned_dofs,
+                                        locally_relevant_dofs,
+                                        mpi_communicator);
+        TrilinosWrappers::MPI::Vector u(w), b(w);
+        w = velocity;
+        u = displacement;
+        b = branches;
+        parallel::distributed::SolutionTransfer<dim,
+                                                TrilinosWrappers::MPI::Vector>
+          transfer(dof_handler);
+        transfer.prepare_for_serialization(
+          std::vector<const TrilinosWrappers::MPI::Vector *>{&w, &u, &b});
+        dynamic_cast<parallel::distributed::Triangulation<dim> &>(
+          *discretization.triangulation)
+          .save((aside / (name + ".mesh")).string());
+      }
     MPI_Barrier(mpi_communicator);
 
     if (root)
@@ -247,6 +322,7 @@ namespace hemicontact
         state.energy      = to_vector(energy);
         state.pvd_records = pvd_records;
         state.problem_definition = parameters.problem_definition;
+        state.n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
         {
           std::ofstream                 out(aside / (name + ".state"));
           boost::archive::text_oarchive archive(out);
@@ -356,20 +432,55 @@ namespace hemicontact
                 "entries, or start a new run without --resume.");
     }
 
-    // the coarse mesh, then the refined one with its fields
-    discretization.make_mesh(parameters.geometry, /*refine=*/false);
-    auto &tria = dynamic_cast<parallel::distributed::Triangulation<dim> &>(
-      *discretization.triangulation);
-    tria.load((dir / (name + ".mesh")).string());
-    discretization.check_boundary_ids(parameters.boundary);
-    setup_on_current_mesh();
-
-    TrilinosWrappers::MPI::Vector branches(locally_owned_dofs, mpi_communicator);
-    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
-      transfer(dof_handler);
+    TrilinosWrappers::MPI::Vector                branches;
     std::vector<TrilinosWrappers::MPI::Vector *> fields{&velocity, &displacement,
                                                         &branches};
-    transfer.deserialize(fields);
+    if (discretization.is_simplex())
+      {
+        // the same mesh and partition as the run that wrote it, hence only
+        // on the same number of ranks
+        const unsigned int n_ranks =
+          Utilities::MPI::n_mpi_processes(mpi_communicator);
+        require(state.n_ranks == n_ranks,
+                "checkpoint: '" + (dir / (name + ".state")).string() +
+                  "' was written by " + std::to_string(state.n_ranks) +
+                  " MPI ranks and this run has " + std::to_string(n_ranks) +
+                  "; a simplex mesh resumes only on the number of ranks that "
+                  "wrote its checkpoint. Resume with mpirun -np " +
+                  std::to_string(state.n_ranks) + ".");
+        discretization.make_mesh(parameters.geometry);
+        discretization.check_boundary_ids(parameters.boundary);
+        setup_on_current_mesh();
+        branches.reinit(locally_owned_dofs, mpi_communicator);
+        const std::string why = read_rank_fields(
+          dir / (name + ".fields." +
+                 std::to_string(
+                   Utilities::MPI::this_mpi_process(mpi_communicator))),
+          locally_owned_dofs, fields);
+        for (TrilinosWrappers::MPI::Vector *v : fields)
+          v->compress(VectorOperation::insert);
+        require(Utilities::MPI::min(why.empty() ? 1 : 0, mpi_communicator) == 1,
+                "checkpoint: " +
+                  (why.empty() ? std::string("the fields of another rank do "
+                                             "not fit this run's mesh") :
+                                 why) +
+                  "; resume with the parameters of the interrupted run.");
+      }
+    else
+      {
+        // the coarse mesh, then the refined one with its fields
+        discretization.make_mesh(parameters.geometry, /*refine=*/false);
+        dynamic_cast<parallel::distributed::Triangulation<dim> &>(
+          *discretization.triangulation)
+          .load((dir / (name + ".mesh")).string());
+        discretization.check_boundary_ids(parameters.boundary);
+        setup_on_current_mesh();
+        branches.reinit(locally_owned_dofs, mpi_communicator);
+        parallel::distributed::SolutionTransfer<dim,
+                                                TrilinosWrappers::MPI::Vector>
+          transfer(dof_handler);
+        transfer.deserialize(fields);
+      }
     old_velocity = velocity;
     TrilinosWrappers::MPI::Vector b(locally_owned_dofs, locally_relevant_dofs,
                                    mpi_communicator);

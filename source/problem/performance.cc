@@ -61,6 +61,11 @@ namespace hemicontact
       Utilities::MPI::max(setup_before, mpi_communicator);
     const double peak_bytes =
       Utilities::MPI::sum(peak_resident_bytes(), mpi_communicator);
+    // the mesh and the dof numbering on the rank that holds the most
+    const double mesh_bytes = Utilities::MPI::max(
+      static_cast<double>(discretization.triangulation->memory_consumption() +
+                          dof_handler.memory_consumption()),
+      mpi_communicator);
     const double steps      = std::max(totals.steps, 1u);
     const double step_wall  = Utilities::MPI::max(totals.step_wall_seconds,
                                                  mpi_communicator) /
@@ -107,7 +112,8 @@ namespace hemicontact
         << "time_output," << times.at("output") << "\n"
         << "solution_writes," << pvd_records.size() << "\n"
         << "peak_memory_bytes," << peak_bytes << "\n"
-        << "bytes_per_dof," << peak_bytes / dof_handler.n_dofs() << "\n";
+        << "bytes_per_dof," << peak_bytes / dof_handler.n_dofs() << "\n"
+        << "mesh_bytes_max_rank," << mesh_bytes << "\n";
   }
 
   template void ContactProblem<2>::write_performance_summary(const RunTotals &);

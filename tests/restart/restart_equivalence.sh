@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# restart_equivalence.sh EXE PRM WORKDIR RANKS_BEFORE RANKS_AFTER
+# restart_equivalence.sh EXE PRM WORKDIR RANKS_BEFORE RANKS_AFTER [PROBES]
 # A run stopped after 8 steps ('checkpoint/stop after', exit code 5) on
 # RANKS_BEFORE ranks and resumed on RANKS_AFTER ranks ends with the same
 # steps.csv, probes.csv and solution.pvd as the uninterrupted run.
 set -euo pipefail
-exe=$1; prm=$2; work=$3; before=$4; after=$5
+exe=$1; prm=$2; work=$3; before=$4; after=$5; probes=${6:-4, 0; 2, 0}
 here=$(cd "$(dirname "$0")" && pwd)
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 launch() { local np=$1; shift; if [ "$np" -gt 1 ]; then mpirun -np "$np" "$exe" "$@"; else "$exe" "$@"; fi; }
@@ -12,7 +12,7 @@ rm -rf "$work"; mkdir -p "$work"; cd "$work"
 write_prm() { # NAME DIRECTORY STOP_AFTER
   { cat "$prm"
     printf 'subsection output\n  set directory = %s\n  set vtu interval = 2\n' "$2"
-    printf '  set probe points = 4, 0; 2, 0\n  set terminal = quiet\nend\n'
+    printf '  set probe points = %s\n  set terminal = quiet\nend\n' "$probes"
     printf 'subsection checkpoint\n  set interval = 3\n  set stop after = %s\nend\n' "$3"
     # resumed runs rebuild the AMG, so their Krylov paths differ: solve
     # tightly, so that compare_runs.sh's 1e-7 separates restart errors
