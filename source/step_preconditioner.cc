@@ -105,6 +105,11 @@ namespace hemicontact
     std::unique_ptr<Epetra_MultiVector> unused_modes;
     data.set_parameters(ml_list, unused_modes, matrix);
     ml_list.set("null space: type", "pre-computed");
+    // aggregate vertices (the dim dofs of a vertex are consecutive), not
+    // single dofs: on tetrahedra, dof-wise aggregates are so small that
+    // the coarse levels carry an operator complexity of 8 (1.3 with
+    // vertex aggregates), doc/performance.md "Design choices"
+    ml_list.set("PDE equations", dim);
     ml_list.set("null space: dimension", static_cast<int>(n_modes));
     ml_list.set("null space: vectors", const_cast<double *>(modes.data()));
 
