@@ -107,7 +107,7 @@ namespace hemicontact
     ml_list.set("null space: type", "pre-computed");
     // aggregate vertices (the dim dofs of a vertex are consecutive), not
     // single dofs: on tetrahedra, dof-wise aggregates are so small that
-    // the coarse levels carry an operator complexity of 8 (1.3 with
+    // the coarse levels carry an operator complexity of 8.3 (2.2 with
     // vertex aggregates), doc/performance.md "Design choices"
     ml_list.set("PDE equations", dim);
     ml_list.set("null space: dimension", static_cast<int>(n_modes));
