@@ -145,59 +145,7 @@ namespace hemicontact
                 break;
               }
             default:
-              switch (c.function_id)
-                {
-                  case 0:
-                    r[i] = std::sin(a);
-                    break;
-                  case 1:
-                    r[i] = std::cos(a);
-                    break;
-                  case 2:
-                    r[i] = std::tan(a);
-                    break;
-                  case 3:
-                    r[i] = std::exp(a);
-                    break;
-                  case 4:
-                    r[i] = std::log(a);
-                    break;
-                  case 5:
-                    r[i] = std::sqrt(a);
-                    break;
-                  case 6:
-                    r[i] = a < 0 ? -a : a;
-                    break;
-                  case 7:
-                    r[i] = std::tanh(a);
-                    break;
-                  case 8:
-                    r[i] = std::sinh(a);
-                    break;
-                  case 9:
-                    r[i] = std::cosh(a);
-                    break;
-                  case 10:
-                    r[i] = std::atan(a);
-                    break;
-                  case 11:
-                    r[i] = a > 0 ? a : 0.;
-                    break;
-                  case 12:
-                    r[i] = a > 0 ? 1. : 0.;
-                    break;
-                  case 13:
-                    r[i] = a < 0 ? -1. : 1.;
-                    break;
-                  case 14:
-                    r[i] = std::pow(a, b);
-                    break;
-                  case 15:
-                    r[i] = a > b ? a : b;
-                    break;
-                  default: // 16: min
-                    r[i] = a < b ? a : b;
-                }
+              r[i] = Expression::apply_function(c.function_id, a, b);
           }
       }
     results.resize(outputs.size());

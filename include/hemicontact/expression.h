@@ -86,6 +86,11 @@ namespace hemicontact
     /** The function_id of pow, the first function of two arguments. */
     static constexpr int first_binary_function = 14;
 
+    /** f(a) (or f(a, b)) for the function number @p id of function_names(). */
+    template <typename Number>
+    static Number
+    apply_function(const int id, const Number &a, const Number &b);
+
     /** The function_id of @p name (one of function_names()). */
     static int
     function_id(const std::string &name);
@@ -112,18 +117,7 @@ namespace hemicontact
   Number
   Expression::eval(const Node &node, const std::vector<Number> &values)
   {
-    using std::abs;
-    using std::atan;
-    using std::cos;
-    using std::cosh;
-    using std::exp;
-    using std::log;
     using std::pow;
-    using std::sin;
-    using std::sinh;
-    using std::sqrt;
-    using std::tan;
-    using std::tanh;
     switch (node.kind)
       {
         case Node::constant:
@@ -166,46 +160,64 @@ namespace hemicontact
         default:
           {
             const Number a = eval(*node.args[0], values);
-            switch (node.function_id)
-              {
-                case 0:
-                  return sin(a);
-                case 1:
-                  return cos(a);
-                case 2:
-                  return tan(a);
-                case 3:
-                  return exp(a);
-                case 4:
-                  return log(a);
-                case 5:
-                  return sqrt(a);
-                case 6:
-                  return a < 0 ? Number(-a) : a;
-                case 7:
-                  return tanh(a);
-                case 8:
-                  return sinh(a);
-                case 9:
-                  return cosh(a);
-                case 10:
-                  return atan(a);
-                case 11:
-                  return a > 0 ? a : Number(0.);
-                case 12:
-                  return Number(a > 0 ? 1. : 0.);
-                case 13:
-                  return Number(a < 0 ? -1. : 1.);
-                default:
-                  break;
-              }
-            const Number b = eval(*node.args[1], values);
-            if (node.function_id == 14)
-              return pow(a, b);
-            if (node.function_id == 15)
-              return a > b ? a : b;
-            return a < b ? a : b; // 16: min
+            const Number b =
+              node.args.size() > 1 ? eval(*node.args[1], values) : Number(0.);
+            return apply_function(node.function_id, a, b);
           }
+      }
+  }
+
+  template <typename Number>
+  Number
+  Expression::apply_function(const int id, const Number &a, const Number &b)
+  {
+    using std::atan;
+    using std::cos;
+    using std::cosh;
+    using std::exp;
+    using std::log;
+    using std::pow;
+    using std::sin;
+    using std::sinh;
+    using std::sqrt;
+    using std::tan;
+    using std::tanh;
+    switch (id)
+      {
+        case 0:
+          return sin(a);
+        case 1:
+          return cos(a);
+        case 2:
+          return tan(a);
+        case 3:
+          return exp(a);
+        case 4:
+          return log(a);
+        case 5:
+          return sqrt(a);
+        case 6:
+          return a < 0 ? Number(-a) : a;
+        case 7:
+          return tanh(a);
+        case 8:
+          return sinh(a);
+        case 9:
+          return cosh(a);
+        case 10:
+          return atan(a);
+        case 11:
+          return a > 0 ? a : Number(0.);
+        case 12:
+          return Number(a > 0 ? 1. : 0.);
+        case 13:
+          return Number(a < 0 ? -1. : 1.);
+        case 14:
+          return pow(a, b);
+        case 15:
+          return a > b ? a : b;
+        default: // 16: min
+          return a < b ? a : b;
       }
   }
 } // namespace hemicontact
