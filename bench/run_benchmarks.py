@@ -79,9 +79,14 @@ def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None):
                           ("3d", "block_3d.prm", levels_3d[-1])):
         for format in ("vtu", "hdf5"):
             result.append(case(f"{name}-r{r}-write-{format}", base, r,
-                               end_time=0.1,
+                               end_time=0.2,
                                output={"vtu interval": "1",
                                        "format": format}))
+        # every fifth step written (a VTU write then overlaps whole steps)
+        result.append(case(f"{name}-r{r}-write-vtu-every-5", base, r,
+                           end_time=0.2, output={"vtu interval": "5"}))
+        # the same steps without output: a write costs the difference
+        result.append(case(f"{name}-r{r}-write-none", base, r, end_time=0.2))
     # a manufactured-solution step against a physical step on a mesh of the
     # same cells (unit square refined r + 1 times, unit cube of 2 x 2 x 1
     # cells refined r times), at the examples' k = 0.01
@@ -213,6 +218,7 @@ COLUMNS = [
     ("time_energy", "energy", "%7.2f"),
     ("time_output", "output", "%6.2f"),
     ("write_to_step", "wr/stp", "%6.2f"),
+    ("write_added_to_step", "wr+/stp", "%7.2f"),
     ("peak_memory_bytes", "MiB", "%7.0f"),
     ("bytes_per_dof", "B/dof", "%7.0f"),
 ]
@@ -281,10 +287,21 @@ def main():
             for _, suffix in builds]
     for r in rows:
         r["peak_memory_bytes"] /= 2 ** 20
-        # one solution write against one step (0 when nothing was written)
+        # one solution write against one step (0 when nothing was written):
+        # the time the run waited for the write ...
         r["write_to_step"] = (r["time_output"] / r["solution_writes"] /
                               r["wall_per_step"]
                               if r.get("solution_writes", 0) > 0 else 0.)
+        # ... and, against the same run without output, what the writes
+        # added to the whole run (writes overlap the steps on a free core)
+        twin = re.sub(r"-write-(vtu|hdf5)(-every-5)?", "-write-none",
+                      r["case"])
+        if twin != r["case"] and r.get("solution_writes", 0) > 0:
+            base = next((t for t in rows if t["case"] == twin), None)
+            if base is not None and "run_wall" in r and "run_wall" in base:
+                r["write_added_to_step"] = (
+                    (r["run_wall"] - base["run_wall"]) /
+                    r["solution_writes"] / base["wall_per_step"])
     by_name = {r["case"]: r for r in rows}
     groups = {}
     for c in all_cases:

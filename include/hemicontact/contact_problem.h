@@ -11,7 +11,9 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/numerics/data_out.h>
 
+#include <hemicontact/background_writer.h>
 #include <hemicontact/contact_laws.h>
 #include <hemicontact/contact_node.h>
 #include <hemicontact/discretization.h>
@@ -295,11 +297,20 @@ namespace hemicontact
 
     /** @name output.cc */
     /**
-     * Write the solution files of the current step ('output/format') and
-     * replace the series file (solution.pvd or solution.xdmf) atomically.
+     * Write the solution files of the current step ('output/format'): VTU
+     * files on a background thread while the run goes on, HDF5 at once.
+     * The step enters the series file with finish_solution_output().
      */
     void
     write_solution();
+    /**
+     * Wait for the solution write in progress, check it on every rank and
+     * replace the series file (solution.pvd or solution.xdmf) atomically.
+     * Called before the next write, before the mesh changes or a checkpoint
+     * saves the series, and at the end of a run.
+     */
+    void
+    finish_solution_output();
     void
     open_tables();
     void
@@ -419,11 +430,30 @@ namespace hemicontact
      *  time left on the progress line). */
     std::chrono::steady_clock::time_point loop_start;
     unsigned int                          loop_start_step = 0;
+    /** Wall seconds of the time loop, with every output (0 until done). */
+    double run_wall_seconds = 0;
     std::vector<Point<dim>>                     probe_points;
     Utilities::MPI::RemotePointEvaluation<dim>  probe_cache;
     std::ofstream                               steps_file;
     /** Held by the root while the run writes its output directory. */
     std::unique_ptr<OutputLock>                 output_lock;
     std::ofstream                               probes_file;
+
+    /** What a solution write reads: copies made when the write started. */
+    struct SolutionSnapshot
+    {
+      unsigned int step = 0;
+      double       time = 0;
+      /** The fields (DataOut copies them when they are added; the copies
+       *  need MPI, so they are made before the job starts). */
+      std::unique_ptr<DataOut<dim>> data_out;
+      /** w and u with ghost entries, for the cell stresses. */
+      TrilinosWrappers::MPI::Vector velocity, displacement;
+    };
+    SolutionSnapshot solution_snapshot;
+    /** The series entry of the write in progress. */
+    std::pair<double, std::string> pending_record;
+    /** Declared last: destroyed (after waiting) before what its job reads. */
+    BackgroundWriter solution_writer;
   };
 } // namespace hemicontact

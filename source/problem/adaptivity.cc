@@ -75,6 +75,7 @@ namespace hemicontact
   void
   ContactProblem<dim>::adapt_mesh(StepStatistics &stats)
   {
+    finish_solution_output(); // its job reads the mesh about to change
     TimerOutput::Scope          t(timer, "adaptivity");
     const AdaptivityParameters &settings = parameters.adaptivity;
     auto *tria = dynamic_cast<parallel::distributed::Triangulation<dim> *>(

@@ -259,6 +259,7 @@ namespace hemicontact
   void
   ContactProblem<dim>::write_checkpoint()
   {
+    finish_solution_output(); // the series it saves lists every write
     TimerOutput::Scope t(timer, "checkpoint");
     const fs::path     dir  = fs::path(parameters.output.directory) / "checkpoint";
     const fs::path     aside = dir / "writing";

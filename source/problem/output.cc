@@ -215,12 +215,20 @@ namespace hemicontact
   void
   ContactProblem<dim>::write_solution()
   {
+    finish_solution_output();
     TimerOutput::Scope t(timer, "output");
-    TrilinosWrappers::MPI::Vector w(locally_owned_dofs, locally_relevant_dofs,
-                                   mpi_communicator);
-    TrilinosWrappers::MPI::Vector u(w), traction(w), branch(w);
-    w        = velocity;
-    u        = displacement;
+
+    // copies of what the write reads, so that the run can go on meanwhile
+    SolutionSnapshot &snapshot = solution_snapshot;
+    snapshot.step              = step_number;
+    snapshot.time              = get_time();
+    snapshot.velocity.reinit(locally_owned_dofs, locally_relevant_dofs,
+                             mpi_communicator);
+    snapshot.displacement.reinit(snapshot.velocity);
+    snapshot.velocity     = velocity;
+    snapshot.displacement = displacement;
+    TrilinosWrappers::MPI::Vector traction(snapshot.velocity),
+      branch(snapshot.velocity);
     traction = contact_traction;
 
     TrilinosWrappers::MPI::Vector branch_owned(locally_owned_dofs,
@@ -238,13 +246,16 @@ namespace hemicontact
     branch_owned.compress(VectorOperation::insert);
     branch = branch_owned;
 
-    DataOut<dim> data_out;
+    snapshot.data_out = std::make_unique<DataOut<dim>>();
+    DataOut<dim> &data_out = *snapshot.data_out;
     data_out.attach_dof_handler(dof_handler);
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
       vector_field(dim, DataComponentInterpretation::component_is_part_of_vector);
-    data_out.add_data_vector(w, std::vector<std::string>(dim, "velocity"),
+    data_out.add_data_vector(snapshot.velocity,
+                             std::vector<std::string>(dim, "velocity"),
                              DataOut<dim>::type_dof_data, vector_field);
-    data_out.add_data_vector(u, std::vector<std::string>(dim, "displacement"),
+    data_out.add_data_vector(snapshot.displacement,
+                             std::vector<std::string>(dim, "displacement"),
                              DataOut<dim>::type_dof_data, vector_field);
     data_out.add_data_vector(traction,
                              std::vector<std::string>(dim, "contact_traction"),
@@ -258,80 +269,132 @@ namespace hemicontact
       std::vector<DataComponentInterpretation::DataComponentInterpretation>(
         dim, DataComponentInterpretation::component_is_scalar));
 
-    const std::vector<Vector<float>> stresses =
-      cell_stresses(dof_handler, *discretization.mapping,
-                    discretization.cell_quadrature(2), material, w, u);
-    const char *xyz[] = {"x", "y", "z"};
-    unsigned int c     = 0;
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = i; j < dim; ++j)
-        data_out.add_data_vector(stresses[c++],
-                                 std::string("stress_") + xyz[i] + xyz[j],
-                                 DataOut<dim>::type_cell_data);
-    data_out.add_data_vector(stresses[c], "von_mises",
-                             DataOut<dim>::type_cell_data);
-
-    Vector<float> subdomain(discretization.triangulation->n_active_cells());
+    const Triangulation<dim> &mesh = *discretization.triangulation;
+    std::vector<std::pair<std::string, Vector<float>>> cell_data;
+    Vector<float> subdomain(mesh.n_active_cells());
     for (auto &s : subdomain)
-      s = discretization.triangulation->locally_owned_subdomain();
-    data_out.add_data_vector(subdomain, "subdomain",
-                             DataOut<dim>::type_cell_data);
-
-    Vector<float> level(discretization.triangulation->n_active_cells());
-    for (const auto &cell : discretization.triangulation->active_cell_iterators())
+      s = mesh.locally_owned_subdomain();
+    cell_data.emplace_back("subdomain", subdomain);
+    Vector<float> level(mesh.n_active_cells());
+    for (const auto &cell : mesh.active_cell_iterators())
       if (cell->is_locally_owned())
         level[cell->active_cell_index()] = cell->level();
-    data_out.add_data_vector(level, "level", DataOut<dim>::type_cell_data);
-    Vector<float> indicators;
+    cell_data.emplace_back("level", level);
     if (parameters.adaptivity.interval > 0)
-      {
-        indicators = refinement_indicators();
-        data_out.add_data_vector(indicators, "refinement_indicator",
-                                 DataOut<dim>::type_cell_data);
-      }
+      cell_data.emplace_back("refinement_indicator", refinement_indicators());
 
-    data_out.build_patches(*discretization.mapping);
-    // a failed write (no space left) names the files; the series file is
-    // replaced atomically and lists only the files written completely
+    // the job: stresses, patches and files (and for HDF5 the series entry);
+    // for VTU without MPI, on the writer's thread
+    const bool        hdf5 = parameters.output.format == SolutionFormat::hdf5;
     const std::string directory = parameters.output.directory + "/";
-    std::string       record, error;
-    errno = 0;
-    try
+    const unsigned int rank = Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const Quadrature<dim> quadrature = discretization.cell_quadrature(2);
+    const std::string     stem =
+      "solution_" + Utilities::int_to_string(snapshot.step, 5);
+    pending_record = {snapshot.time, stem + ".pvtu"};
+    auto job = [this, hdf5, directory, rank, n_ranks, quadrature, stem,
+                cell_data = std::move(cell_data)]() -> std::string {
+      const SolutionSnapshot &s        = solution_snapshot;
+      DataOut<dim> &          data_out = *s.data_out;
+      const std::vector<Vector<float>> stresses =
+        cell_stresses(dof_handler, *discretization.mapping, quadrature,
+                      material, s.velocity, s.displacement);
+      const char * xyz[] = {"x", "y", "z"};
+      unsigned int c     = 0;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          data_out.add_data_vector(stresses[c++],
+                                   std::string("stress_") + xyz[i] + xyz[j],
+                                   DataOut<dim>::type_cell_data);
+      data_out.add_data_vector(stresses[c], "von_mises",
+                               DataOut<dim>::type_cell_data);
+      for (const auto &field : cell_data)
+        data_out.add_data_vector(field.second, field.first,
+                                 DataOut<dim>::type_cell_data);
+      data_out.build_patches(*discretization.mapping);
+
+      // a failed write (no space left) names the files
+      errno = 0;
+      try
+        {
+          if (hdf5)
+            {
+              DataOutBase::DataOutFilter filter(
+                DataOutBase::DataOutFilterFlags(/*filter_duplicates=*/false,
+                                                /*xdmf_hdf5_output=*/true));
+              data_out.write_filtered_data(filter);
+              const std::string h5 = stem + ".h5";
+              data_out.write_hdf5_parallel(filter, directory + h5,
+                                           mpi_communicator);
+              pending_record.second =
+                data_out
+                  .create_xdmf_entry(filter, h5, s.time, mpi_communicator)
+                  .get_xdmf_content(3, discretization.fe->reference_cell());
+              return "";
+            }
+          DataOutBase::VtkFlags flags;
+          flags.compression_level = parameters.output.compression;
+          data_out.set_flags(flags);
+          // the files write_vtu_with_pvtu_record() writes, without its MPI
+          const unsigned int digits = Utilities::needed_digits(n_ranks - 1);
+          auto piece = [&](const unsigned int r) {
+            return stem + "." + Utilities::int_to_string(r, digits) + ".vtu";
+          };
+          std::ofstream vtu(directory + piece(rank));
+          data_out.write_vtu(vtu);
+          vtu.close();
+          if (!vtu)
+            return std::string(errno != 0 ? std::strerror(errno) :
+                                            "the write failed");
+          if (rank == 0)
+            {
+              std::vector<std::string> pieces;
+              for (unsigned int r = 0; r < n_ranks; ++r)
+                pieces.push_back(piece(r));
+              std::ofstream pvtu(directory + stem + ".pvtu");
+              data_out.write_pvtu_record(pvtu, pieces);
+              pvtu.close();
+              if (!pvtu)
+                return std::string(errno != 0 ? std::strerror(errno) :
+                                                "the write failed");
+            }
+        }
+      catch (const ExceptionBase &)
+        {
+          return std::string(errno != 0 ? std::strerror(errno) :
+                                          "the write failed");
+        }
+      return "";
+    };
+    // HDF5 writes are collective (MPI): on this thread, within the wait
+    solution_writer.start(job, hdf5 ? std::launch::deferred :
+                                      std::launch::async);
+    if (hdf5)
       {
-        if (parameters.output.format == SolutionFormat::hdf5)
-          {
-            DataOutBase::DataOutFilter filter(
-              DataOutBase::DataOutFilterFlags(/*filter_duplicates=*/false,
-                                              /*xdmf_hdf5_output=*/true));
-            data_out.write_filtered_data(filter);
-            const std::string h5 =
-              "solution_" + Utilities::int_to_string(step_number, 5) + ".h5";
-            data_out.write_hdf5_parallel(filter, directory + h5,
-                                         mpi_communicator);
-            record = data_out
-                       .create_xdmf_entry(filter, h5, get_time(),
-                                          mpi_communicator)
-                       .get_xdmf_content(3, discretization.fe->reference_cell());
-          }
-        else
-          {
-            DataOutBase::VtkFlags flags;
-            flags.compression_level = parameters.output.compression;
-            data_out.set_flags(flags);
-            record = data_out.write_vtu_with_pvtu_record(directory, "solution",
-                                                         step_number,
-                                                         mpi_communicator, 5);
-          }
+        t.stop();
+        finish_solution_output();
       }
-    catch (const ExceptionBase &)
-      {
-        error = "cannot write the solution files of step " +
-                std::to_string(step_number) + " in '" +
-                parameters.output.directory + "': " +
-                (errno != 0 ? std::strerror(errno) : "the write failed") + ".";
-      }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::finish_solution_output()
+  {
+    if (!solution_writer.pending())
+      return;
+    TimerOutput::Scope t(timer, "output");
+    std::string        error = solution_writer.wait();
+    solution_snapshot.data_out.reset(); // its patches
+    if (!error.empty())
+      error = "cannot write the solution files of step " +
+              std::to_string(solution_snapshot.step) + " in '" +
+              parameters.output.directory + "': " + error + ".";
     throw_if_any(error, mpi_communicator);
-    pvd_records.emplace_back(get_time(), record);
+
+    // the series file lists only the files written completely
+    pvd_records.push_back(pending_record);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
         std::ostringstream series;
@@ -358,9 +421,10 @@ namespace hemicontact
             DataOutBase::write_pvd_record(series, files);
           }
         error = write_atomically(
-          directory + (parameters.output.format == SolutionFormat::hdf5 ?
-                         "solution.xdmf" :
-                         "solution.pvd"),
+          parameters.output.directory + "/" +
+            (parameters.output.format == SolutionFormat::hdf5 ?
+               "solution.xdmf" :
+               "solution.pvd"),
           series.str());
         if (!error.empty())
           pvd_records.pop_back();
@@ -459,6 +523,7 @@ namespace hemicontact
   template void ContactProblem<dim>::setup_probes();                          \
   template void ContactProblem<dim>::write_probes();                          \
   template void ContactProblem<dim>::write_solution();                        \
+  template void ContactProblem<dim>::finish_solution_output();                \
   template void ContactProblem<dim>::write_step_row(const StepStatistics &);  \
   template void ContactProblem<dim>::print_step(const StepStatistics &) const;
 

@@ -77,6 +77,8 @@ namespace hemicontact
          {"setup", "assembly: load", "active set update", "linear solve", "convexity check",
           "line search", "energy balance", "output"})
       times[name] = section(name);
+    const double run_wall =
+      Utilities::MPI::max(run_wall_seconds, mpi_communicator);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
     std::ofstream out(parameters.output.directory + "/performance.csv");
@@ -110,6 +112,7 @@ namespace hemicontact
         << "time_line_search," << times.at("line search") << "\n"
         << "time_energy," << times.at("energy balance") << "\n"
         << "time_output," << times.at("output") << "\n"
+        << "run_wall," << run_wall << "\n"
         << "solution_writes," << pvd_records.size() << "\n"
         << "peak_memory_bytes," << peak_bytes << "\n"
         << "bytes_per_dof," << peak_bytes / dof_handler.n_dofs() << "\n"

@@ -204,6 +204,7 @@ namespace hemicontact
             << std::endl;
 
     const unsigned int interval = parameters.output.vtu_interval;
+    Timer              run_timer; // the time loop with every output
     if (checkpoints.resume)
       pcout << "resumed from the checkpoint of step " << step_number
             << " (t = " << get_time() << ")" << std::endl;
@@ -237,6 +238,7 @@ namespace hemicontact
                 write_solution();
                 write_contact_csv();
               }
+            finish_solution_output();
             if (has_checkpoints())
               write_checkpoint();
             throw SolverFailure(std::string(failure.what()) +
@@ -280,6 +282,7 @@ namespace hemicontact
               {
                 // the series shows the restarted run; its files replace
                 // those of the same steps before the restart
+                finish_solution_output();
                 pvd_records.clear();
                 write_solution();
                 write_contact_csv();
@@ -306,6 +309,8 @@ namespace hemicontact
             since_checkpoint.start();
           }
         if (interrupted && !finished())
+          finish_solution_output();
+        if (interrupted && !finished())
           throw RunInterrupted(
             "stopped after step " + std::to_string(step_number) + " (t = " +
             std::to_string(get_time()) + ")" +
@@ -316,6 +321,8 @@ namespace hemicontact
                                  "; no checkpoint (simplex mesh)."));
       }
 
+    finish_solution_output();
+    run_wall_seconds = run_timer.wall_time();
     pcout << "done: " << n_steps << " steps, Newton iterations per step mean "
           << std::fixed << std::setprecision(2)
           << double(totals.newton_iterations) / std::max(totals.steps, 1u)

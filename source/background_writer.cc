@@ -1,0 +1,41 @@
+#include <deal.II/base/exceptions.h>
+
+#include <hemicontact/background_writer.h>
+
+#include <exception>
+
+namespace hemicontact
+{
+  BackgroundWriter::~BackgroundWriter()
+  {
+    if (job_result.valid())
+      job_result.wait();
+  }
+
+  void
+  BackgroundWriter::start(std::function<std::string()> job,
+                          const std::launch            policy)
+  {
+    Assert(!pending(), dealii::ExcMessage("wait() for the previous job first"));
+    job_result = std::async(policy, [job = std::move(job)]() -> std::string {
+      try
+        {
+          return job();
+        }
+      catch (const std::exception &e)
+        {
+          return e.what();
+        }
+      catch (...)
+        {
+          return "an unknown error";
+        }
+    });
+  }
+
+  std::string
+  BackgroundWriter::wait()
+  {
+    return job_result.valid() ? job_result.get() : std::string();
+  }
+} // namespace hemicontact

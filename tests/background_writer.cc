@@ -1,0 +1,74 @@
+// BackgroundWriter, the thread that writes the solution while the run goes
+// on: an asynchronous job runs on another thread and is pending until
+// waited for; the run can change its own data meanwhile; a deferred job runs
+// on the calling thread within wait(); a job's error message and an
+// exception it throws both come back from wait(); the next job starts only
+// after wait().
+#include <hemicontact/background_writer.h>
+
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+
+#include "tests.h"
+
+using namespace hemicontact;
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::thread::id caller = std::this_thread::get_id();
+
+  BackgroundWriter writer;
+  out() << "pending before any job: " << writer.pending() << "\n";
+  out() << "wait without a job: '" << writer.wait() << "'\n";
+
+  // the job copies nothing: it reads 'snapshot', kept until wait()
+  const std::vector<double> snapshot = {1, 2, 3};
+  std::atomic<bool>         release{false};
+  std::thread::id           job_thread;
+  double                    written = 0;
+  writer.start(
+    [&]() -> std::string {
+      job_thread = std::this_thread::get_id();
+      while (!release)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      for (const double v : snapshot)
+        written += v;
+      return "";
+    },
+    std::launch::async);
+  // the caller goes on while the job waits for it
+  double computed = 0;
+  for (unsigned int i = 1; i <= 1000; ++i)
+    computed += i;
+  out() << "pending while the job runs: " << writer.pending()
+        << ", computed meanwhile: " << computed << "\n";
+  release = true;
+  out() << "async job: error '" << writer.wait() << "', wrote " << written
+        << ", on another thread: " << (job_thread != caller)
+        << ", pending after wait: " << writer.pending() << "\n";
+
+  writer.start([]() -> std::string { return "No space left on device"; },
+               std::launch::async);
+  out() << "failing job: '" << writer.wait() << "'\n";
+
+  writer.start([]() -> std::string { throw std::runtime_error("bad file"); },
+               std::launch::async);
+  out() << "throwing job: '" << writer.wait() << "'\n";
+
+  bool ran = false;
+  writer.start(
+    [&]() -> std::string {
+      ran        = true;
+      job_thread = std::this_thread::get_id();
+      return "";
+    },
+    std::launch::deferred);
+  out() << "deferred job ran before wait: " << ran;
+  writer.wait();
+  out() << ", after wait: " << ran
+        << ", on the calling thread: " << (job_thread == caller) << "\n";
+}
