@@ -1,5 +1,6 @@
 #include <hemicontact/expression_tape.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -17,7 +18,9 @@ namespace hemicontact
   } // namespace
 
   ExpressionTape::ExpressionTape(
-    const std::vector<const Expression *> &expressions)
+    const std::vector<const Expression *> &expressions,
+    const std::vector<unsigned int> &      uniform_variables)
+    : uniform_variables(uniform_variables)
   {
     for (const Expression *e : expressions)
       outputs.push_back(compile(e->tree()));
@@ -25,8 +28,23 @@ namespace hemicontact
   }
 
   unsigned int
-  ExpressionTape::append(const Instruction &instruction)
+  ExpressionTape::append(Instruction instruction)
   {
+    switch (instruction.op)
+      {
+        case Op::constant:
+          instruction.uniform = true;
+          break;
+        case Op::variable:
+          instruction.uniform =
+            std::find(uniform_variables.begin(), uniform_variables.end(),
+                      instruction.n) != uniform_variables.end();
+          break;
+        default:
+          instruction.uniform =
+            code[instruction.a].uniform &&
+            (instruction.n_operands < 2 || code[instruction.b].uniform);
+      }
     // the same operation on the same operands is the same subexpression
     const Key key{static_cast<int>(instruction.op), instruction.function_id,
                   instruction.a, instruction.b, instruction.n,
@@ -54,8 +72,9 @@ namespace hemicontact
           instruction.n  = node.index;
           return append(instruction);
         case Expression::Node::unary:
-          instruction.op = Op::negate;
-          instruction.a  = compile(*node.args[0]);
+          instruction.op         = Op::negate;
+          instruction.a          = compile(*node.args[0]);
+          instruction.n_operands = 1;
           return append(instruction);
         case Expression::Node::binary:
           {
@@ -67,13 +86,15 @@ namespace hemicontact
               {
                 if (exponent.value == 1)
                   return compile(*node.args[0]);
-                instruction.op = Op::integer_power;
-                instruction.a  = compile(*node.args[0]);
+                instruction.op         = Op::integer_power;
+                instruction.a          = compile(*node.args[0]);
+                instruction.n_operands = 1;
                 instruction.n  = static_cast<unsigned int>(exponent.value);
                 return append(instruction);
               }
-            instruction.a = compile(*node.args[0]);
-            instruction.b = compile(*node.args[1]);
+            instruction.a          = compile(*node.args[0]);
+            instruction.b          = compile(*node.args[1]);
+            instruction.n_operands = 2;
             switch (node.op[0])
               {
                 case '+':
@@ -98,6 +119,7 @@ namespace hemicontact
           instruction.op          = Op::function;
           instruction.function_id = node.function_id;
           instruction.a           = compile(*node.args[0]);
+          instruction.n_operands  = node.args.size();
           if (node.args.size() > 1)
             instruction.b = compile(*node.args[1]);
           return append(instruction);
@@ -108,48 +130,77 @@ namespace hemicontact
   ExpressionTape::evaluate(const std::vector<double> &variables,
                            std::vector<double> &      results) const
   {
-    std::vector<double> r(code.size());
+    results.resize(outputs.size());
+    evaluate(variables.data(), variables.size(), 1, results.data());
+  }
+
+  void
+  ExpressionTape::evaluate(const double *     variables,
+                           const unsigned int n_variables,
+                           const unsigned int n_points,
+                           double *           results) const
+  {
+    // one register per instruction and point; per thread, as deal.II may
+    // evaluate functions from several threads
+    thread_local std::vector<double> registers;
+    registers.resize(code.size() * std::size_t(n_points));
+    double *const r = registers.data();
     for (unsigned int i = 0; i < code.size(); ++i)
       {
-        const Instruction &c = code[i];
-        const double       a = r[c.a], b = r[c.b];
+        const Instruction &c   = code[i];
+        double *const      out = r + std::size_t(i) * n_points;
+        const double *const a  = r + std::size_t(c.a) * n_points;
+        const double *const b  = r + std::size_t(c.b) * n_points;
+        const unsigned int  n  = c.uniform ? 1 : n_points;
         switch (c.op)
           {
             case Op::constant:
-              r[i] = c.value;
+              out[0] = c.value;
               break;
             case Op::variable:
-              r[i] = variables[c.n];
+              for (unsigned int p = 0; p < n; ++p)
+                out[p] = variables[std::size_t(p) * n_variables + c.n];
               break;
             case Op::negate:
-              r[i] = -a;
+              for (unsigned int p = 0; p < n; ++p)
+                out[p] = -a[p];
               break;
             case Op::add:
-              r[i] = a + b;
+              for (unsigned int p = 0; p < n; ++p)
+                out[p] = a[p] + b[p];
               break;
             case Op::subtract:
-              r[i] = a - b;
+              for (unsigned int p = 0; p < n; ++p)
+                out[p] = a[p] - b[p];
               break;
             case Op::multiply:
-              r[i] = a * b;
+              for (unsigned int p = 0; p < n; ++p)
+                out[p] = a[p] * b[p];
               break;
             case Op::divide:
-              r[i] = a / b;
+              for (unsigned int p = 0; p < n; ++p)
+                out[p] = a[p] / b[p];
               break;
             case Op::integer_power:
-              {
-                double p = a;
-                for (unsigned int k = 1; k < c.n; ++k)
-                  p = p * a;
-                r[i] = p;
-                break;
-              }
+              for (unsigned int p = 0; p < n; ++p)
+                {
+                  double power = a[p];
+                  for (unsigned int k = 1; k < c.n; ++k)
+                    power = power * a[p];
+                  out[p] = power;
+                }
+              break;
             default:
-              r[i] = Expression::apply_function(c.function_id, a, b);
+              for (unsigned int p = 0; p < n; ++p)
+                out[p] = Expression::apply_function(c.function_id, a[p], b[p]);
           }
+        if (c.uniform)
+          std::fill(out + 1, out + n_points, out[0]);
       }
-    results.resize(outputs.size());
-    for (unsigned int k = 0; k < outputs.size(); ++k)
-      results[k] = r[outputs[k]];
+    const unsigned int n_results = outputs.size();
+    for (unsigned int p = 0; p < n_points; ++p)
+      for (unsigned int k = 0; k < n_results; ++k)
+        results[std::size_t(p) * n_results + k] =
+          r[std::size_t(outputs[k]) * n_points + p];
   }
 } // namespace hemicontact

@@ -83,38 +83,53 @@ namespace hemicontact
                              &velocity_gradient})
       for (const Expression &e : *list)
         fields.push_back(&e);
-    fields_tape = std::make_unique<ExpressionTape>(fields);
-    std::vector<const Expression *> all = fields;
+    // the time (variable dim) is the same at all points of a batch
+    const std::vector<unsigned int> time = {dim};
+    fields_tape = std::make_unique<ExpressionTape>(fields, time);
+    std::vector<const Expression *> second_derivatives;
     for (const Expression &e : acceleration)
-      all.push_back(&e);
+      second_derivatives.push_back(&e);
     for (int c = 0; c < dim; ++c)
       for (int i = 0; i < dim; ++i)
         for (int j = i; j < dim; ++j)
           {
-            all.push_back(&displacement_hessian[(c * dim + i) * dim + j]);
-            all.push_back(&velocity_hessian[(c * dim + i) * dim + j]);
+            second_derivatives.push_back(
+              &displacement_hessian[(c * dim + i) * dim + j]);
+            second_derivatives.push_back(
+              &velocity_hessian[(c * dim + i) * dim + j]);
           }
-    all_tape = std::make_unique<ExpressionTape>(all);
+    force_tape = std::make_unique<ExpressionTape>(second_derivatives, time);
+    std::vector<const Expression *> all = fields;
+    all.insert(all.end(), second_derivatives.begin(), second_derivatives.end());
+    all_tape = std::make_unique<ExpressionTape>(all, time);
   }
 
   namespace
   {
+    /** @p tape at every point of @p points at time @p t: n_outputs()
+     *  results per point. */
     template <int dim>
     std::vector<double>
-    point_and_time(const Point<dim> &p, const double t)
+    evaluate_tape(const ExpressionTape &         tape,
+                  const std::vector<Point<dim>> &points,
+                  const double                   t)
     {
-      std::vector<double> at(dim + 1);
-      for (int i = 0; i < dim; ++i)
-        at[i] = p[i];
-      at[dim] = t;
-      return at;
+      std::vector<double> at(points.size() * (dim + 1));
+      for (unsigned int p = 0; p < points.size(); ++p)
+        {
+          for (int i = 0; i < dim; ++i)
+            at[p * (dim + 1) + i] = points[p][i];
+          at[p * (dim + 1) + dim] = t;
+        }
+      std::vector<double> r(points.size() * tape.n_outputs());
+      tape.evaluate(at.data(), dim + 1, points.size(), r.data());
+      return r;
     }
 
-    /** u, w, grad u, grad w from the first outputs of a tape. */
+    /** u, w, grad u, grad w from the outputs of the fields tape. */
     template <int dim>
     void
-    unpack_fields(const std::vector<double> &                       r,
-                  typename ManufacturedSolution<dim>::Values &v)
+    unpack_fields(const double *r, typename ManufacturedSolution<dim>::Values &v)
     {
       for (int c = 0; c < dim; ++c)
         {
@@ -130,14 +145,11 @@ namespace hemicontact
   } // namespace
 
   template <int dim>
-  typename ManufacturedSolution<dim>::Values
-  ManufacturedSolution<dim>::evaluate(const Point<dim> &p, const double t) const
+  void
+  ManufacturedSolution<dim>::unpack_second_derivatives(const double *r,
+                                                       Values &      v) const
   {
-    std::vector<double> r;
-    all_tape->evaluate(point_and_time(p, t), r);
-    Values v;
-    unpack_fields<dim>(r, v);
-    unsigned int k = 2 * dim + 2 * dim * dim;
+    unsigned int k = 0;
     for (int c = 0; c < dim; ++c)
       v.w_dot[c] = r[k++];
     Tensor<3, dim> hessian_u, hessian_w; // [component][i][j]
@@ -149,7 +161,43 @@ namespace hemicontact
             hessian_w[c][i][j] = hessian_w[c][j][i] = r[k++];
           }
     v.div_sigma = material.stress_divergence(hessian_w, hessian_u);
-    return v;
+  }
+
+  template <int dim>
+  std::vector<typename ManufacturedSolution<dim>::Values>
+  ManufacturedSolution<dim>::evaluate(const std::vector<Point<dim>> &points,
+                                      const double                   t) const
+  {
+    const std::vector<double> r = evaluate_tape(*all_tape, points, t);
+    const unsigned int        n_fields = fields_tape->n_outputs();
+    std::vector<Values>       values(points.size());
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        const double *at = r.data() + p * all_tape->n_outputs();
+        unpack_fields<dim>(at, values[p]);
+        unpack_second_derivatives(at + n_fields, values[p]);
+      }
+    return values;
+  }
+
+  template <int dim>
+  std::vector<typename ManufacturedSolution<dim>::Values>
+  ManufacturedSolution<dim>::evaluate_fields(
+    const std::vector<Point<dim>> &points,
+    const double                   t) const
+  {
+    const std::vector<double> r = evaluate_tape(*fields_tape, points, t);
+    std::vector<Values>       values(points.size());
+    for (unsigned int p = 0; p < points.size(); ++p)
+      unpack_fields<dim>(r.data() + p * fields_tape->n_outputs(), values[p]);
+    return values;
+  }
+
+  template <int dim>
+  typename ManufacturedSolution<dim>::Values
+  ManufacturedSolution<dim>::evaluate(const Point<dim> &p, const double t) const
+  {
+    return evaluate(std::vector<Point<dim>>{p}, t)[0];
   }
 
   template <int dim>
@@ -157,11 +205,23 @@ namespace hemicontact
   ManufacturedSolution<dim>::evaluate_fields(const Point<dim> &p,
                                              const double      t) const
   {
-    std::vector<double> r;
-    fields_tape->evaluate(point_and_time(p, t), r);
-    Values v;
-    unpack_fields<dim>(r, v);
-    return v;
+    return evaluate_fields(std::vector<Point<dim>>{p}, t)[0];
+  }
+
+  template <int dim>
+  std::vector<Tensor<1, dim>>
+  ManufacturedSolution<dim>::body_force(const std::vector<Point<dim>> &points,
+                                        const double t) const
+  {
+    const std::vector<double>   r = evaluate_tape(*force_tape, points, t);
+    std::vector<Tensor<1, dim>> forces(points.size());
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        Values v;
+        unpack_second_derivatives(r.data() + p * force_tape->n_outputs(), v);
+        forces[p] = material.density() * v.w_dot - v.div_sigma;
+      }
+    return forces;
   }
 
   template <int dim>
@@ -176,8 +236,7 @@ namespace hemicontact
   ManufacturedSolution<dim>::body_force(const Point<dim> &p,
                                         const double      t) const
   {
-    const Values v = evaluate(p, t);
-    return material.density() * v.w_dot - v.div_sigma;
+    return body_force(std::vector<Point<dim>>{p}, t)[0];
   }
 
   template <int dim>
@@ -251,6 +310,25 @@ namespace hemicontact
           f = m.evaluate_fields(p, t).w;
         for (int c = 0; c < dim; ++c)
           values(c) = f[c];
+      }
+      void
+      vector_value_list(const std::vector<Point<dim>> &points,
+                        std::vector<Vector<double>> &  values) const override
+      {
+        // one batch: what depends only on t is computed once
+        const double t = this->get_time();
+        if (which == 0)
+          {
+            const std::vector<Tensor<1, dim>> f = m.body_force(points, t);
+            for (unsigned int p = 0; p < points.size(); ++p)
+              for (int c = 0; c < dim; ++c)
+                values[p](c) = f[p][c];
+            return;
+          }
+        const std::vector<Values> v = m.evaluate_fields(points, t);
+        for (unsigned int p = 0; p < points.size(); ++p)
+          for (int c = 0; c < dim; ++c)
+            values[p](c) = which == 1 ? v[p].u[c] : v[p].w[c];
       }
       double
       value(const Point<dim> &p, const unsigned int c) const override

@@ -2,8 +2,12 @@
 // (Sacado) of the same expression: first and second derivatives of
 // expressions using every rule of the grammar (+ - * / ^ with integer and
 // real exponents, unary minus, every function, pos/abs/max/min on both sides
-// of their kinks), at points of a grid, agree to round-off.
+// of their kinks), at points of a grid, agree to round-off. The same
+// expressions and derivatives on one ExpressionTape, evaluated for all
+// points of the grid at once with the time uniform, give the values of the
+// trees.
 #include <hemicontact/expression.h>
+#include <hemicontact/expression_tape.h>
 
 #include <Sacado.hpp>
 
@@ -68,6 +72,39 @@ main(int argc, char **argv)
             }
       out() << text << ": " << (error < 1e-13 ? "agrees" : "DIFFERS") << "\n";
       largest = std::max(largest, error);
+
+      // one tape, one batch per time
+      std::vector<const Expression *> all = {&f};
+      for (const auto *list : {&first, &second})
+        for (const Expression &e : *list)
+          all.push_back(&e);
+      const ExpressionTape tape(all, /*uniform_variables=*/{2});
+      double               batch_error = 0;
+      for (const double t : {0.1, 0.9})
+        {
+          std::vector<double> at;
+          for (const double x : {-0.35, 0.15, 0.45})
+            for (const double y : {-0.25, 0.05, 0.6})
+              at.insert(at.end(), {x, y, t});
+          const unsigned int  n_points = at.size() / 3;
+          std::vector<double> results(n_points * tape.n_outputs());
+          tape.evaluate(at.data(), 3, n_points, results.data());
+          for (unsigned int p = 0; p < n_points; ++p)
+            for (unsigned int k = 0; k < all.size(); ++k)
+              {
+                const double tree = all[k]->evaluate(
+                  std::vector<double>(at.begin() + 3 * p,
+                                      at.begin() + 3 * p + 3));
+                batch_error =
+                  std::max(batch_error,
+                           std::abs(results[p * tape.n_outputs() + k] - tree) /
+                             (1 + std::abs(tree)));
+              }
+        }
+      out() << "  tape, 9 points per batch: "
+            << (batch_error < 1e-14 ? "equal to the trees" : "DIFFERS")
+            << "\n";
+      largest = std::max(largest, batch_error);
     }
   out() << "largest relative difference below 1e-13: "
         << (largest < 1e-13 ? "yes" : "NO") << "\n";

@@ -44,6 +44,8 @@ namespace hemicontact
     double       mean_newton_iterations = 0;
     unsigned int max_newton_iterations  = 0;
     double       wall_seconds           = 0;
+    /** Of those, the time loop: the steps, their errors and adaptations. */
+    double       step_wall_seconds      = 0;
     /** shares of (node, step) pairs: separating, normal stick, damped,
      *  tangential stick, slip */
     double branch_share[5] = {0, 0, 0, 0, 0};

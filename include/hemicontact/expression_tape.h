@@ -19,8 +19,14 @@ namespace hemicontact
   class ExpressionTape
   {
   public:
-    /** Compile @p expressions (which need not outlive the tape). */
-    explicit ExpressionTape(const std::vector<const Expression *> &expressions);
+    /**
+     * Compile @p expressions (which need not outlive the tape). The
+     * @p uniform_variables (e.g. the time) are the same at all points of a
+     * batch: what depends only on them is computed once per batch.
+     */
+    explicit ExpressionTape(
+      const std::vector<const Expression *> &expressions,
+      const std::vector<unsigned int> &      uniform_variables = {});
 
     /**
      * The values of the expressions, in the order given to the
@@ -29,6 +35,25 @@ namespace hemicontact
     void
     evaluate(const std::vector<double> &variables,
              std::vector<double> &      results) const;
+
+    /**
+     * The values at @p n_points points at once: the point p has the
+     * variables variables[p n_variables + v] and gets the results
+     * results[p n_outputs + k]. Each instruction is decoded once per batch,
+     * so a batch costs less than its points one by one.
+     */
+    void
+    evaluate(const double *     variables,
+             const unsigned int n_variables,
+             const unsigned int n_points,
+             double *           results) const;
+
+    /** The number of expressions (results per point). */
+    unsigned int
+    n_outputs() const
+    {
+      return outputs.size();
+    }
 
     /** The number of instructions (distinct subexpressions). */
     unsigned int
@@ -58,6 +83,9 @@ namespace hemicontact
       unsigned int a = 0, b = 0; ///< operand instructions
       unsigned int n = 0;        ///< variable index or integer exponent
       double       value = 0;    ///< constant
+      unsigned int n_operands = 0;
+      /** Depends only on constants and uniform variables. */
+      bool uniform = false;
     };
 
     /** The instruction computing @p node, appended unless it exists. */
@@ -65,10 +93,11 @@ namespace hemicontact
     compile(const Expression::Node &node);
 
     unsigned int
-    append(const Instruction &instruction);
+    append(Instruction instruction);
 
     std::vector<Instruction>  code;
     std::vector<unsigned int> outputs;
+    std::vector<unsigned int> uniform_variables;
     /** While compiling: the instruction of each (op, function, a, b, n,
      *  value bits) appended so far. */
     using Key = std::tuple<int, int, unsigned int, unsigned int, unsigned int,

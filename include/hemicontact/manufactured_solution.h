@@ -56,6 +56,15 @@ namespace hemicontact
     Values
     evaluate_fields(const Point<dim> &p, const double t) const;
 
+    /** evaluate() at all @p points in one batch (cheaper per point). */
+    std::vector<Values>
+    evaluate(const std::vector<Point<dim>> &points, const double t) const;
+
+    /** evaluate_fields() at all @p points in one batch. */
+    std::vector<Values>
+    evaluate_fields(const std::vector<Point<dim>> &points,
+                    const double                   t) const;
+
     /** sigma = A eps(w) + B eps(u). */
     SymmetricTensor<2, dim>
     stress(const Values &v) const;
@@ -63,6 +72,10 @@ namespace hemicontact
     /** f0 = rho dw/dt - Div sigma. */
     Tensor<1, dim>
     body_force(const Point<dim> &p, const double t) const;
+
+    /** f0 at all @p points in one batch. */
+    std::vector<Tensor<1, dim>>
+    body_force(const std::vector<Point<dim>> &points, const double t) const;
 
     /** f2 = sigma nu. */
     Tensor<1, dim>
@@ -97,8 +110,14 @@ namespace hemicontact
     /** @} */
     /** u, w and their gradients in one pass (evaluate_fields()). */
     std::unique_ptr<ExpressionTape> fields_tape;
-    /** Those, dw/dt and the second derivatives with j >= i (evaluate()). */
+    /** dw/dt and the second derivatives with j >= i (body_force()). */
+    std::unique_ptr<ExpressionTape> force_tape;
+    /** The fields tape's outputs, then the force tape's (evaluate()). */
     std::unique_ptr<ExpressionTape> all_tape;
+
+    /** w_dot and Div sigma from the force tape's outputs at @p r. */
+    void
+    unpack_second_derivatives(const double *r, Values &v) const;
     std::unique_ptr<Expression>         normal_multiplier;
     std::vector<Expression>             tangential_multiplier;
     std::shared_ptr<const FrictionBound<dim>> friction_bound;
