@@ -297,15 +297,16 @@ namespace hemicontact
 
     /** @name output.cc */
     /**
-     * Write the solution files of the current step ('output/format'): VTU
-     * files on a background thread while the run goes on, HDF5 at once.
-     * The step enters the series file with finish_solution_output().
+     * Start writing the solution of the current step ('output/format') on
+     * a background thread while the run goes on: VTU files, or the data of
+     * an HDF5 file, which finish_solution_output() writes (collectively).
      */
     void
     write_solution();
     /**
-     * Wait for the solution write in progress, check it on every rank and
-     * replace the series file (solution.pvd or solution.xdmf) atomically.
+     * Wait for the solution write in progress, check it on every rank,
+     * write the HDF5 file and replace the series file (solution.pvd or
+     * solution.xdmf) atomically.
      * Called before the next write, before the mesh changes or a checkpoint
      * saves the series, and at the end of a run.
      */
@@ -449,6 +450,8 @@ namespace hemicontact
       std::unique_ptr<DataOut<dim>> data_out;
       /** w and u with ghost entries, for the cell stresses. */
       TrilinosWrappers::MPI::Vector velocity, displacement;
+      /** HDF5 output: the patches' data in the layout of the file. */
+      std::unique_ptr<DataOutBase::DataOutFilter> hdf5_filter;
     };
     SolutionSnapshot solution_snapshot;
     /** The series entry of the write in progress. */

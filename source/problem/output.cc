@@ -283,8 +283,8 @@ namespace hemicontact
     if (parameters.adaptivity.interval > 0)
       cell_data.emplace_back("refinement_indicator", refinement_indicators());
 
-    // the job: stresses, patches and files (and for HDF5 the series entry);
-    // for VTU without MPI, on the writer's thread
+    // the job, on the writer's thread and without MPI: stresses, patches
+    // and the VTU files, or the data in HDF5 layout
     const bool        hdf5 = parameters.output.format == SolutionFormat::hdf5;
     const std::string directory = parameters.output.directory + "/";
     const unsigned int rank = Utilities::MPI::this_mpi_process(mpi_communicator);
@@ -293,7 +293,10 @@ namespace hemicontact
     const Quadrature<dim> quadrature = discretization.cell_quadrature(2);
     const std::string     stem =
       "solution_" + Utilities::int_to_string(snapshot.step, 5);
-    pending_record = {snapshot.time, stem + ".pvtu"};
+    pending_record = {snapshot.time, stem + (hdf5 ? ".h5" : ".pvtu")};
+    snapshot.hdf5_filter = std::make_unique<DataOutBase::DataOutFilter>(
+      DataOutBase::DataOutFilterFlags(/*filter_duplicates=*/false,
+                                      /*xdmf_hdf5_output=*/true));
     auto job = [this, hdf5, directory, rank, n_ranks, quadrature, stem,
                 cell_data = std::move(cell_data)]() -> std::string {
       const SolutionSnapshot &s        = solution_snapshot;
@@ -321,17 +324,9 @@ namespace hemicontact
         {
           if (hdf5)
             {
-              DataOutBase::DataOutFilter filter(
-                DataOutBase::DataOutFilterFlags(/*filter_duplicates=*/false,
-                                                /*xdmf_hdf5_output=*/true));
-              data_out.write_filtered_data(filter);
-              const std::string h5 = stem + ".h5";
-              data_out.write_hdf5_parallel(filter, directory + h5,
-                                           mpi_communicator);
-              pending_record.second =
-                data_out
-                  .create_xdmf_entry(filter, h5, s.time, mpi_communicator)
-                  .get_xdmf_content(3, discretization.fe->reference_cell());
+              // the data in HDF5 layout; the file is written (collectively)
+              // by finish_solution_output()
+              data_out.write_filtered_data(*s.hdf5_filter);
               return "";
             }
           DataOutBase::VtkFlags flags;
@@ -368,14 +363,7 @@ namespace hemicontact
         }
       return "";
     };
-    // HDF5 writes are collective (MPI): on this thread, within the wait
-    solution_writer.start(job, hdf5 ? std::launch::deferred :
-                                      std::launch::async);
-    if (hdf5)
-      {
-        t.stop();
-        finish_solution_output();
-      }
+    solution_writer.start(job, std::launch::async);
   }
 
   template <int dim>
@@ -385,13 +373,44 @@ namespace hemicontact
     if (!solution_writer.pending())
       return;
     TimerOutput::Scope t(timer, "output");
-    std::string        error = solution_writer.wait();
-    solution_snapshot.data_out.reset(); // its patches
+    const std::string prefix = "cannot write the solution files of step " +
+                               std::to_string(solution_snapshot.step) +
+                               " in '" + parameters.output.directory + "': ";
+    std::string error = solution_writer.wait();
     if (!error.empty())
-      error = "cannot write the solution files of step " +
-              std::to_string(solution_snapshot.step) + " in '" +
-              parameters.output.directory + "': " + error + ".";
+      error = prefix + error + ".";
     throw_if_any(error, mpi_communicator);
+
+    // HDF5: the collective write of the data the job arranged
+    if (parameters.output.format == SolutionFormat::hdf5)
+      {
+        const DataOut<dim> &              data_out = *solution_snapshot.data_out;
+        const DataOutBase::DataOutFilter &filter =
+          *solution_snapshot.hdf5_filter;
+        const std::string h5 = pending_record.second;
+        errno                = 0;
+        try
+          {
+            data_out.write_hdf5_parallel(filter,
+                                         parameters.output.directory + "/" +
+                                           h5,
+                                         mpi_communicator);
+            pending_record.second =
+              data_out
+                .create_xdmf_entry(filter, h5, pending_record.first,
+                                   mpi_communicator)
+                .get_xdmf_content(3, discretization.fe->reference_cell());
+          }
+        catch (const ExceptionBase &)
+          {
+            error = prefix +
+                    (errno != 0 ? std::strerror(errno) : "the write failed") +
+                    ".";
+          }
+        throw_if_any(error, mpi_communicator);
+      }
+    solution_snapshot.data_out.reset(); // its patches
+    solution_snapshot.hdf5_filter.reset();
 
     // the series file lists only the files written completely
     pvd_records.push_back(pending_record);
