@@ -7,14 +7,16 @@
  *                   to 'relative tolerance' (Krylov per full solve)
  *   no-constrained  SolverTuning::constrained_preconditioner = false
  *   no-settled      SolverTuning::exact_solve_when_settled = false
+ *   fixed-frictionless  'fixed' with 'data/friction bound = 0'
  *
  * Prints one CSV line per run: variant, r, dofs, Newton iterations per
  * step, Krylov iterations per Newton iteration, seconds per step.
  *
  *   cmake -S bench/solver_variants -B build-variants -DCMAKE_BUILD_TYPE=Release
  *   cmake --build build-variants
- *   for v in default fixed no-constrained no-settled; do for r in 4 5 6; do
- *     build-variants/solver_variants $v $r; done; done
+ *   for v in default fixed no-constrained no-settled fixed-frictionless; do
+ *     for r in 4 5 6; do
+ *       build-variants/solver_variants $v $r; done; done
  *
  * Links the library of the Release build in build/ (doc/performance.md,
  * "Limits and open targets").
@@ -48,15 +50,18 @@ main(int argc, char **argv)
        << "subsection output\n  set directory = output-solver-variants\n"
        << "  set terminal = quiet\n  set vtu interval = 0\n"
        << "  set probe points =\nend\n";
-  if (variant == "fixed")
+  if (variant.rfind("fixed", 0) == 0)
     text << "subsection linear solver\n  set forcing term = fixed\nend\n";
+  if (variant == "fixed-frictionless")
+    text << "subsection data\n  set friction bound = 0\nend\n";
   dealii::ParameterHandler prm;
   Parameters parameters = read_parameters_from_string(prm, text.str());
   if (variant == "no-constrained")
     parameters.solver_tuning.constrained_preconditioner = false;
   else if (variant == "no-settled")
     parameters.solver_tuning.exact_solve_when_settled = false;
-  else if (variant != "default" && variant != "fixed")
+  else if (variant != "default" && variant != "fixed" &&
+           variant != "fixed-frictionless")
     {
       std::cerr << "unknown variant '" << variant << "'\n";
       return 1;
