@@ -300,16 +300,9 @@ namespace hemicontact
       void
       vector_value(const Point<dim> &p, Vector<double> &values) const override
       {
-        const double   t = this->get_time();
-        Tensor<1, dim> f;
-        if (which == 0)
-          f = m.body_force(p, t);
-        else if (which == 1)
-          f = m.evaluate_fields(p, t).u;
-        else
-          f = m.evaluate_fields(p, t).w;
-        for (int c = 0; c < dim; ++c)
-          values(c) = f[c];
+        std::vector<Vector<double>> list(1, Vector<double>(dim));
+        vector_value_list({p}, list);
+        values = list[0];
       }
       void
       vector_value_list(const std::vector<Point<dim>> &points,

@@ -19,12 +19,17 @@ namespace hemicontact
     std::string
     reason(const std::string &path, const int error_number)
     {
-      return "cannot write '" + path + "': " +
-             (error_number != 0 ? std::strerror(error_number) :
-                                  "the write failed") +
+      return "cannot write '" + path + "': " + write_failure(error_number) +
              ".";
     }
   } // namespace
+
+  std::string
+  write_failure(const int error_number)
+  {
+    return error_number != 0 ? std::strerror(error_number) :
+                               "the write failed";
+  }
 
   std::string
   append_complete(std::ofstream &file, const std::string &path,

@@ -95,6 +95,10 @@ namespace hemicontact
     make_problem_data() const;
 
   private:
+    /** w_dot and Div sigma from the force tape's outputs at @p r. */
+    void
+    unpack_second_derivatives(const double *r, Values &v) const;
+
     const NormalLaw &                   law;
     const FrictionLaw &                 friction;
     KelvinVoigtMaterial<dim>            material;
@@ -114,10 +118,6 @@ namespace hemicontact
     std::unique_ptr<ExpressionTape> force_tape;
     /** The fields tape's outputs, then the force tape's (evaluate()). */
     std::unique_ptr<ExpressionTape> all_tape;
-
-    /** w_dot and Div sigma from the force tape's outputs at @p r. */
-    void
-    unpack_second_derivatives(const double *r, Values &v) const;
     std::unique_ptr<Expression>         normal_multiplier;
     std::vector<Expression>             tangential_multiplier;
     std::shared_ptr<const FrictionBound<dim>> friction_bound;

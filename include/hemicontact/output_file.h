@@ -31,6 +31,10 @@ namespace hemicontact
   std::string
   write_atomically(const std::string &path, const std::string &text);
 
+  /** The reason of a failed write from its errno (0: "the write failed"). */
+  std::string
+  write_failure(int error_number);
+
   /** Throw an OutputError on every rank if any rank has an @p error. */
   void
   throw_if_any(const std::string &error, MPI_Comm comm);

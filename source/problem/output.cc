@@ -294,9 +294,10 @@ namespace hemicontact
     const std::string     stem =
       "solution_" + Utilities::int_to_string(snapshot.step, 5);
     pending_record = {snapshot.time, stem + (hdf5 ? ".h5" : ".pvtu")};
-    snapshot.hdf5_filter = std::make_unique<DataOutBase::DataOutFilter>(
-      DataOutBase::DataOutFilterFlags(/*filter_duplicates=*/false,
-                                      /*xdmf_hdf5_output=*/true));
+    if (hdf5)
+      snapshot.hdf5_filter = std::make_unique<DataOutBase::DataOutFilter>(
+        DataOutBase::DataOutFilterFlags(/*filter_duplicates=*/false,
+                                        /*xdmf_hdf5_output=*/true));
     auto job = [this, hdf5, directory, rank, n_ranks, quadrature, stem,
                 cell_data = std::move(cell_data)]() -> std::string {
       const SolutionSnapshot &s        = solution_snapshot;
@@ -341,8 +342,7 @@ namespace hemicontact
           data_out.write_vtu(vtu);
           vtu.close();
           if (!vtu)
-            return std::string(errno != 0 ? std::strerror(errno) :
-                                            "the write failed");
+            return write_failure(errno);
           if (rank == 0)
             {
               std::vector<std::string> pieces;
@@ -352,14 +352,12 @@ namespace hemicontact
               data_out.write_pvtu_record(pvtu, pieces);
               pvtu.close();
               if (!pvtu)
-                return std::string(errno != 0 ? std::strerror(errno) :
-                                                "the write failed");
+                return write_failure(errno);
             }
         }
       catch (const ExceptionBase &)
         {
-          return std::string(errno != 0 ? std::strerror(errno) :
-                                          "the write failed");
+          return write_failure(errno);
         }
       return "";
     };
@@ -403,9 +401,7 @@ namespace hemicontact
           }
         catch (const ExceptionBase &)
           {
-            error = prefix +
-                    (errno != 0 ? std::strerror(errno) : "the write failed") +
-                    ".";
+            error = prefix + write_failure(errno) + ".";
           }
         throw_if_any(error, mpi_communicator);
       }

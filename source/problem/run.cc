@@ -309,16 +309,17 @@ namespace hemicontact
             since_checkpoint.start();
           }
         if (interrupted && !finished())
-          finish_solution_output();
-        if (interrupted && !finished())
-          throw RunInterrupted(
-            "stopped after step " + std::to_string(step_number) + " (t = " +
-            std::to_string(get_time()) + ")" +
-            (has_checkpoints() ? "; a checkpoint was written to '" +
-                                   parameters.output.directory +
-                                   "/checkpoint'; continue with "
-                                   "'hemicontact --resume FILE.prm'." :
-                                 "; no checkpoint (simplex mesh)."));
+          {
+            finish_solution_output();
+            throw RunInterrupted(
+              "stopped after step " + std::to_string(step_number) + " (t = " +
+              std::to_string(get_time()) + ")" +
+              (has_checkpoints() ? "; a checkpoint was written to '" +
+                                     parameters.output.directory +
+                                     "/checkpoint'; continue with "
+                                     "'hemicontact --resume FILE.prm'." :
+                                   "; no checkpoint (simplex mesh)."));
+          }
       }
 
     finish_solution_output();
