@@ -158,6 +158,24 @@ namespace hemicontact
   }
 
   template <int dim>
+  bool
+  StepPreconditioner<dim>::constrained_directions_changed(
+    const ProjectedOperator<dim> &op) const
+  {
+    AssertDimension(constrained_amg_directions.size(), op.nodes().size());
+    unsigned int changed = 0;
+    for (unsigned int i = 0; i < op.nodes().size(); ++i)
+      if ((unit_symmetric_tensor<dim>() - op.nodes()[i].projector -
+           constrained_amg_directions[i])
+            .norm() > 0.5)
+        {
+          changed = 1;
+          break;
+        }
+    return Utilities::MPI::max(changed, mpi_communicator) > 0;
+  }
+
+  template <int dim>
   void
   StepPreconditioner<dim>::build_constrained_amg(const ProjectedOperator<dim> &op)
   {
@@ -207,10 +225,13 @@ namespace hemicontact
   void
   StepPreconditioner<dim>::prepare(const ProjectedOperator<dim> &op)
   {
-    const bool build_now = tuning.constrained_preconditioner &&
-                           !constrained_amg_dropped &&
-                           constrained_amg == nullptr;
-    if (constrained_amg != nullptr &&
+    const bool follow = tuning.constrained_preconditioner &&
+                        tuning.constrained_amg_follows_branches;
+    const bool build_now =
+      tuning.constrained_preconditioner && !constrained_amg_dropped &&
+      (constrained_amg == nullptr ||
+       (follow && constrained_directions_changed(op)));
+    if (!follow && constrained_amg != nullptr &&
         constrained_mismatch(op) > tuning.constrained_mismatch_limit)
       {
         constrained_amg.reset();
@@ -218,7 +239,7 @@ namespace hemicontact
         constrained_amg_dropped = true;
       }
     // the free directions the AMG treats as constrained (none for a new one)
-    const bool split_mismatched = constrained_amg != nullptr;
+    const bool split_mismatched = constrained_amg != nullptr && !build_now;
     if (build_now)
       build_constrained_amg(op);
     amg_in_use = constrained_amg ? constrained_amg.get() :

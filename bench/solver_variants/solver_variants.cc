@@ -8,13 +8,17 @@
  *   no-constrained  SolverTuning::constrained_preconditioner = false
  *   no-settled      SolverTuning::exact_solve_when_settled = false
  *   fixed-frictionless  'fixed' with 'data/friction bound = 0'
+ *   following       SolverTuning::constrained_amg_follows_branches = true:
+ *                   the AMG's constraints are those of every iteration
+ *   fixed-following 'fixed' and 'following'
  *
  * Prints one CSV line per run: variant, r, dofs, Newton iterations per
  * step, Krylov iterations per Newton iteration, seconds per step.
  *
  *   cmake -S bench/solver_variants -B build-variants -DCMAKE_BUILD_TYPE=Release
  *   cmake --build build-variants
- *   for v in default fixed no-constrained no-settled fixed-frictionless; do
+ *   for v in default fixed no-constrained no-settled fixed-frictionless \
+ *           following fixed-following; do
  *     for r in 4 5 6; do
  *       build-variants/solver_variants $v $r; done; done
  *
@@ -60,6 +64,8 @@ main(int argc, char **argv)
     parameters.solver_tuning.constrained_preconditioner = false;
   else if (variant == "no-settled")
     parameters.solver_tuning.exact_solve_when_settled = false;
+  else if (variant == "following" || variant == "fixed-following")
+    parameters.solver_tuning.constrained_amg_follows_branches = true;
   else if (variant != "default" && variant != "fixed" &&
            variant != "fixed-frictionless")
     {

@@ -60,6 +60,14 @@ namespace hemicontact
      */
     double constrained_mismatch_limit = 0.05;
     /**
+     * Rebuild the constrained AMG in every iteration whose constrained
+     * directions differ from the AMG's (either way), instead of splitting
+     * mismatched directions off or dropping the AMG. Krylov iterations then
+     * no longer grow under refinement, but one ML set-up costs about 20 CG
+     * iterations at 2D r6: off (doc/performance.md, "Alternatives measured").
+     */
+    bool constrained_amg_follows_branches = false;
+    /**
      * Contact directions stiffer than this times the diagonal of K0 are
      * inverted node by node instead of by the AMG (0: never).
      */

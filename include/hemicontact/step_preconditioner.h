@@ -121,6 +121,14 @@ namespace hemicontact
     double
     constrained_mismatch(const ProjectedOperator<dim> &op) const;
 
+    /**
+     * Whether some node of @p op has constrained directions other than
+     * those the constrained AMG treats as constrained (the same on every
+     * rank).
+     */
+    bool
+    constrained_directions_changed(const ProjectedOperator<dim> &op) const;
+
     /** Build the constrained AMG from the constraints of @p op. */
     void
     build_constrained_amg(const ProjectedOperator<dim> &op);
