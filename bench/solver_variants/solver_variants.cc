@@ -22,6 +22,9 @@
  *     for r in 4 5 6; do
  *       build-variants/solver_variants $v $r; done; done
  *
+ * bench/results/solver_variants.csv also has r = 7, 8 for 'default' and
+ * 'following' (the same command, run on their own).
+ *
  * Links the library of the Release build in build/ (doc/performance.md,
  * "Limits and open targets").
  */
