@@ -245,7 +245,7 @@ namespace hemicontact
                                               const Tensor<1, dim> &normal,
                                               const double          t) const
   {
-    return stress(evaluate(p, t)) * normal;
+    return stress(evaluate_fields(p, t)) * normal;
   }
 
   template <int dim>
@@ -254,7 +254,7 @@ namespace hemicontact
                                               const Tensor<1, dim> &normal,
                                               const double          t) const
   {
-    const Values         v      = evaluate(p, t);
+    const Values         v      = evaluate_fields(p, t);
     const double         w_n    = v.w * normal;
     const Tensor<1, dim> w_t    = v.w - w_n * normal;
     const double         scale  = 1e-13 * (1 + v.w.norm());

@@ -142,37 +142,23 @@ namespace hemicontact
   template <int dim>
   double
   StepPreconditioner<dim>::constrained_mismatch(
-    const ProjectedOperator<dim> &op) const
+    const ProjectedOperator<dim> &op,
+    const bool                    either_way) const
   {
     AssertDimension(constrained_amg_directions.size(), op.nodes().size());
     unsigned int counts[2] = {0, 0}; // mismatched, all
     for (unsigned int i = 0; i < op.nodes().size(); ++i)
       {
-        const Tensor<2, dim> &free = op.nodes()[i].projector;
+        const Tensor<2, dim> &free        = op.nodes()[i].projector;
+        const Tensor<2, dim> &constrained = constrained_amg_directions[i];
         ++counts[1];
-        if ((free * constrained_amg_directions[i] * free).norm() > 0.5)
+        if ((either_way ? unit_symmetric_tensor<dim>() - free - constrained :
+                          free * constrained * free)
+              .norm() > 0.5)
           ++counts[0];
       }
     Utilities::MPI::sum(counts, mpi_communicator, counts);
     return counts[0] / std::max(1., static_cast<double>(counts[1]));
-  }
-
-  template <int dim>
-  bool
-  StepPreconditioner<dim>::constrained_directions_changed(
-    const ProjectedOperator<dim> &op) const
-  {
-    AssertDimension(constrained_amg_directions.size(), op.nodes().size());
-    unsigned int changed = 0;
-    for (unsigned int i = 0; i < op.nodes().size(); ++i)
-      if ((unit_symmetric_tensor<dim>() - op.nodes()[i].projector -
-           constrained_amg_directions[i])
-            .norm() > 0.5)
-        {
-          changed = 1;
-          break;
-        }
-    return Utilities::MPI::max(changed, mpi_communicator) > 0;
   }
 
   template <int dim>
@@ -230,7 +216,7 @@ namespace hemicontact
     const bool build_now =
       tuning.constrained_preconditioner && !constrained_amg_dropped &&
       (constrained_amg == nullptr ||
-       (follow && constrained_directions_changed(op)));
+       (follow && constrained_mismatch(op, true) > 0));
     if (!follow && constrained_amg != nullptr &&
         constrained_mismatch(op) > tuning.constrained_mismatch_limit)
       {

@@ -116,18 +116,12 @@ namespace hemicontact
 
     /**
      * The share of the operator's nodes with a free direction that the
-     * constrained AMG treats as constrained (the same on every rank).
+     * constrained AMG treats as constrained or, if @p either_way, with any
+     * constrained directions other than the AMG's (the same on every rank).
      */
     double
-    constrained_mismatch(const ProjectedOperator<dim> &op) const;
-
-    /**
-     * Whether some node of @p op has constrained directions other than
-     * those the constrained AMG treats as constrained (the same on every
-     * rank).
-     */
-    bool
-    constrained_directions_changed(const ProjectedOperator<dim> &op) const;
+    constrained_mismatch(const ProjectedOperator<dim> &op,
+                         const bool either_way = false) const;
 
     /** Build the constrained AMG from the constraints of @p op. */
     void
