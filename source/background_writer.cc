@@ -10,6 +10,8 @@ namespace hemicontact
   {
     if (job_result.valid())
       job_result.wait();
+    if (retirement.valid())
+      retirement.wait();
   }
 
   void
@@ -17,6 +19,8 @@ namespace hemicontact
                           const std::launch            policy)
   {
     Assert(!pending(), dealii::ExcMessage("wait() for the previous job first"));
+    if (retirement.valid())
+      retirement.wait();
     job_result = std::async(policy, [job = std::move(job)]() -> std::string {
       try
         {
@@ -31,6 +35,17 @@ namespace hemicontact
           return "an unknown error";
         }
     });
+  }
+
+  void
+  BackgroundWriter::retire(std::vector<std::shared_ptr<void>> buffers)
+  {
+    if (retirement.valid())
+      retirement.wait();
+    retirement = std::async(std::launch::async,
+                            [buffers = std::move(buffers)]() mutable {
+                              buffers.clear();
+                            });
   }
 
   std::string

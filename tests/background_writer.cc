@@ -3,7 +3,8 @@
 // waited for; the run can change its own data meanwhile; a deferred job runs
 // on the calling thread within wait(); a job's error message and an
 // exception it throws both come back from wait(); the next job starts only
-// after wait().
+// after wait(); retired buffers are freed on another thread, and the next job
+// starts only after they are.
 #include <hemicontact/background_writer.h>
 
 #include <atomic>
@@ -71,4 +72,46 @@ main(int argc, char **argv)
   writer.wait();
   out() << ", after wait: " << ran
         << ", on the calling thread: " << (job_thread == caller) << "\n";
+
+  // a buffer that is freed only once released, and records where
+  struct Buffer
+  {
+    Buffer(const std::atomic<bool> &release,
+           std::thread::id &        freed_on,
+           std::atomic<int> &       freed)
+      : release(release)
+      , freed_on(freed_on)
+      , freed(freed)
+    {}
+    ~Buffer()
+    {
+      while (!release)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      freed_on = std::this_thread::get_id();
+      ++freed;
+    }
+    const std::atomic<bool> &release;
+    std::thread::id &        freed_on;
+    std::atomic<int> &       freed;
+  };
+  std::atomic<bool> release_buffers{false};
+  std::thread::id   freed_on = caller;
+  std::atomic<int>  freed{0};
+  writer.retire(
+    {std::make_shared<Buffer>(release_buffers, freed_on, freed),
+     std::make_shared<Buffer>(release_buffers, freed_on, freed),
+     nullptr});
+  // the caller goes on while the buffers wait to be freed
+  out() << "retired buffers freed when retire returns: " << freed;
+  release_buffers  = true;
+  int freed_before_job = -1;
+  writer.start(
+    [&]() -> std::string {
+      freed_before_job = freed;
+      return "";
+    },
+    std::launch::async);
+  writer.wait();
+  out() << ", before the next job: " << freed_before_job
+        << ", on another thread: " << (freed_on != caller) << "\n";
 }

@@ -2,7 +2,9 @@
 
 #include <functional>
 #include <future>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace hemicontact
 {
@@ -16,7 +18,7 @@ namespace hemicontact
   class BackgroundWriter
   {
   public:
-    /** Waits for the job in progress. */
+    /** Waits for the job in progress and for the buffers being freed. */
     ~BackgroundWriter();
 
     /**
@@ -42,7 +44,17 @@ namespace hemicontact
     std::string
     wait();
 
+    /**
+     * Free @p buffers (what a finished job read: its patches, its file
+     * layout) on a thread of their own, so that the caller does not spend
+     * the time. Their destructors must not call MPI. The next start(),
+     * retire() and the destructor wait until they are freed.
+     */
+    void
+    retire(std::vector<std::shared_ptr<void>> buffers);
+
   private:
     std::future<std::string> job_result;
+    std::future<void>        retirement;
   };
 } // namespace hemicontact

@@ -405,8 +405,9 @@ namespace hemicontact
           }
         throw_if_any(error, mpi_communicator);
       }
-    solution_snapshot.data_out.reset(); // its patches
-    solution_snapshot.hdf5_filter.reset();
+    // its patches and HDF5 layout are freed while the run goes on
+    solution_writer.retire({std::move(solution_snapshot.data_out),
+                            std::move(solution_snapshot.hdf5_filter)});
 
     // the series file lists only the files written completely
     pvd_records.push_back(pending_record);
