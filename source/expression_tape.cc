@@ -25,6 +25,37 @@ namespace hemicontact
     for (const Expression *e : expressions)
       outputs.push_back(compile(e->tree()));
     known.clear();
+
+    // evaluate_cached() needs the spatial values that an instruction
+    // depending on the uniform variables reads, and the spatial results
+    const auto keep = [this](const unsigned int i) {
+      if (code[i].spatial && code[i].cached < 0)
+        code[i].cached = n_cached_values++;
+    };
+    for (const Instruction &c : code)
+      if (!c.spatial && !c.uniform)
+        {
+          keep(c.a);
+          if (c.n_operands > 1)
+            keep(c.b);
+        }
+    for (const unsigned int o : outputs)
+      keep(o);
+    for (unsigned int i = 0; i < code.size(); ++i)
+      {
+        all_instructions.push_back(i);
+        if (!code[i].timed)
+          time_free_instructions.push_back(i);
+        if (!code[i].spatial || code[i].cached >= 0)
+          given_spatial_instructions.push_back(i);
+      }
+  }
+
+  bool
+  ExpressionTape::is_uniform_variable(const unsigned int v) const
+  {
+    return std::find(uniform_variables.begin(), uniform_variables.end(), v) !=
+           uniform_variables.end();
   }
 
   unsigned int
@@ -36,15 +67,19 @@ namespace hemicontact
           instruction.uniform = true;
           break;
         case Op::variable:
-          instruction.uniform =
-            std::find(uniform_variables.begin(), uniform_variables.end(),
-                      instruction.n) != uniform_variables.end();
+          instruction.uniform = is_uniform_variable(instruction.n);
+          instruction.timed   = instruction.uniform;
           break;
         default:
-          instruction.uniform =
-            code[instruction.a].uniform &&
-            (instruction.n_operands < 2 || code[instruction.b].uniform);
+          {
+            const bool binary   = instruction.n_operands > 1;
+            const Instruction &a = code[instruction.a];
+            const Instruction &b = code[binary ? instruction.b : instruction.a];
+            instruction.uniform = a.uniform && b.uniform;
+            instruction.timed   = a.timed || b.timed;
+          }
       }
+    instruction.spatial = !instruction.uniform && !instruction.timed;
     // the same operation on the same operands is the same subexpression
     const Key key{static_cast<int>(instruction.op), instruction.function_id,
                   instruction.a, instruction.b, instruction.n,
@@ -140,18 +175,76 @@ namespace hemicontact
                            const unsigned int n_points,
                            double *           results) const
   {
+    gather(execute(variables, n_variables, n_points, Pass::all, nullptr),
+           n_points, results);
+  }
+
+  void
+  ExpressionTape::evaluate_spatial(const double *     variables,
+                                   const unsigned int n_variables,
+                                   const unsigned int n_points,
+                                   double *           spatial) const
+  {
+    const double *const r =
+      execute(variables, n_variables, n_points, Pass::time_free, nullptr);
+    for (unsigned int i = 0; i < code.size(); ++i)
+      if (code[i].cached >= 0)
+        std::copy_n(r + std::size_t(i) * n_points, n_points,
+                    spatial + std::size_t(code[i].cached) * n_points);
+  }
+
+  void
+  ExpressionTape::evaluate_cached(const double *     variables,
+                                  const unsigned int n_variables,
+                                  const unsigned int n_points,
+                                  const double *     spatial,
+                                  double *           results) const
+  {
+    gather(execute(variables, n_variables, n_points, Pass::given_spatial,
+                   spatial),
+           n_points, results);
+  }
+
+  void
+  ExpressionTape::gather(const double *r, const unsigned int n_points,
+                         double *results) const
+  {
+    const unsigned int n_results = outputs.size();
+    for (unsigned int p = 0; p < n_points; ++p)
+      for (unsigned int k = 0; k < n_results; ++k)
+        results[std::size_t(p) * n_results + k] =
+          r[std::size_t(outputs[k]) * n_points + p];
+  }
+
+  double *
+  ExpressionTape::execute(const double *     variables,
+                          const unsigned int n_variables,
+                          const unsigned int n_points,
+                          const Pass         pass,
+                          const double *     spatial) const
+  {
     // one register per instruction and point; per thread, as deal.II may
     // evaluate functions from several threads
     thread_local std::vector<double> registers;
     registers.resize(code.size() * std::size_t(n_points));
-    double *const r = registers.data();
-    for (unsigned int i = 0; i < code.size(); ++i)
+    double *const                    r = registers.data();
+    const std::vector<unsigned int> &instructions =
+      pass == Pass::all       ? all_instructions :
+      pass == Pass::time_free ? time_free_instructions :
+                                given_spatial_instructions;
+    for (const unsigned int i : instructions)
       {
         const Instruction &c   = code[i];
         double *const      out = r + std::size_t(i) * n_points;
-        const double *const a  = r + std::size_t(c.a) * n_points;
-        const double *const b  = r + std::size_t(c.b) * n_points;
-        const unsigned int  n  = c.uniform ? 1 : n_points;
+        if (pass == Pass::given_spatial && c.spatial)
+          {
+            std::copy_n(spatial + std::size_t(c.cached) * n_points, n_points,
+                        out);
+            continue;
+          }
+        const double *const a = r + std::size_t(c.a) * n_points;
+        const double *const b = r + std::size_t(c.b) * n_points;
+        const unsigned int  n = c.uniform ? 1 : n_points;
         switch (c.op)
           {
             case Op::constant:
@@ -197,10 +290,6 @@ namespace hemicontact
         if (c.uniform)
           std::fill(out + 1, out + n_points, out[0]);
       }
-    const unsigned int n_results = outputs.size();
-    for (unsigned int p = 0; p < n_points; ++p)
-      for (unsigned int k = 0; k < n_results; ++k)
-        results[std::size_t(p) * n_results + k] =
-          r[std::size_t(outputs[k]) * n_points + p];
+    return r;
   }
 } // namespace hemicontact

@@ -107,12 +107,13 @@ namespace hemicontact
   namespace
   {
     /** @p tape at every point of @p points at time @p t: n_outputs()
-     *  results per point. */
+     *  results per point (through @p cache unless it is null). */
     template <int dim>
     std::vector<double>
     evaluate_tape(const ExpressionTape &         tape,
                   const std::vector<Point<dim>> &points,
-                  const double                   t)
+                  const double                   t,
+                  SpatialCache *                 cache = nullptr)
     {
       std::vector<double> at(points.size() * (dim + 1));
       for (unsigned int p = 0; p < points.size(); ++p)
@@ -122,7 +123,10 @@ namespace hemicontact
           at[p * (dim + 1) + dim] = t;
         }
       std::vector<double> r(points.size() * tape.n_outputs());
-      tape.evaluate(at.data(), dim + 1, points.size(), r.data());
+      if (cache)
+        cache->evaluate(at.data(), dim + 1, points.size(), r.data());
+      else
+        tape.evaluate(at.data(), dim + 1, points.size(), r.data());
       return r;
     }
 
@@ -184,9 +188,10 @@ namespace hemicontact
   std::vector<typename ManufacturedSolution<dim>::Values>
   ManufacturedSolution<dim>::evaluate_fields(
     const std::vector<Point<dim>> &points,
-    const double                   t) const
+    const double                   t,
+    SpatialCache *                 cache) const
   {
-    const std::vector<double> r = evaluate_tape(*fields_tape, points, t);
+    const std::vector<double> r = evaluate_tape(*fields_tape, points, t, cache);
     std::vector<Values>       values(points.size());
     for (unsigned int p = 0; p < points.size(); ++p)
       unpack_fields<dim>(r.data() + p * fields_tape->n_outputs(), values[p]);
@@ -211,9 +216,10 @@ namespace hemicontact
   template <int dim>
   std::vector<Tensor<1, dim>>
   ManufacturedSolution<dim>::body_force(const std::vector<Point<dim>> &points,
-                                        const double t) const
+                                        const double  t,
+                                        SpatialCache *cache) const
   {
-    const std::vector<double>   r = evaluate_tape(*force_tape, points, t);
+    const std::vector<double> r = evaluate_tape(*force_tape, points, t, cache);
     std::vector<Tensor<1, dim>> forces(points.size());
     for (unsigned int p = 0; p < points.size(); ++p)
       {
@@ -222,6 +228,20 @@ namespace hemicontact
         forces[p] = material.density() * v.w_dot - v.div_sigma;
       }
     return forces;
+  }
+
+  template <int dim>
+  std::unique_ptr<SpatialCache>
+  ManufacturedSolution<dim>::make_fields_cache() const
+  {
+    return std::make_unique<SpatialCache>(*fields_tape);
+  }
+
+  template <int dim>
+  std::unique_ptr<SpatialCache>
+  ManufacturedSolution<dim>::make_force_cache() const
+  {
+    return std::make_unique<SpatialCache>(*force_tape);
   }
 
   template <int dim>
@@ -296,6 +316,7 @@ namespace hemicontact
         : Function<dim>(dim)
         , m(m)
         , which(which)
+        , cache(which == 0 ? m.make_force_cache() : nullptr)
       {}
       void
       vector_value(const Point<dim> &p, Vector<double> &values) const override
@@ -308,11 +329,14 @@ namespace hemicontact
       vector_value_list(const std::vector<Point<dim>> &points,
                         std::vector<Vector<double>> &  values) const override
       {
-        // one batch: what depends only on t is computed once
+        // one batch: what depends only on t is computed once; f0 is
+        // assembled at every step on the same cells: what depends only on
+        // x is remembered
         const double t = this->get_time();
         if (which == 0)
           {
-            const std::vector<Tensor<1, dim>> f = m.body_force(points, t);
+            const std::vector<Tensor<1, dim>> f =
+              m.body_force(points, t, cache.get());
             for (unsigned int p = 0; p < points.size(); ++p)
               for (int c = 0; c < dim; ++c)
                 values[p](c) = f[p][c];
@@ -332,8 +356,9 @@ namespace hemicontact
       }
 
     private:
-      const ManufacturedSolution<dim> &m;
-      const int                        which;
+      const ManufacturedSolution<dim> &    m;
+      const int                            which;
+      const std::unique_ptr<SpatialCache> cache;
     };
 
     data.body_force           = std::make_unique<Field>(*this, 0);

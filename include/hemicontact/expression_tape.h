@@ -48,6 +48,40 @@ namespace hemicontact
              const unsigned int n_points,
              double *           results) const;
 
+    /**
+     * The values, at each of @p n_points points, that depend on no uniform
+     * variable and that evaluate_cached() reads: n_cached() per point,
+     * stored as spatial[k n_points + p]. They are the same at every time.
+     */
+    void
+    evaluate_spatial(const double *     variables,
+                     const unsigned int n_variables,
+                     const unsigned int n_points,
+                     double *           spatial) const;
+
+    /**
+     * evaluate() at points whose evaluate_spatial() values are @p spatial:
+     * only what depends on the uniform variables is computed. The results
+     * are the same bits as evaluate()'s.
+     */
+    void
+    evaluate_cached(const double *     variables,
+                    const unsigned int n_variables,
+                    const unsigned int n_points,
+                    const double *     spatial,
+                    double *           results) const;
+
+    /** The number of values per point evaluate_spatial() returns. */
+    unsigned int
+    n_cached() const
+    {
+      return n_cached_values;
+    }
+
+    /** Whether variable @p v is uniform (the same at all points). */
+    bool
+    is_uniform_variable(const unsigned int v) const;
+
     /** The number of expressions (results per point). */
     unsigned int
     n_outputs() const
@@ -86,7 +120,32 @@ namespace hemicontact
       unsigned int n_operands = 0;
       /** Depends only on constants and uniform variables. */
       bool uniform = false;
+      /** Depends on a uniform variable. */
+      bool timed = false;
+      /** Depends on a non-uniform variable and on no uniform one. */
+      bool spatial = false;
+      /** Its place among the evaluate_spatial() values, or -1. */
+      int cached = -1;
     };
+
+    /** Which instructions execute() runs. */
+    enum class Pass
+    {
+      all,          ///< every instruction
+      time_free,    ///< constants and spatial ones (evaluate_spatial())
+      given_spatial ///< all but spatial ones, cached ones copied
+    };
+
+    /** Run the instructions of @p pass at @p n_points points. */
+    double *
+    execute(const double *variables, const unsigned int n_variables,
+            const unsigned int n_points, const Pass pass,
+            const double *spatial) const;
+
+    /** The results from the registers @p r of execute(). */
+    void
+    gather(const double *r, const unsigned int n_points,
+           double *results) const;
 
     /** The instruction computing @p node, appended unless it exists. */
     unsigned int
@@ -98,6 +157,10 @@ namespace hemicontact
     std::vector<Instruction>  code;
     std::vector<unsigned int> outputs;
     std::vector<unsigned int> uniform_variables;
+    unsigned int              n_cached_values = 0;
+    /** The instructions each Pass runs, in order. */
+    std::vector<unsigned int> all_instructions, time_free_instructions,
+      given_spatial_instructions;
     /** While compiling: the instruction of each (op, function, a, b, n,
      *  value bits) appended so far. */
     using Key = std::tuple<int, int, unsigned int, unsigned int, unsigned int,

@@ -13,6 +13,7 @@
 #include <hemicontact/normal_law.h>
 #include <hemicontact/parameters.h>
 #include <hemicontact/problem_data.h>
+#include <hemicontact/spatial_cache.h>
 
 #include <memory>
 #include <vector>
@@ -60,10 +61,18 @@ namespace hemicontact
     std::vector<Values>
     evaluate(const std::vector<Point<dim>> &points, const double t) const;
 
-    /** evaluate_fields() at all @p points in one batch. */
+    /**
+     * evaluate_fields() at all @p points in one batch; a loop that visits
+     * the same batches at every step passes a @p cache of its own
+     * (make_fields_cache()).
+     */
     std::vector<Values>
-    evaluate_fields(const std::vector<Point<dim>> &points,
-                    const double                   t) const;
+    evaluate_fields(const std::vector<Point<dim>> &points, const double t,
+                    SpatialCache *cache = nullptr) const;
+
+    /** A cache for evaluate_fields() (SpatialCache). */
+    std::unique_ptr<SpatialCache>
+    make_fields_cache() const;
 
     /** sigma = A eps(w) + B eps(u). */
     SymmetricTensor<2, dim>
@@ -73,9 +82,15 @@ namespace hemicontact
     Tensor<1, dim>
     body_force(const Point<dim> &p, const double t) const;
 
-    /** f0 at all @p points in one batch. */
+    /** f0 at all @p points in one batch, with an optional @p cache
+     *  (make_force_cache()). */
     std::vector<Tensor<1, dim>>
-    body_force(const std::vector<Point<dim>> &points, const double t) const;
+    body_force(const std::vector<Point<dim>> &points, const double t,
+               SpatialCache *cache = nullptr) const;
+
+    /** A cache for body_force() (SpatialCache). */
+    std::unique_ptr<SpatialCache>
+    make_force_cache() const;
 
     /** f2 = sigma nu. */
     Tensor<1, dim>

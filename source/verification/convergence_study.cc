@@ -28,13 +28,15 @@ namespace hemicontact
       double w_L2 = 0, w_V = 0, w_H1 = 0, u_V = 0, u_H1 = 0;
     };
 
-    /** @p relevant: the locally relevant dofs of the problem's mesh. */
+    /** @p relevant: the locally relevant dofs of the problem's mesh;
+     *  @p cache: the exact fields' spatial part at its quadrature points. */
     template <int dim>
     StepErrors
     step_errors(const ContactProblem<dim> &          problem,
                 const ManufacturedSolution<dim> &    exact,
                 const double                         t,
                 const IndexSet &                     relevant,
+                SpatialCache &                       cache,
                 MPI_Comm                             comm)
     {
       const DoFHandler<dim> &dof_handler = problem.get_dof_handler();
@@ -65,7 +67,8 @@ namespace hemicontact
             fe_values[v].get_function_gradients(w, grad_w_h);
             fe_values[v].get_function_gradients(u, grad_u_h);
             const auto exact_values =
-              exact.evaluate_fields(fe_values.get_quadrature_points(), t);
+              exact.evaluate_fields(fe_values.get_quadrature_points(), t,
+                                    &cache);
             for (const unsigned int q : fe_values.quadrature_point_indices())
               {
                 const auto &ex = exact_values[q];
@@ -164,12 +167,14 @@ namespace hemicontact
       IndexSet relevant;
       DoFTools::extract_locally_relevant_dofs(problem.get_dof_handler(),
                                               relevant);
-      LevelSums sums;
-      Timer     steps_wall;
+      const std::unique_ptr<SpatialCache> cache = exact.make_fields_cache();
+      LevelSums                           sums;
+      Timer                               steps_wall;
       while (!problem.finished())
         {
           StepStatistics s = problem.advance();
-          sums.add(s, step_errors(problem, exact, s.time, relevant, comm),
+          sums.add(s,
+                   step_errors(problem, exact, s.time, relevant, *cache, comm),
                    problem.get_time_step());
           if (problem.adapt_mesh_if_due(s))
             DoFTools::extract_locally_relevant_dofs(problem.get_dof_handler(),
