@@ -27,7 +27,7 @@ namespace hemicontact
   {
   public:
     explicit SpatialCache(const ExpressionTape &tape,
-                          std::size_t max_bytes = std::size_t(256) << 20);
+                          std::size_t max_bytes = std::size_t(64) << 20);
 
     /** ExpressionTape::evaluate() of the batch, using the cache. */
     void
