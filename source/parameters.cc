@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -222,6 +223,11 @@ namespace hemicontact
     prm.declare_entry("time step", "0.01", Patterns::Double(),
                       "Time step k > 0; it must divide the end time (the run "
                       "takes T/k uniform steps).");
+    prm.declare_entry(
+      "allow unstable time step", "false", Patterns::Bool(),
+      "The left-point rule is stable only for k below a limit set by the "
+      "viscosity, the elasticity and the mesh; a larger time step is "
+      "refused at start-up. 'true' runs it anyway, with a warning.");
     prm.leave_subsection();
   }
 
@@ -231,6 +237,7 @@ namespace hemicontact
     prm.enter_subsection("time");
     end_time  = prm.get_double("end time");
     time_step = prm.get_double("time step");
+    allow_unstable_time_step = prm.get_bool("allow unstable time step");
     prm.leave_subsection();
     require(end_time > 0, "time: 'end time' = " + std::to_string(end_time) +
                             " must be positive.");
@@ -251,6 +258,17 @@ namespace hemicontact
                 << " steps); the scheme takes uniform steps, so choose a "
                    "time step that divides the end time (e.g. "
                 << end_time / std::max(1., std::round(n_steps)) << ").";
+        throw InputError(message.str());
+      }
+    // the step counter is an unsigned int
+    if (std::round(n_steps) > std::numeric_limits<unsigned int>::max())
+      {
+        std::ostringstream message;
+        message << std::setprecision(12) << "time: 'end time' = " << end_time
+                << " takes " << n_steps << " steps of 'time step' = "
+                << time_step << ", more than the program counts (at most "
+                << std::numeric_limits<unsigned int>::max()
+                << "); choose a larger time step or a shorter end time.";
         throw InputError(message.str());
       }
   }

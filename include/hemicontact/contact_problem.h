@@ -260,6 +260,22 @@ namespace hemicontact
     TrilinosWrappers::MPI::Vector
     without_constrained(const TrilinosWrappers::MPI::Vector &v) const;
 
+    /** @name stability.cc */
+    /**
+     * Refuse (InputError) a time step above the stability limit of the
+     * left-point rule on the current mesh, unless 'time/allow unstable time
+     * step' is set (then a warning).
+     */
+    void
+    check_time_step_stability();
+    /**
+     * The largest stable time step on the current mesh, estimated from the
+     * largest eigenvalue of B against A + 2M/k, or infinity if @p k is
+     * stable.
+     */
+    double
+    largest_stable_time_step(const double k);
+
     /** @name state_projection.cc */
     /**
      * For 'adaptivity/state transfer = projection': register with the

@@ -52,17 +52,32 @@ namespace hemicontact
              numerical_dissipation - external_work;
     }
 
-    /** The defect relative to the largest term of the identity. */
+    /**
+     * The energy put into the body: |E_0| + |sum k <f_n, w_n>| + |transfer
+     * changes|. A stable run holds at most about this much (the
+     * dissipations of the laws and the viscosity are non-negative), so it is
+     * the scale the defect is measured against: an energy that explodes
+     * cannot hide its own round-off in it.
+     */
+    double
+    supplied_energy() const
+    {
+      return std::abs(initial_energy) + std::abs(external_work) +
+             std::abs(transfer_change);
+    }
+
+    /** The defect relative to the energy supplied. */
     double
     relative_defect() const
     {
-      const double scale =
-        std::max({std::abs(total_energy()), std::abs(initial_energy),
-                  viscous_dissipation, friction_dissipation,
-                  std::abs(damping_dissipation), std::abs(external_work),
-                  std::abs(numerical_dissipation),
-                  std::abs(transfer_change), 1e-300});
-      return std::abs(defect()) / scale;
+      return std::abs(defect()) / std::max(supplied_energy(), 1e-300);
+    }
+
+    /** E_n relative to the energy supplied (about 1 or below when stable). */
+    double
+    growth() const
+    {
+      return total_energy() / std::max(supplied_energy(), 1e-300);
     }
   };
 } // namespace hemicontact

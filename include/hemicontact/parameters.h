@@ -65,6 +65,8 @@ namespace hemicontact
   {
     double end_time;
     double time_step;
+    /** Run a time step above the left-point rule's stability limit. */
+    bool allow_unstable_time_step;
 
     static void declare(ParameterHandler &prm);
     void        parse(ParameterHandler &prm);

@@ -176,6 +176,8 @@ namespace hemicontact
     energy.transfer_change +=
       stats.kinetic_after_adaptation + stats.elastic_after_adaptation -
       stats.kinetic_before_adaptation - stats.elastic_before_adaptation;
+    // a finer mesh may have a smaller stability limit
+    check_time_step_stability();
   }
 
   template Vector<float> ContactProblem<2>::refinement_indicators() const;

@@ -498,6 +498,7 @@ namespace hemicontact
     energy      = from_vector(state.energy);
     pvd_records = state.pvd_records;
     update_friction_bounds(get_time());
+    check_time_step_stability();
     check_convexity();
   }
 

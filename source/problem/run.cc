@@ -15,6 +15,13 @@ namespace hemicontact
 {
   namespace
   {
+    /**
+     * A run whose stored energy exceeds this multiple of the energy put in
+     * (initial energy, work of the loads) is unstable: the laws and the
+     * viscosity only dissipate.
+     */
+    constexpr double unstable_energy_growth = 100;
+
     /** Set by SIGTERM; the time loop checks it after every step. */
     volatile std::sig_atomic_t termination_requested = 0;
 
@@ -224,12 +231,31 @@ namespace hemicontact
 
     RunTotals totals;
     bool      restarted = false; // by 'adaptivity/pre-refinement steps'
+    bool      growth_reported = false;
     while (!finished())
       {
         StepStatistics stats;
         try
           {
             stats = advance();
+            if (energy.growth() > unstable_energy_growth && !growth_reported)
+              {
+                std::ostringstream message;
+                message << std::setprecision(4) << "the stored energy E_n = "
+                        << energy.total_energy() << " at t = " << get_time()
+                        << " is " << energy.growth()
+                        << " times the energy put into the body (initial "
+                           "energy and work of the loads, "
+                        << energy.supplied_energy()
+                        << "): the time scheme is unstable (doc/theory.md, "
+                           "section 8); reduce the time step.";
+                if (!parameters.time.allow_unstable_time_step)
+                  throw SolverFailure(message.str());
+                growth_reported = true;
+                if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+                  std::cerr << "hemicontact: warning: " << message.str()
+                            << std::endl;
+              }
           }
         catch (const SolverFailure &failure)
           {

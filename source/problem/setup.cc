@@ -44,7 +44,8 @@ namespace hemicontact
     AssertThrow(dim == parameters.dimension,
                 ExcMessage("ContactProblem<dim> built for another dimension."));
     n_steps = std::max<unsigned int>(
-      1, std::lround(parameters.time.end_time / parameters.time.time_step));
+      1, static_cast<unsigned int>(
+           std::llround(parameters.time.end_time / parameters.time.time_step)));
     time_step = parameters.time.end_time / n_steps;
   }
 
@@ -56,6 +57,7 @@ namespace hemicontact
     make_mesh();
     setup_on_current_mesh();
     initialize_state();
+    check_time_step_stability();
     check_convexity();
   }
 

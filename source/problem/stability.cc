@@ -1,0 +1,131 @@
+#include <deal.II/base/mpi.h>
+
+#include <hemicontact/contact_problem.h>
+#include <hemicontact/generalized_eigenvalue.h>
+#include <hemicontact/input_error.h>
+#include <hemicontact/time_step_stability.h>
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+namespace hemicontact
+{
+  namespace
+  {
+    /** Like the convexity estimate: the eigenvalue to about 1e-8. */
+    constexpr double       stability_residual_tolerance = 1e-4;
+    constexpr unsigned int stability_max_iterations     = 300;
+    /** Rounds of (eigenvector at k) -> (stable k of that vector). */
+    constexpr unsigned int limit_refinements = 4;
+  } // namespace
+
+  template <int dim>
+  double
+  ContactProblem<dim>::largest_stable_time_step(const double k)
+  {
+    // lambda_max(B; A + 2M/k) by LOBPCG, preconditioned by the AMG of
+    // K0 = M/k + A (spectrally within a factor 2 of A + 2M/k), from a
+    // fixed pseudo-random start (the same on any number of ranks)
+    const auto apply_b = [&](const TrilinosWrappers::MPI::Vector &in,
+                             TrilinosWrappers::MPI::Vector &      out) {
+      elastic_matrix.vmult(out, in);
+      base_constraints.set_zero(out);
+    };
+    double     current_k = k;
+    const auto apply_s   = [&](const TrilinosWrappers::MPI::Vector &in,
+                             TrilinosWrappers::MPI::Vector &      out) {
+      TrilinosWrappers::MPI::Vector m_in(out);
+      mass_matrix.vmult(m_in, in);
+      step_matrix.vmult(out, in);
+      out.add(1. / current_k, m_in);
+      base_constraints.set_zero(out);
+    };
+    const TrilinosWrappers::PreconditionAMG &amg =
+      preconditioner.step_amg(step_matrix);
+    const auto precondition = [&](const TrilinosWrappers::MPI::Vector &in,
+                                  TrilinosWrappers::MPI::Vector &      out) {
+      amg.vmult(out, in);
+      base_constraints.set_zero(out);
+    };
+    TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);
+    for (const auto i : locally_owned_dofs)
+      x[i] = std::sin(12.9898 * static_cast<double>(i) + 78.233);
+    x.compress(VectorOperation::insert);
+    base_constraints.set_zero(x);
+
+    // k is stable iff lambda_max(B; A + 2M/k) <= 2/k; the Ritz vector of a
+    // k that fails gives a smaller stable k (stable_time_step_of_mode), and
+    // the limit is refined from there
+    double       limit = std::numeric_limits<double>::infinity();
+    TrilinosWrappers::MPI::Vector tmp(x);
+    for (unsigned int round = 0; round < limit_refinements; ++round)
+      {
+        const EigenvalueEstimate estimate = largest_generalized_eigenvalue(
+          apply_b, apply_s, precondition, x, stability_residual_tolerance,
+          stability_max_iterations);
+        if (!(estimate.value > 0) || estimate.value * current_k <= 2)
+          return round == 0 ? std::numeric_limits<double>::infinity() : limit;
+        mass_matrix.vmult(tmp, x);
+        const double m = x * tmp;
+        step_matrix.vmult(tmp, x);
+        const double a = x * tmp - m / current_k;
+        elastic_matrix.vmult(tmp, x);
+        const double b     = x * tmp;
+        const double k_x   = stable_time_step_of_mode(m, a, b);
+        const bool   close = k_x >= 0.99 * limit;
+        limit              = std::min(limit, k_x);
+        if (close)
+          break;
+        current_k = limit;
+      }
+    return limit;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::check_time_step_stability()
+  {
+    TimerOutput::Scope t(timer, "stability check");
+    const double       material_limit = mesh_independent_stable_time_step(
+      dim, material.mu_viscous(), material.lambda_viscous(),
+      material.mu_elastic(), material.lambda_elastic());
+    if (time_step <= material_limit)
+      return;
+    const double limit = largest_stable_time_step(time_step);
+    if (time_step <= limit)
+      return;
+
+    std::ostringstream message;
+    message << std::setprecision(4)
+            << "the time step k = " << time_step
+            << " is above the stability limit of the left-point rule on this "
+               "mesh, k <= "
+            << limit
+            << " (estimated: the largest generalized eigenvalue of the "
+               "elastic operator B against A + 2M/k must not exceed 2/k; "
+               "doc/theory.md, section 8): the elastic term is explicit, "
+               "and the energy of the run would grow without bound. Choose "
+               "a time step that divides the end time and is at most "
+            << limit << " (e.g. " << parameters.time.end_time
+            << " / " << std::ceil(parameters.time.end_time / limit)
+            << "), a larger viscosity or a softer material; below k = "
+            << material_limit
+            << " the rule is stable on every mesh. 'time/allow unstable time "
+               "step = true' runs it anyway.";
+    if (!parameters.time.allow_unstable_time_step)
+      throw InputError("time: " + message.str());
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      std::cerr << "hemicontact: warning: " << message.str() << std::endl;
+  }
+
+#define HEMICONTACT_INSTANTIATE(dim)                                           \
+  template double ContactProblem<dim>::largest_stable_time_step(const double); \
+  template void   ContactProblem<dim>::check_time_step_stability();
+
+  HEMICONTACT_INSTANTIATE(2)
+  HEMICONTACT_INSTANTIATE(3)
+#undef HEMICONTACT_INSTANTIATE
+} // namespace hemicontact
