@@ -255,8 +255,21 @@ namespace hemicontact
     /** Kinetic rho/2|w_n|^2 and elastic 1/2 a_B(u_{n+1},u_{n+1}) energy now. */
     std::pair<double, double>
     stored_energy() const;
+    /**
+     * Estimate the convexity bound of the step energy for the current
+     * friction bounds and warn (or stop, with 'strict convexity check') if
+     * a step may not be convex; @p context starts the message of a check
+     * during the run, which warns only when the steps leave the convex
+     * regime.
+     */
     void
-    check_convexity();
+    check_convexity(const std::string &context = "");
+    /**
+     * check_convexity() again, for time @p t, if a node's alpha_tau exceeds
+     * the value last checked or the contact nodes changed (a new mesh).
+     */
+    void
+    recheck_convexity_if_bounds_grew(const double t);
     TrilinosWrappers::MPI::Vector
     without_constrained(const TrilinosWrappers::MPI::Vector &v) const;
 
@@ -433,6 +446,10 @@ namespace hemicontact
     bool          convexity_with_friction = false;
     /** The largest alpha_tau over the contact nodes at the last check. */
     double        largest_alpha_tau = 0;
+    /** alpha_tau of each contact node that the last convexity check covers. */
+    std::vector<double> checked_alpha_tau;
+    /** Whether the last convexity check found the steps strongly convex. */
+    bool steps_convex = true;
 
     double       time_step   = 0;
     /** Length of the last converged step (0: none yet). */

@@ -24,6 +24,13 @@ namespace hemicontact
      */
     constexpr double convexity_residual_tolerance = 1e-4;
     constexpr unsigned int convexity_max_iterations = 300;
+    /**
+     * A check that finds the step convex with room to spare covers alpha_tau
+     * up to this factor above the values met (N grows at most by the same
+     * factor), so that a bound growing step by step is checked again only
+     * every 10%.
+     */
+    constexpr double convexity_recheck_headroom = 1.1;
   } // namespace
 
   template <int dim>
@@ -102,20 +109,26 @@ namespace hemicontact
 
   template <int dim>
   void
-  ContactProblem<dim>::check_convexity()
+  ContactProblem<dim>::check_convexity(const std::string &context)
   {
     // J_n is strongly convex if K0 = rho/k M + A dominates the nodal form
     // N = sum_i m_i (alpha_nu nu nu + alpha_tau,i (I - nu nu)) of the laws'
     // nonconvexity (doc/theory.md, section 7). Without friction remainder
     // (alpha_tau = 0) the bound is stated for alpha_nu: the smallest
     // eigenvalue of K0 against sum m_i nu nu, to be compared with alpha_nu.
+    // N grows with every alpha_tau,i, so the check covers every later step
+    // whose alpha_tau,i stay below checked_alpha_tau (the values checked,
+    // times the room the bound leaves, at most the headroom).
     const double alpha = law->relaxed_monotonicity_constant();
+    checked_alpha_tau.assign(contact_nodes.size(), 0.);
     largest_alpha_tau = 0;
-    for (const ContactNode<dim> &node : contact_nodes)
-      if (node.locally_owned)
-        largest_alpha_tau =
-          std::max(largest_alpha_tau,
-                   friction->relaxed_monotonicity_constant(node.friction_bound));
+    for (std::size_t i = 0; i < contact_nodes.size(); ++i)
+      {
+        checked_alpha_tau[i] =
+          friction->relaxed_monotonicity_constant(contact_nodes[i].friction_bound);
+        if (contact_nodes[i].locally_owned)
+          largest_alpha_tau = std::max(largest_alpha_tau, checked_alpha_tau[i]);
+      }
     largest_alpha_tau =
       Utilities::MPI::max(largest_alpha_tau, mpi_communicator);
     convexity_with_friction = largest_alpha_tau > 0;
@@ -130,8 +143,8 @@ namespace hemicontact
     const auto   apply_n  = [&](const TrilinosWrappers::MPI::Vector &in,
                              TrilinosWrappers::MPI::Vector &      out) {
       out = 0;
-      for (const ContactNode<dim> &node : contact_nodes)
-        if (node.locally_owned)
+      for (std::size_t i = 0; i < contact_nodes.size(); ++i)
+        if (const ContactNode<dim> &node = contact_nodes[i]; node.locally_owned)
           {
             Tensor<1, dim> v;
             for (unsigned int c = 0; c < dim; ++c)
@@ -139,8 +152,7 @@ namespace hemicontact
             const double vn = v * node.normal;
             Tensor<1, dim> nv = alpha_nu * vn * node.normal;
             if (convexity_with_friction)
-              nv += friction->relaxed_monotonicity_constant(node.friction_bound) *
-                    (v - vn * node.normal);
+              nv += checked_alpha_tau[i] * (v - vn * node.normal);
             for (unsigned int c = 0; c < dim; ++c)
               out[node.dofs[c]] = node.mass * nv[c];
           }
@@ -196,7 +208,13 @@ namespace hemicontact
 
     const bool convex =
       convexity_with_friction ? convexity_bound > 1 : alpha < convexity_bound;
-    if (!convex)
+    if (convexity_with_friction && convex)
+      for (double &checked : checked_alpha_tau)
+        checked *= std::min(convexity_bound, convexity_recheck_headroom);
+    // during the run, a step that stays non-convex is not named again
+    const bool report = context.empty() || steps_convex;
+    steps_convex      = convex;
+    if (!convex && report)
       {
         std::ostringstream message;
         if (convexity_with_friction)
@@ -228,10 +246,34 @@ namespace hemicontact
                      "step k = "
                   << time_step << " or the law's nonmonotonicity.";
         if (parameters.nonlinear_solver.strict_convexity_check)
-          throw InputError("nonlinear solver: " + message.str());
+          {
+            if (context.empty())
+              throw InputError("nonlinear solver: " + message.str());
+            throw SolverFailure(context + message.str());
+          }
         if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-          std::cerr << "hemicontact: warning: " << message.str() << std::endl;
+          std::cerr << "hemicontact: warning: " << context << message.str()
+                    << std::endl;
       }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::recheck_convexity_if_bounds_grew(const double t)
+  {
+    // a bound from u_nu or t may raise alpha_tau above what was checked
+    int grew = checked_alpha_tau.size() != contact_nodes.size();
+    for (std::size_t i = 0; i < contact_nodes.size() && !grew; ++i)
+      grew = contact_nodes[i].locally_owned &&
+             friction->relaxed_monotonicity_constant(
+               contact_nodes[i].friction_bound) > checked_alpha_tau[i];
+    if (Utilities::MPI::max(grew, mpi_communicator) == 0)
+      return;
+    std::ostringstream context;
+    context << "at t = " << t
+            << " (the friction bound or the mesh changed since the last "
+               "convexity check) ";
+    check_convexity(context.str());
   }
 
 #define HEMICONTACT_INSTANTIATE(dim)                                           \
@@ -241,7 +283,8 @@ namespace hemicontact
   template void ContactProblem<dim>::update_energy_balance(const bool);       \
   template std::pair<double, double> ContactProblem<dim>::stored_energy()     \
     const;       \
-  template void ContactProblem<dim>::check_convexity();
+  template void ContactProblem<dim>::check_convexity(const std::string &);  \
+  template void ContactProblem<dim>::recheck_convexity_if_bounds_grew(const double);
 
   HEMICONTACT_INSTANTIATE(2)
   HEMICONTACT_INSTANTIATE(3)

@@ -88,6 +88,7 @@ namespace hemicontact
         base_constraints.distribute(velocity);
       }
     update_friction_bounds(start + k);
+    recheck_convexity_if_bounds_grew(start + k);
     assemble_load(start + k);
     assemble_step_rhs();
     try

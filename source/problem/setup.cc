@@ -186,6 +186,7 @@ namespace hemicontact
     diagonal_g = diagonal;
 
     contact_nodes.clear();
+    checked_alpha_tau.clear(); // a convexity check covers its own nodes
     std::map<types::global_dof_index, unsigned int> seen;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial())

@@ -8,6 +8,7 @@
 #include <hemicontact/contact_problem.h>
 #include <hemicontact/convergence_study.h>
 #include <hemicontact/input_error.h>
+#include <hemicontact/manufactured_smoothness.h>
 #include <hemicontact/manufactured_solution.h>
 
 #include <algorithm>
@@ -156,7 +157,8 @@ namespace hemicontact
      */
     template <int dim>
     LevelResult
-    run_level(const Parameters &p, ParameterHandler &prm, MPI_Comm comm)
+    run_level(const Parameters &p, ParameterHandler &prm, MPI_Comm comm,
+              const bool check_smoothness)
     {
       Timer                            wall;
       const ContactLaws               laws = create_contact_laws(prm);
@@ -164,6 +166,23 @@ namespace hemicontact
       ContactProblem<dim> problem(p, create_contact_laws(prm),
                                   exact.make_problem_data(), comm);
       problem.setup();
+      if (check_smoothness)
+        {
+          const std::string jump = find_manufactured_jump(
+            exact, problem.get_dof_handler().get_triangulation(),
+            p.time.end_time, comm);
+          if (!jump.empty() && Utilities::MPI::this_mpi_process(comm) == 0)
+            std::cerr
+              << "hemicontact: warning: the manufactured solution is not "
+                 "smooth: "
+              << jump
+              << ". Its body force and tractions come from symbolic "
+                 "derivatives, which miss the singular part of a jump, and "
+                 "the error orders assume u, w and their gradients "
+                 "continuous in x and t (doc/verification.md); expect "
+                 "orders that do not reach 1."
+              << std::endl;
+        }
       IndexSet relevant;
       DoFTools::extract_locally_relevant_dofs(problem.get_dof_handler(),
                                               relevant);
@@ -338,7 +357,7 @@ namespace hemicontact
       {
         Parameters p      = study_parameters(parameters, level);
         p.output.terminal = "quiet";
-        results.push_back(run_level<dim>(p, prm, comm));
+        results.push_back(run_level<dim>(p, prm, comm, level == 0));
         add_table_row(table, level, results.back(), adaptive);
         if (root)
           write_csv_row(csv, level, results.back());

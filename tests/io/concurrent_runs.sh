@@ -20,13 +20,13 @@ grep -q "input error: output: another hemicontact run is writing into 'shared'" 
   { echo "FAIL: no clear refusal"; cat second.err; kill $first; exit 1; }
 wait $first
 rows=$(($(wc -l < shared/steps.csv) - 1))
-[ "$rows" -eq 120 ] || { echo "FAIL: the first run wrote $rows rows, not 120"; exit 1; }
+[ "$rows" -eq 150 ] || { echo "FAIL: the first run wrote $rows rows, not 150"; exit 1; }
 echo "refused: $(cat second.err)"
 # a killed run leaves no lock behind
 rm shared/steps.csv
 "$exe" run.prm & pid=$!
 while [ ! -s shared/steps.csv ]; do sleep 0.05; done
 kill -KILL $pid; wait $pid 2> /dev/null || true
-{ cat run.prm; printf 'subsection time\n  set end time = 0.5\nend\n'; } > short.prm
+{ cat run.prm; printf 'subsection time\n  set end time = 0.48\nend\n'; } > short.prm
 "$exe" short.prm
 echo "after the first run and after a killed run the directory is free again"

@@ -20,8 +20,8 @@ run() { # NAME RANKS FORMAT BASE END_TIME EXTRA...
   mpirun -np "$ranks" "$exe" "$name.prm" > "$name.log" 2>&1 ||
     { echo "FAIL: run $name"; cat "$name.log"; exit 1; }
 }
-run vtu 2 vtu block_2d_short 0.15
-run hdf5 2 hdf5 block_2d_short 0.15
+run vtu 2 vtu block_2d_short 0.16
+run hdf5 2 hdf5 block_2d_short 0.16
 for format in vtu hdf5; do
   run ${format}_simplex 1 $format block_3d_short 0.06 \
     'subsection geometry' '  set cell type = simplex' '  set global refinements = 1' 'end'
