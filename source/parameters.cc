@@ -54,12 +54,15 @@ namespace hemicontact
                       "Number of coarse cells in each direction.");
     prm.declare_entry("mesh file", "", Patterns::Anything(),
                       "Gmsh .msh file (relative to the working directory) for "
-                      "mesh = gmsh.");
+                      "mesh = gmsh. Its cells must all be of 'cell type', in "
+                      "2D its nodes in z = 0, without duplicated nodes or "
+                      "self-intersecting cells.");
     prm.declare_entry("global refinements", "3", Patterns::Integer(0, 20),
                       "Number of uniform refinements of the coarse mesh. For "
                       "a simplex rectangle/box the mesh is instead built "
                       "with 2^r times the subdivisions (same mesh size, "
-                      "better shapes than refined tetrahedra).");
+                      "better shapes than refined tetrahedra). Refused when "
+                      "the estimated memory exceeds the machine's.");
     prm.leave_subsection();
   }
 

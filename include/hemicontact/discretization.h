@@ -31,7 +31,9 @@ namespace hemicontact
     /**
      * Build the mesh: the coarse mesh refined globally (hypercubes: the
      * p4est forest; simplices: built whole on every rank, partitioned, and
-     * each rank keeps its part).
+     * each rank keeps its part). A Gmsh file is checked first
+     * (read_checked_gmsh()); 'global refinements' whose mesh would not fit
+     * into the machine's memory are refused (InputError).
      */
     void
     make_mesh(const GeometryParameters &geometry, const bool refine = true);
@@ -74,6 +76,16 @@ namespace hemicontact
     void
     build_mesh(Triangulation<dim> &mesh, const GeometryParameters &geometry,
                const bool refine) const;
+
+    /**
+     * Read the Gmsh file of @p geometry into @p mesh after checking it
+     * (InputError naming the file): a regular file, one cell type matching
+     * 'cell type', in 2D all nodes in z = 0, no duplicated nodes, no
+     * self-intersecting or inverted cells.
+     */
+    void
+    read_checked_gmsh(Triangulation<dim> &      mesh,
+                      const GeometryParameters &geometry) const;
 
     bool simplex;
   };
