@@ -22,7 +22,7 @@ namespace hemicontact
      */
     constexpr double unstable_energy_growth = 100;
 
-    /** Set by SIGTERM; the time loop checks it after every step. */
+    /** Set by SIGTERM or SIGINT; the time loop checks it after every step. */
     volatile std::sig_atomic_t termination_requested = 0;
 
     extern "C" void
@@ -174,8 +174,11 @@ namespace hemicontact
       setup();
     setup_probes(); // checks the points before the output is touched
     open_tables();
+    if (!checkpoints.resume)
+      start_checkpoint_run();
     termination_requested = 0;
     std::signal(SIGTERM, request_termination);
+    std::signal(SIGINT, request_termination);
 
     const unsigned int n_nodes = Utilities::MPI::sum(
       static_cast<unsigned int>(std::count_if(
