@@ -529,13 +529,9 @@ namespace hemicontact
         // a resume does not take them (its first checkpoint removes them)
         const fs::path  dir = fs::path(parameters.output.directory) / "checkpoint";
         std::error_code ec;
-        if (has_checkpoints() && fs::exists(dir, ec))
-          error = fs::is_directory(dir, ec) ?
-                    write_atomically((dir / run_file_name).string(),
-                                     run_id + "\n") :
-                    "'" + dir.string() +
-                      "' is not a directory: checkpoints are written into "
-                      "it; move it away.";
+        if (fs::is_directory(dir, ec))
+          error = write_atomically((dir / run_file_name).string(),
+                                   run_id + "\n");
       }
     throw_if_any(error, mpi_communicator);
   }
