@@ -39,8 +39,8 @@ namespace
          "                                  is read as JSON, FILE.xml as XML)\n"
          "  hemicontact --help              this text\n\n"
          "Exit codes: 0 success, 1 usage, 2 input error, 3 solver failure,\n"
-         "4 internal error, 5 interrupted (SIGTERM or 'checkpoint/stop after';\n"
-         "a checkpoint was written: continue with --resume), 6 I/O error\n"
+         "4 internal error, 5 interrupted (SIGTERM, SIGINT or 'checkpoint/stop\n"
+         "after'; a checkpoint was written: continue with --resume), 6 I/O error\n"
          "(output could not be written, e.g. no space left on device; what\n"
          "was written before stays valid).\n";
   }

@@ -208,6 +208,30 @@ namespace hemicontact
   }
 
   template <int dim>
+  ConstrainedAmgStatus
+  StepPreconditioner<dim>::constrained_amg_status() const
+  {
+    return constrained_amg ? ConstrainedAmgStatus::built :
+           constrained_amg_dropped ? ConstrainedAmgStatus::dropped :
+                                     ConstrainedAmgStatus::none;
+  }
+
+  template <int dim>
+  void
+  StepPreconditioner<dim>::restore(const ProjectedOperator<dim> &op,
+                                   const ConstrainedAmgStatus    status)
+  {
+    constrained_amg.reset();
+    penalised_step_matrix.clear();
+    constrained_amg_directions.clear();
+    constrained_amg_dropped = status == ConstrainedAmgStatus::dropped;
+    amg_in_use              = nullptr;
+    splits.clear();
+    if (status == ConstrainedAmgStatus::built)
+      build_constrained_amg(op);
+  }
+
+  template <int dim>
   void
   StepPreconditioner<dim>::prepare(const ProjectedOperator<dim> &op)
   {

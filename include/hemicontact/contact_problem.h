@@ -368,6 +368,13 @@ namespace hemicontact
     /** Whether this mesh type can be checkpointed (p4est). */
     bool
     has_checkpoints() const;
+    /**
+     * A run not resumed: a new run id and the mesh file's signature (for
+     * its checkpoints); OUTPUT/checkpoint, if it exists, then names this
+     * run, so that a resume takes no checkpoint of an earlier run.
+     */
+    void
+    start_checkpoint_run();
     /** Write mesh, fields and state to OUTPUT/checkpoint (aside, then renamed). */
     void
     write_checkpoint();
@@ -454,6 +461,10 @@ namespace hemicontact
     double       time_step   = 0;
     /** Length of the last converged step (0: none yet). */
     double       last_step_length = 0;
+    /** The run (a resumed run continues its run): checkpoints record it. */
+    std::string run_id;
+    /** file_signature() of the mesh file the run read ("" if none). */
+    std::string mesh_signature;
     unsigned int n_steps     = 0;
     unsigned int step_number = 0;
 

@@ -46,7 +46,7 @@ namespace hemicontact
   };
 
   /**
-   * The run stopped before its end time on request (SIGTERM, or
+   * The run stopped before its end time on request (SIGTERM or SIGINT, or
    * 'checkpoint/stop after'), after writing a checkpoint to resume from.
    * main() exits with code 5.
    */

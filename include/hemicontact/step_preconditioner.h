@@ -18,6 +18,15 @@ namespace hemicontact
 {
   using namespace dealii;
 
+  /** What StepPreconditioner::prepare() did with the constrained AMG on a
+   *  mesh so far (what it carries from one Newton solve to the next). */
+  enum class ConstrainedAmgStatus : unsigned int
+  {
+    none    = 0, ///< not built (yet)
+    built   = 1, ///< built, and in use
+    dropped = 2  ///< dropped: the AMG of K0 is used on this mesh
+  };
+
   /**
    * Every AMG hierarchy of a mesh (Trilinos ML, smoothed aggregation, the
    * rigid-body modes as near-null space) and the preconditioner of the
@@ -86,6 +95,29 @@ namespace hemicontact
     {
       return constrained_amg != nullptr;
     }
+
+    /** What prepare() did with the constrained AMG on this mesh so far. */
+    ConstrainedAmgStatus
+    constrained_amg_status() const;
+
+    /**
+     * Per node of the operators prepared on this mesh, the directions the
+     * constrained AMG treats as constrained (empty unless it is built).
+     */
+    const std::vector<Tensor<2, dim>> &
+    constrained_directions() const
+    {
+      return constrained_amg_directions;
+    }
+
+    /**
+     * Take the state @p status of another preconditioner on this mesh and
+     * step matrix (e.g. of the run a checkpoint saved), whose constrained
+     * AMG (if built) was built from the projectors of @p op: the next
+     * prepare() then does what it would have done there.
+     */
+    void
+    restore(const ProjectedOperator<dim> &op, const ConstrainedAmgStatus status);
 
     /** Wall seconds spent in AMG set-ups so far. */
     double

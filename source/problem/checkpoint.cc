@@ -5,6 +5,7 @@
 #include <hemicontact/contact_problem.h>
 #include <hemicontact/input_error.h>
 #include <hemicontact/output_file.h>
+#include <hemicontact/projected_operator.h>
 
 #include <boost/archive/text_iarchive.hpp>
 #include <boost/archive/text_oarchive.hpp>
@@ -17,7 +18,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <cctype>
+#include <limits>
 #include <map>
+#include <random>
 #include <sstream>
 
 namespace hemicontact
@@ -40,15 +44,103 @@ namespace hemicontact
       std::vector<std::string> file_signatures;
       /** The number of MPI ranks that wrote it. */
       unsigned int n_ranks = 0;
+      /** The length of the last converged step (the extrapolated guess). */
+      double last_step_length = 0;
+      /** The run that wrote it (a resumed run keeps its run's id). */
+      std::string run_id;
+      /** "name size crc32" of the mesh file the run read ("" if none). */
+      std::string mesh_signature;
+      /** The preconditioner's ConstrainedAmgStatus. */
+      unsigned int constrained_amg = 0;
 
       template <class Archive>
       void
       serialize(Archive &ar, const unsigned int)
       {
         ar &step_number &time_step &n_steps &energy &pvd_records
-          &problem_definition &file_signatures &n_ranks;
+          &problem_definition &file_signatures &n_ranks &last_step_length
+            &run_id &mesh_signature &constrained_amg;
       }
     };
+
+    /** The number of values of EnergyBalance in a checkpoint. */
+    constexpr std::size_t n_energy_values = 9;
+
+    /** The last line of a .state file: the CRC-32 of everything before it. */
+    const std::string state_checksum_label = "crc32 ";
+
+    /** CRC-32 of @p text. */
+    std::uint32_t
+    crc32_of(const std::string &text)
+    {
+      boost::crc_32_type crc;
+      crc.process_bytes(text.data(), text.size());
+      return crc.checksum();
+    }
+
+    /**
+     * @p state as a text archive followed by the line "crc32 N" of that
+     * text (so that a change of any entry is seen).
+     */
+    std::string
+    state_text(const CheckpointState &state)
+    {
+      std::ostringstream out;
+      {
+        boost::archive::text_oarchive archive(out);
+        archive << state;
+      }
+      out << "\n";
+      return out.str() + state_checksum_label +
+             std::to_string(crc32_of(out.str())) + "\n";
+    }
+
+    /**
+     * Read the .state file @p file into @p state; the reason why it cannot
+     * be used (unreadable, its checksum or content not as written), or an
+     * empty string.
+     */
+    std::string
+    read_state(const fs::path &file, CheckpointState &state)
+    {
+      const std::string name = "'" + file.string() + "'";
+      std::ifstream     in(file, std::ios::binary);
+      if (!in)
+        return "cannot read " + name;
+      std::ostringstream content;
+      content << in.rdbuf();
+      const std::string text = content.str();
+      const std::size_t last =
+        text.size() < 2 ? std::string::npos : text.rfind('\n', text.size() - 2);
+      if (last == std::string::npos ||
+          text.compare(last + 1, state_checksum_label.size(),
+                       state_checksum_label) != 0)
+        return name + " is cut short (no checksum line)";
+      const std::string body = text.substr(0, last + 1);
+      if (text.substr(last + 1 + state_checksum_label.size()) !=
+          std::to_string(crc32_of(body)) + "\n")
+        return name + " has been changed (its CRC-32 is not the one recorded "
+                      "in it)";
+      try
+        {
+          std::istringstream            body_in(body);
+          boost::archive::text_iarchive archive(body_in);
+          archive >> state;
+        }
+      catch (const std::exception &e)
+        {
+          return "cannot read " + name + ": " + e.what();
+        }
+      if (state.energy.size() != n_energy_values || state.n_ranks == 0 ||
+          !(state.time_step > 0) || state.step_number > state.n_steps ||
+          state.constrained_amg > 2)
+        return name + " holds an invalid state (" +
+               std::to_string(state.energy.size()) + " energy values of " +
+               std::to_string(n_energy_values) + ", step " +
+               std::to_string(state.step_number) + " of " +
+               std::to_string(state.n_steps) + ")";
+      return "";
+    }
 
     /**
      * The fields of a simplex-mesh checkpoint on one rank: the owned
@@ -127,26 +219,32 @@ namespace hemicontact
              std::to_string(crc.checksum());
     }
 
+    std::string
+    checkpoint_name(const unsigned int step)
+    {
+      std::ostringstream s;
+      s << "step-" << std::setw(6) << std::setfill('0') << step;
+      return s.str();
+    }
+
     /**
-     * Read the state of checkpoint @p name in @p dir into @p state and
-     * check every file against the signature it records. Returns why the
-     * checkpoint cannot be used, or an empty string.
+     * Read the state of the checkpoint of @p step in @p dir into @p state
+     * and check it (it records that step) and every file against the
+     * signature it records. Returns why the checkpoint cannot be used, or
+     * an empty string.
      */
     std::string
-    checkpoint_damage(const fs::path &dir, const std::string &name,
+    checkpoint_damage(const fs::path &dir, const unsigned int step,
                       CheckpointState &state)
     {
-      const fs::path state_file = dir / (name + ".state");
-      try
-        {
-          std::ifstream                 in(state_file);
-          boost::archive::text_iarchive archive(in);
-          archive >> state;
-        }
-      catch (const std::exception &e)
-        {
-          return "cannot read '" + state_file.string() + "': " + e.what();
-        }
+      const fs::path    state_file = dir / (checkpoint_name(step) + ".state");
+      const std::string why        = read_state(state_file, state);
+      if (!why.empty())
+        return why;
+      if (state.step_number != step)
+        return "'" + state_file.string() + "' holds the checkpoint of step " +
+               std::to_string(state.step_number) +
+               ", not of the step its name says (renamed?)";
       if (state.file_signatures.empty())
         return "'" + state_file.string() + "' lists no files";
       for (const std::string &expected : state.file_signatures)
@@ -180,7 +278,7 @@ namespace hemicontact
     from_vector(const std::vector<double> &v)
     {
       EnergyBalance e;
-      AssertThrow(v.size() == 9, ExcMessage("corrupt checkpoint state"));
+      AssertDimension(v.size(), n_energy_values); // read_state() checks it
       e.kinetic               = v[0];
       e.elastic               = v[1];
       e.initial_energy        = v[2];
@@ -193,12 +291,23 @@ namespace hemicontact
       return e;
     }
 
-    std::string
-    checkpoint_name(const unsigned int step)
+    /**
+     * The step of a file of a checkpoint ("step-" + at least six digits +
+     * "." + anything), or -1 for any other name; @p suffix: what follows
+     * the digits.
+     */
+    long long
+    checkpoint_step(const std::string &name, std::string &suffix)
     {
-      std::ostringstream s;
-      s << "step-" << std::setw(6) << std::setfill('0') << step;
-      return s.str();
+      std::size_t end = 5;
+      while (end < name.size() && end < 5 + 10 &&
+             std::isdigit(static_cast<unsigned char>(name[end])))
+        ++end;
+      if (name.rfind("step-", 0) != 0 || end < 11 || end == name.size() ||
+          name[end] != '.')
+        return -1;
+      suffix = name.substr(end);
+      return std::stoll(name.substr(5, end - 5));
     }
 
     /** Steps of the complete checkpoints in @p dir (their .state exists). */
@@ -209,13 +318,164 @@ namespace hemicontact
       std::error_code           ec;
       for (const auto &entry : fs::directory_iterator(dir, ec))
         {
-          const std::string name = entry.path().filename().string();
-          if (name.size() == 17 && name.rfind("step-", 0) == 0 &&
-              name.substr(11) == ".state")
-            steps.push_back(std::stoul(name.substr(5, 6)));
+          std::string     suffix;
+          const long long step =
+            checkpoint_step(entry.path().filename().string(), suffix);
+          if (step >= 0 && step <= std::numeric_limits<unsigned int>::max() &&
+              suffix == ".state")
+            steps.push_back(static_cast<unsigned int>(step));
         }
       std::sort(steps.begin(), steps.end());
       return steps;
+    }
+
+    /** The file naming the run whose output is in OUTPUT (in OUTPUT/checkpoint). */
+    const std::string run_file_name = "run";
+
+    /** The run id in @p dir's run file, "" if there is none. */
+    std::string
+    recorded_run(const fs::path &dir)
+    {
+      std::ifstream in(dir / run_file_name);
+      std::string   id;
+      in >> id;
+      return id;
+    }
+
+    /** A new run id: 64 random bits in hex. */
+    std::string
+    new_run_id()
+    {
+      std::random_device rd;
+      std::ostringstream s;
+      s << std::hex << std::setw(8) << std::setfill('0') << rd()
+        << std::setw(8) << std::setfill('0') << rd();
+      return s.str();
+    }
+
+    /** The signature of the mesh file @p geometry reads ("" if none). */
+    std::string
+    mesh_signature_of(const GeometryParameters &geometry)
+    {
+      return geometry.mesh_type == "gmsh" ? file_signature(geometry.mesh_file) :
+                                            "";
+    }
+
+    /** The size and CRC-32 of a file_signature() (without the name). */
+    std::string
+    signature_values(const std::string &signature)
+    {
+      const std::size_t space = signature.find(' ');
+      return space == std::string::npos ? "none" : signature.substr(space + 1);
+    }
+
+    /**
+     * The branches of the owned nodes of @p nodes as a field: the normal
+     * branch at a node's first dof, the tangential at its second.
+     */
+    template <int dim>
+    void
+    branches_to_field(const std::vector<ContactNode<dim>> &nodes,
+                      TrilinosWrappers::MPI::Vector &      field)
+    {
+      for (const ContactNode<dim> &node : nodes)
+        if (node.locally_owned)
+          {
+            field[node.dofs[0]] = static_cast<double>(node.normal_branch);
+            field[node.dofs[1]] = static_cast<double>(node.tangential_branch);
+          }
+      field.compress(VectorOperation::insert);
+    }
+
+    /** The branches of every node of @p nodes from branches_to_field(). */
+    template <int dim>
+    void
+    branches_from_field(const TrilinosWrappers::MPI::Vector &field,
+                        const IndexSet &                     owned,
+                        const IndexSet &                     relevant,
+                        std::vector<ContactNode<dim>> &      nodes)
+    {
+      TrilinosWrappers::MPI::Vector ghosted(owned, relevant,
+                                            field.get_mpi_communicator());
+      ghosted = field;
+      for (ContactNode<dim> &node : nodes)
+        {
+          node.normal_branch =
+            static_cast<NormalBranch>(std::lround(ghosted[node.dofs[0]]));
+          node.tangential_branch =
+            static_cast<TangentialBranch>(std::lround(ghosted[node.dofs[1]]));
+        }
+    }
+
+    /**
+     * @p nodes with, at the owned ones, the branches whose constrained
+     * directions the constrained AMG of @p preconditioner was built for
+     * (its operators' nodes are the owned nodes in this order); unchanged
+     * if it has none.
+     */
+    template <int dim>
+    std::vector<ContactNode<dim>>
+    constrained_amg_branches(const std::vector<ContactNode<dim>> &nodes,
+                             const StepPreconditioner<dim> &preconditioner)
+    {
+      std::vector<ContactNode<dim>>      result(nodes);
+      const std::vector<Tensor<2, dim>> &directions =
+        preconditioner.constrained_directions();
+      if (directions.empty())
+        return result;
+      unsigned int i = 0;
+      for (ContactNode<dim> &node : result)
+        if (node.locally_owned)
+          {
+            AssertIndexRange(i, directions.size());
+            // sum e e over nodal::constrained_directions(): nu nu for normal
+            // stick, the tangent plane's projector for tangential stick
+            const double normal_part = node.normal * (directions[i] * node.normal);
+            node.normal_branch = normal_part > 0.5 ? NormalBranch::stick :
+                                                     NormalBranch::separating;
+            node.tangential_branch = trace(directions[i]) - normal_part > 0.5 ?
+                                       TangentialBranch::stick :
+                                       TangentialBranch::slip;
+            ++i;
+          }
+      AssertDimension(i, directions.size());
+      return result;
+    }
+
+    /**
+     * After a checkpoint of step @p step of run @p run was written into
+     * @p dir: keep it and the one before it of the same run, remove every
+     * other checkpoint file (older ones, those of an earlier run whose
+     * output this run replaced, unreadable or incomplete ones, and those
+     * beyond @p step that a resumed run left behind).
+     */
+    void
+    keep_last_two_checkpoints(const fs::path &dir, const std::string &run,
+                              const unsigned int step)
+    {
+      std::vector<unsigned int> kept;
+      for (const unsigned int s : complete_checkpoints(dir))
+        {
+          CheckpointState state;
+          if (s <= step &&
+              read_state(dir / (checkpoint_name(s) + ".state"), state).empty() &&
+              state.run_id == run)
+            kept.push_back(s);
+        }
+      if (kept.size() > 2)
+        kept.erase(kept.begin(), kept.end() - 2);
+      std::vector<fs::path> old;
+      std::error_code       ec;
+      for (const auto &entry : fs::directory_iterator(dir, ec))
+        {
+          std::string     suffix;
+          const long long s =
+            checkpoint_step(entry.path().filename().string(), suffix);
+          if (s >= 0 && std::find(kept.begin(), kept.end(), s) == kept.end())
+            old.push_back(entry.path());
+        }
+      for (const fs::path &f : old)
+        fs::remove(f, ec);
     }
 
     /**
@@ -257,6 +517,27 @@ namespace hemicontact
 
   template <int dim>
   void
+  ContactProblem<dim>::start_checkpoint_run()
+  {
+    std::string error;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        run_id         = new_run_id();
+        mesh_signature = mesh_signature_of(parameters.geometry);
+        // checkpoints of an earlier run no longer match the output this
+        // run replaces: from now on the directory names this run, so that
+        // a resume does not take them (its first checkpoint removes them)
+        const fs::path  dir = fs::path(parameters.output.directory) / "checkpoint";
+        std::error_code ec;
+        if (fs::is_directory(dir, ec))
+          error = write_atomically((dir / run_file_name).string(),
+                                   run_id + "\n");
+      }
+    throw_if_any(error, mpi_communicator);
+  }
+
+  template <int dim>
+  void
   ContactProblem<dim>::write_checkpoint()
   {
     finish_solution_output(); // the series it saves lists every write
@@ -265,46 +546,49 @@ namespace hemicontact
     const fs::path     aside = dir / "writing";
     const std::string  name = checkpoint_name(step_number);
     const bool         root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+    std::string        error;
     if (root)
       {
         fs::remove_all(aside);
         fs::create_directories(aside);
+        // the directory names the run of its checkpoints before they exist
+        error = write_atomically((dir / run_file_name).string(), run_id + "\n");
       }
-    MPI_Barrier(mpi_communicator);
+    throw_if_any(error, mpi_communicator);
 
-    // the fields: w_n, u_n and the branches (normal at the node's first
-    // dof, tangential at its second): attached to the p4est mesh, or, on a
+    // the fields: w_n, u_n, the branches, w_{n-1} and the branches the
+    // constrained AMG was built for: attached to the p4est mesh, or, on a
     // simplex mesh (rebuilt from the parameters on resume), one file per
     // rank in dof order
     TrilinosWrappers::MPI::Vector branches(locally_owned_dofs, mpi_communicator);
-    for (const ContactNode<dim> &node : contact_nodes)
-      if (node.locally_owned)
-        {
-          branches[node.dofs[0]] = static_cast<double>(node.normal_branch);
-          branches[node.dofs[1]] = static_cast<double>(node.tangential_branch);
-        }
-    branches.compress(VectorOperation::insert);
+    TrilinosWrappers::MPI::Vector amg_branches(branches);
+    branches_to_field(contact_nodes, branches);
+    branches_to_field(constrained_amg_branches(contact_nodes, preconditioner),
+                      amg_branches);
+    const std::vector<const TrilinosWrappers::MPI::Vector *> owned_fields{
+      &velocity, &displacement, &branches, &old_velocity, &amg_branches};
     if (discretization.is_simplex())
       throw_if_any(write_rank_fields(
                      aside / (name + ".fields." +
                               std::to_string(Utilities::MPI::this_mpi_process(
                                 mpi_communicator))),
-                     locally_owned_dofs, {&velocity, &displacement, &branches}),
+                     locally_owned_dofs, owned_fields),
                    mpi_communicator);
     else
       {
-        TrilinosWrappers::MPI::Vector w(locally_owned_dofs,
-                                        locally_relevant_dofs,
-                                        mpi_communicator);
-        TrilinosWrappers::MPI::Vector u(w), b(w);
-        w = velocity;
-        u = displacement;
-        b = branches;
+        std::vector<TrilinosWrappers::MPI::Vector> ghosted(owned_fields.size());
+        std::vector<const TrilinosWrappers::MPI::Vector *> fields;
+        for (unsigned int i = 0; i < ghosted.size(); ++i)
+          {
+            ghosted[i].reinit(locally_owned_dofs, locally_relevant_dofs,
+                              mpi_communicator);
+            ghosted[i] = *owned_fields[i];
+            fields.push_back(&ghosted[i]);
+          }
         parallel::distributed::SolutionTransfer<dim,
                                                 TrilinosWrappers::MPI::Vector>
           transfer(dof_handler);
-        transfer.prepare_for_serialization(
-          std::vector<const TrilinosWrappers::MPI::Vector *>{&w, &u, &b});
+        transfer.prepare_for_serialization(fields);
         dynamic_cast<parallel::distributed::Triangulation<dim> &>(
           *discretization.triangulation)
           .save((aside / (name + ".mesh")).string());
@@ -324,10 +608,14 @@ namespace hemicontact
         state.pvd_records = pvd_records;
         state.problem_definition = parameters.problem_definition;
         state.n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+        state.last_step_length = last_step_length;
+        state.run_id           = run_id;
+        state.mesh_signature   = mesh_signature;
+        state.constrained_amg =
+          static_cast<unsigned int>(preconditioner.constrained_amg_status());
         {
-          std::ofstream                 out(aside / (name + ".state"));
-          boost::archive::text_oarchive archive(out);
-          archive << state;
+          std::ofstream out(aside / (name + ".state"), std::ios::binary);
+          out << state_text(state);
         }
         // move in place, the .state last: a checkpoint without its .state
         // (interrupted while moving) is never read
@@ -339,16 +627,7 @@ namespace hemicontact
           fs::rename(f, dir / f.filename());
         fs::rename(aside / (name + ".state"), dir / (name + ".state"));
         fs::remove_all(aside);
-
-        // keep the last two
-        const std::vector<unsigned int> steps = complete_checkpoints(dir);
-        for (std::size_t i = 0; i + 2 < steps.size(); ++i)
-          {
-            const std::string old = checkpoint_name(steps[i]);
-            for (const auto &entry : fs::directory_iterator(dir))
-              if (entry.path().filename().string().rfind(old + ".", 0) == 0)
-                fs::remove(entry.path());
-          }
+        keep_last_two_checkpoints(dir, run_id, step_number);
       }
     MPI_Barrier(mpi_communicator);
   }
@@ -364,37 +643,48 @@ namespace hemicontact
             "checkpoint: 'resume' is set but '" + dir.string() +
               "' holds no complete checkpoint; run without resume first (with "
               "'checkpoint/interval' > 0).");
-    // the newest checkpoint whose files are all as written (checked on the
-    // root, which reads them anyway); a damaged one is reported and skipped
-    int         chosen = -1;
-    std::string damage;
+    // the newest checkpoint of the run whose output the directory holds
+    // with all its files as written (checked on the root, which reads them
+    // anyway); any other is reported and skipped
+    int             chosen = -1;
+    std::string     damage;
+    CheckpointState state;
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      for (int i = static_cast<int>(steps.size()) - 1; i >= 0; --i)
-        {
-          CheckpointState   probe;
-          const std::string why =
-            checkpoint_damage(dir, checkpoint_name(steps[i]), probe);
-          if (why.empty())
-            {
-              chosen = i;
-              break;
-            }
-          damage += (damage.empty() ? "" : "; ") + why;
-          std::cerr << "hemicontact: warning: the checkpoint of step "
-                    << steps[i] << " is damaged: " << why << "."
-                    << (i > 0 ? " Trying the one before it." : "")
-                    << std::endl;
-        }
+      {
+        const std::string run = recorded_run(dir);
+        for (int i = static_cast<int>(steps.size()) - 1; i >= 0; --i)
+          {
+            std::string why = checkpoint_damage(dir, steps[i], state);
+            const bool  damaged = !why.empty();
+            if (!damaged && state.run_id != run)
+              why =
+                "'" + (dir / (checkpoint_name(steps[i]) + ".state")).string() +
+                "' is of another run than the output in '" +
+                parameters.output.directory + "' (" +
+                (run.empty() ? "'" + (dir / run_file_name).string() +
+                                 "' naming that run is missing" :
+                               "a run started there without --resume after "
+                               "it, and wrote no checkpoint yet") +
+                ")";
+            if (why.empty())
+              {
+                chosen = i;
+                break;
+              }
+            damage += (damage.empty() ? "" : "; ") + why;
+            std::cerr << "hemicontact: warning: the checkpoint of step "
+                      << steps[i] << (damaged ? " is damaged: " : " is skipped: ")
+                      << why << "."
+                      << (i > 0 ? " Trying the one before it." : "")
+                      << std::endl;
+          }
+      }
     chosen = Utilities::MPI::broadcast(mpi_communicator, chosen, 0);
     damage = Utilities::MPI::broadcast(mpi_communicator, damage, 0);
     require(chosen >= 0, "checkpoint: no checkpoint in '" + dir.string() +
                            "' can be resumed from: " + damage + ".");
+    state = Utilities::MPI::broadcast(mpi_communicator, state, 0);
     const std::string name = checkpoint_name(steps[chosen]);
-    CheckpointState   state;
-    {
-      const std::string why = checkpoint_damage(dir, name, state);
-      require(why.empty(), "checkpoint: " + why + ".");
-    }
     require(std::abs(state.time_step - time_step) <= 1e-12 * time_step &&
               state.n_steps == n_steps,
             "checkpoint: the checkpoint was written with another time step or "
@@ -432,10 +722,31 @@ namespace hemicontact
                 ". A resume continues the same problem; restore these "
                 "entries, or start a new run without --resume.");
     }
+    {
+      // ... and so must the mesh file's content
+      const std::string now = Utilities::MPI::broadcast(
+        mpi_communicator,
+        Utilities::MPI::this_mpi_process(mpi_communicator) == 0 ?
+          mesh_signature_of(parameters.geometry) :
+          std::string(),
+        0);
+      const std::string file = parameters.geometry.mesh_file;
+      require(now == state.mesh_signature,
+              "checkpoint: the mesh file '" + file +
+                "' is not the file the run that wrote '" +
+                (dir / (name + ".state")).string() +
+                "' read (size and CRC-32 '" + signature_values(now) +
+                "', recorded '" + signature_values(state.mesh_signature) +
+                "'). A resume continues the same problem; restore the mesh "
+                "file, or start a new run without --resume.");
+    }
+    run_id           = state.run_id;
+    mesh_signature   = state.mesh_signature;
+    last_step_length = state.last_step_length;
 
-    TrilinosWrappers::MPI::Vector                branches;
-    std::vector<TrilinosWrappers::MPI::Vector *> fields{&velocity, &displacement,
-                                                        &branches};
+    TrilinosWrappers::MPI::Vector                branches, amg_branches;
+    std::vector<TrilinosWrappers::MPI::Vector *> fields{
+      &velocity, &displacement, &branches, &old_velocity, &amg_branches};
     if (discretization.is_simplex())
       {
         // the same mesh and partition as the run that wrote it, hence only
@@ -453,6 +764,7 @@ namespace hemicontact
         discretization.check_boundary_ids(parameters.boundary);
         setup_on_current_mesh();
         branches.reinit(locally_owned_dofs, mpi_communicator);
+        amg_branches.reinit(locally_owned_dofs, mpi_communicator);
         const std::string why = read_rank_fields(
           dir / (name + ".fields." +
                  std::to_string(
@@ -477,22 +789,14 @@ namespace hemicontact
         discretization.check_boundary_ids(parameters.boundary);
         setup_on_current_mesh();
         branches.reinit(locally_owned_dofs, mpi_communicator);
+        amg_branches.reinit(locally_owned_dofs, mpi_communicator);
         parallel::distributed::SolutionTransfer<dim,
                                                 TrilinosWrappers::MPI::Vector>
           transfer(dof_handler);
         transfer.deserialize(fields);
       }
-    old_velocity = velocity;
-    TrilinosWrappers::MPI::Vector b(locally_owned_dofs, locally_relevant_dofs,
-                                   mpi_communicator);
-    b = branches;
-    for (ContactNode<dim> &node : contact_nodes)
-      {
-        node.normal_branch =
-          static_cast<NormalBranch>(std::lround(b[node.dofs[0]]));
-        node.tangential_branch =
-          static_cast<TangentialBranch>(std::lround(b[node.dofs[1]]));
-      }
+    branches_from_field(branches, locally_owned_dofs, locally_relevant_dofs,
+                        contact_nodes);
 
     step_number = state.step_number;
     energy      = from_vector(state.energy);
@@ -500,6 +804,18 @@ namespace hemicontact
     update_friction_bounds(get_time());
     check_time_step_stability();
     check_convexity();
+
+    // the preconditioner as the interrupted run left it (after the checks
+    // above, which build AMGs of their own, as at the run's start)
+    std::vector<ContactNode<dim>> amg_nodes(contact_nodes);
+    branches_from_field(amg_branches, locally_owned_dofs, locally_relevant_dofs,
+                        amg_nodes);
+    ProjectedOperator<dim> op(step_matrix, locally_owned_dofs);
+    for (const ContactNode<dim> &node : amg_nodes)
+      if (node.locally_owned)
+        op.add_node(node.dofs, nodal::free_projector(node), Tensor<2, dim>());
+    preconditioner.restore(
+      op, static_cast<ConstrainedAmgStatus>(state.constrained_amg));
   }
 
   template <int dim>
@@ -515,6 +831,7 @@ namespace hemicontact
 
 #define HEMICONTACT_INSTANTIATE(dim)                                           \
   template bool ContactProblem<dim>::has_checkpoints() const;                 \
+  template void ContactProblem<dim>::start_checkpoint_run();                  \
   template void ContactProblem<dim>::write_checkpoint();                      \
   template void ContactProblem<dim>::setup_from_checkpoint();                 \
   template void ContactProblem<dim>::continue_tables();

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <tuple>
 #include <csignal>
+#include <filesystem>
 #include <iomanip>
 #include <sstream>
 
@@ -22,7 +23,7 @@ namespace hemicontact
      */
     constexpr double unstable_energy_growth = 100;
 
-    /** Set by SIGTERM; the time loop checks it after every step. */
+    /** Set by SIGTERM or SIGINT; the time loop checks it after every step. */
     volatile std::sig_atomic_t termination_requested = 0;
 
     extern "C" void
@@ -174,9 +175,22 @@ namespace hemicontact
     else
       setup();
     setup_probes(); // checks the points before the output is touched
+    {
+      const std::filesystem::path dir =
+        std::filesystem::path(parameters.output.directory) / "checkpoint";
+      std::error_code ec;
+      require(!has_checkpoints() || !std::filesystem::exists(dir, ec) ||
+                std::filesystem::is_directory(dir, ec),
+              "output: '" + dir.string() +
+                "' is not a directory, but the run's checkpoints go there "
+                "(also on SIGTERM or SIGINT); move it away.");
+    }
     open_tables();
+    if (!checkpoints.resume)
+      start_checkpoint_run();
     termination_requested = 0;
     std::signal(SIGTERM, request_termination);
+    std::signal(SIGINT, request_termination);
 
     const unsigned int n_nodes = Utilities::MPI::sum(
       static_cast<unsigned int>(std::count_if(

@@ -18,6 +18,7 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <sstream>
 
 namespace hemicontact
 {
@@ -334,11 +335,48 @@ namespace hemicontact
     return p;
   }
 
+  namespace
+  {
+    /**
+     * Refuse the checkpoint parameters, which a convergence study does not
+     * use (its levels are separate runs without checkpoints).
+     */
+    void
+    refuse_checkpoints(const CheckpointParameters &checkpoint)
+    {
+      std::vector<std::string> set;
+      if (checkpoint.resume)
+        set.push_back("'checkpoint/resume' (hemicontact --resume)");
+      if (checkpoint.interval > 0)
+        set.push_back("'checkpoint/interval' = " +
+                      std::to_string(checkpoint.interval));
+      if (checkpoint.wall_interval > 0)
+        {
+          std::ostringstream value;
+          value << checkpoint.wall_interval;
+          set.push_back("'checkpoint/wall interval' = " + value.str());
+        }
+      if (checkpoint.stop_after > 0)
+        set.push_back("'checkpoint/stop after' = " +
+                      std::to_string(checkpoint.stop_after));
+      std::string list;
+      for (const std::string &s : set)
+        list += (list.empty() ? "" : ", ") + s;
+      require(set.empty(),
+              "convergence study: a convergence study ('manufactured "
+              "solution/enabled = true') neither writes checkpoints nor "
+              "resumes from them, but the parameter file sets " +
+                list + "; remove " + (set.size() > 1 ? "them" : "it") +
+                " (a study runs from the start).");
+    }
+  } // namespace
+
   template <int dim>
   std::vector<LevelResult>
   run_convergence_study(const Parameters &parameters, ParameterHandler &prm,
                         MPI_Comm comm)
   {
+    refuse_checkpoints(parameters.checkpoint);
     const bool root    = Utilities::MPI::this_mpi_process(comm) == 0;
     const bool verbose = root && parameters.output.terminal != "quiet";
     const std::string &type     = parameters.study.type;

@@ -1,12 +1,35 @@
 #!/usr/bin/env bash
-# compare_runs.sh DIR_A DIR_B: the steps.csv and probes.csv of two runs agree
-# (step, time, mesh, branch counts exactly; energies and probe values to a
-# relative 1e-7), and so do their solution.pvd series. Newton/Krylov counts,
-# residuals and wall times are left out: they may differ between MPI rank
-# counts while the results agree to solver tolerance.
+# compare_runs.sh DIR_A DIR_B [bitwise]: the steps.csv and probes.csv of two
+# runs agree (step, time, mesh, branch counts exactly; energies and probe
+# values to a relative 1e-7), and so do their solution.pvd series.
+# Newton/Krylov counts, residuals and wall times are left out: they may
+# differ between MPI rank counts while the results agree to solver
+# tolerance. With 'bitwise' (a resume on the number of ranks of the
+# interrupted run): every column of steps.csv but the wall time, probes.csv
+# and every contact_NNNNN.csv are the same bytes.
 set -euo pipefail
-a=$1; b=$2
+a=$1; b=$2; mode=${3:-tolerance}
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+if [ "$mode" = bitwise ]; then
+  without_wall() { # FILE: the table without its wall_seconds column
+    awk -F, 'BEGIN { OFS = "," } NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "wall_seconds") w = i }
+      { line = ""; for (i = 1; i <= NF; ++i) if (i != w) line = line (line == "" ? "" : OFS) $i; print line }' "$1"
+  }
+  for f in steps.csv probes.csv; do
+    [ -f "$a/$f" ] || continue
+    without_wall "$a/$f" > "$tmp/a"; without_wall "$b/$f" > "$tmp/b"
+    cmp -s "$tmp/a" "$tmp/b" ||
+      { echo "FAIL: $f differs:"; diff "$tmp/a" "$tmp/b" | head -6; exit 1; }
+    echo "$f: $(($(wc -l < "$tmp/a") - 1)) rows bitwise equal"
+  done
+  (cd "$a" && ls contact_*.csv 2> /dev/null) > "$tmp/list_a" || true
+  (cd "$b" && ls contact_*.csv 2> /dev/null) > "$tmp/list_b" || true
+  cmp -s "$tmp/list_a" "$tmp/list_b" || { echo "FAIL: the contact_*.csv files differ in number"; exit 1; }
+  while read -r f; do
+    cmp -s "$a/$f" "$b/$f" || { echo "FAIL: $f differs"; exit 1; }
+  done < "$tmp/list_a"
+  echo "contact_*.csv: $(wc -l < "$tmp/list_a") files bitwise equal"
+fi
 # the compared columns of steps.csv, by name (all columns of probes.csv)
 steps_columns="step time n_cells n_dofs n_separating n_normal_stick n_damped n_stick n_slip
   kinetic_energy elastic_energy viscous_dissipation friction_dissipation

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # kill_and_resume.sh EXE PRM WORKDIR SIGNAL
-# Start a run that checkpoints every 5 steps, kill it with SIGNAL (TERM or
-# KILL) at a random moment, resume it, and compare with an uninterrupted
-# run. SIGTERM must also leave a checkpoint of the step it was in (exit 5).
+# Start a run that checkpoints every 5 steps, kill it with SIGNAL (TERM,
+# INT or KILL) at a random moment, resume it, and compare with an
+# uninterrupted run (bitwise). SIGTERM and SIGINT (Ctrl-C) must also leave
+# a checkpoint of the step it was in (exit 5).
 set -euo pipefail
 exe=$1; prm=$2; work=$3; signal=$4
 here=$(cd "$(dirname "$0")" && pwd)
@@ -11,11 +12,7 @@ write_prm() { # NAME DIRECTORY
   { cat "$prm"
     printf 'subsection output\n  set directory = %s\n  set vtu interval = 10\n' "$2"
     printf '  set probe points = 4, 0\n  set terminal = quiet\nend\n'
-    printf 'subsection checkpoint\n  set interval = 5\nend\n'
-    # resumed runs rebuild the AMG, so their Krylov paths differ: solve
-    # tightly, so that compare_runs.sh's 1e-7 separates restart errors
-    # from solver differences
-    printf 'subsection nonlinear solver\n  set tolerance = 1e-10\nend\n'; } > "$1"
+    printf 'subsection checkpoint\n  set interval = 5\nend\n'; } > "$1"
 }
 write_prm whole.prm whole
 write_prm killed.prm killed
@@ -29,16 +26,21 @@ kill -s "$signal" $pid 2> /dev/null || true
 status=0; wait $pid || status=$?
 rows=$(($(wc -l < killed/steps.csv) - 1))
 echo "killed with SIG$signal after $rows steps (exit status $status)"
-if [ "$status" -eq 0 ]; then
+# (the run takes far longer than the wait: a run that ends normally has
+# ignored the signal; a shell starts background jobs with SIGINT ignored,
+# as the program must not)
+if [ "$status" -eq 0 ] && [ "$signal" != KILL ]; then
+  echo "FAIL: the run went on to its end after SIG$signal"; exit 1
+elif [ "$status" -eq 0 ]; then
   echo "(the run had finished before the signal: nothing to resume)"
 else
-  if [ "$signal" = TERM ]; then
-    [ "$status" -eq 5 ] || { echo "FAIL: SIGTERM gave exit status $status, not 5"; cat killed.err; exit 1; }
+  if [ "$signal" != KILL ]; then
+    [ "$status" -eq 5 ] || { echo "FAIL: SIG$signal gave exit status $status, not 5"; cat killed.err; exit 1; }
     last=$(ls killed/checkpoint | grep '\.state$' | tail -1)
     [ "$last" = "$(printf 'step-%06d.state' "$rows")" ] ||
-      { echo "FAIL: SIGTERM left no checkpoint of step $rows (newest: $last)"; exit 1; }
-    echo "SIGTERM wrote a checkpoint of step $rows"
+      { echo "FAIL: SIG$signal left no checkpoint of step $rows (newest: $last)"; exit 1; }
+    echo "SIG$signal wrote a checkpoint of step $rows"
   fi
   "$exe" --resume killed.prm
 fi
-bash "$here/compare_runs.sh" whole killed
+bash "$here/compare_runs.sh" whole killed bitwise
