@@ -243,6 +243,8 @@ namespace hemicontact
         return power_derivative(a, *node.args[1], index);
       if (name == "max" || name == "min")
         return selection_derivative(a, *node.args[1], name == "max", index);
+      if (Expression::is_condition(node.function_id))
+        return constant(0); // piecewise constant: 0 off the switching set
       NodePtr da = derivative(a, index);
       if (is_constant(da, 0) || name == "step" || name == "sign")
         return constant(0);
