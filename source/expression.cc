@@ -10,8 +10,8 @@ namespace hemicontact
 {
   namespace
   {
-    /** Recursive-descent parser, loosest first: expr = conjunction {||
-     *  conjunction}, conjunction = comparison {&& comparison}, comparison =
+    /** Recursive-descent parser, loosest first: expr = disjunction [?
+     *  expr : expr], disjunction = conjunction {|| conjunction}, conjunction = comparison {&& comparison}, comparison =
      *  sum [(<|>|<=|>=|==|!=) sum], sum = term {(+|-) term}, term = factor
      *  {(*|/) factor}, factor = unary [^ factor], unary = [-|+] primary. */
     class Parser
@@ -32,12 +32,7 @@ namespace hemicontact
         auto node = expression();
         skip_space();
         if (position != text.size())
-          fail("unexpected '" + text.substr(position, 1) + "'",
-               text[position] == '?' ?
-                 "The operators are + - * / ^, the comparisons < > <= >= == "
-                 "!= and && || (1 if true, else 0); there is no 'c ? a : b': "
-                 "write it as (c)*a + (1 - (c))*b." :
-                 "");
+          fail("unexpected '" + text.substr(position, 1) + "'");
         return node;
       }
 
@@ -108,6 +103,20 @@ namespace hemicontact
 
       NodePtr
       expression()
+      {
+        NodePtr condition = disjunction();
+        if (!accept('?'))
+          return condition;
+        NodePtr if_true = expression();
+        if (!accept(':'))
+          fail("missing ':' of 'c ? a : b'");
+        NodePtr node = operation("?:", std::move(condition), std::move(if_true));
+        node->args.push_back(expression());
+        return node;
+      }
+
+      NodePtr
+      disjunction()
       {
         NodePtr left = conjunction();
         while (accept("||"))
@@ -298,14 +307,14 @@ namespace hemicontact
     static const std::vector<std::string> names = {
       "sin",  "cos",  "tan",  "exp", "log", "sqrt", "abs", "tanh",
       "sinh", "cosh", "atan", "pos", "step", "sign", "pow", "max", "min",
-      "<",    ">",    "<=",   ">=",  "==",  "!=",   "&&",  "||"};
+      "<",    ">",    "<=",   ">=",  "==",  "!=",   "&&",  "||",  "?:"};
     return names;
   }
 
   bool
   Expression::is_condition(const int id)
   {
-    return id >= first_condition;
+    return id >= first_condition && id < conditional;
   }
 
   std::string

@@ -301,7 +301,8 @@ namespace hemicontact
                       "foundation), evaluated at the start of each step with "
                       "the known u_n; e.g. mu*cp*pos(u_nu) for normal "
                       "compliance with friction. Comparisons < > <= >= == != "
-                      "and && || give 1 or 0, e.g. 0.3*(x < 0.5).");
+                      "and && || give 1 or 0; c ? a : b is a if c is not 0, "
+                      "else b; e.g. x < 0.5 ? 0.3 : 0.2.");
     prm.declare_entry("initial displacement", "0", Patterns::Anything(),
                       "u0(x); must vanish on Gamma_1." + vec_help);
     prm.declare_entry("initial velocity", "0", Patterns::Anything(),

@@ -1,9 +1,9 @@
-// The comparisons < > <= >= == != and the logical && || of Expression
-// (the grammar of the friction bound and the manufactured solution) give
-// the values muparser gives for the same text (the grammar of the other
-// data entries), at points on both sides of each switch and on it: the
-// same precedence, 1 for true and 0 for false. A '?' is refused with a
-// message that names the operators.
+// The comparisons < > <= >= == !=, the logical && || and c ? a : b of
+// Expression (the grammar of the friction bound and the manufactured
+// solution) give the values muparser gives for the same text (the grammar
+// of the other data entries), at points on both sides of each switch and
+// on it: the same precedence, 1 for true and 0 for false. A '?' without
+// its ':' is refused.
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
 
@@ -35,7 +35,11 @@ main(int argc, char **argv)
     "x < y == t > 0.5",
     "2^x > 1.1 && -x < 0",
     "0.3*(x < 0.4) + 0.2*(x >= 0.4)",
-    "max(x, y) > t || x*y != 0"};
+    "max(x, y) > t || x*y != 0",
+    "x < 0.2 ? y : t",
+    "x < y ? x + 1 : y*2 - t",
+    "x > 0 ? y > 0 ? 1 : 2 : 3",
+    "x > 0 && t > 0.5 ? sin(x) : 0.2 + (x < 0.4 ? 0 : 0.1)"};
 
   bool all_equal = true;
   for (const std::string &text : cases)
@@ -63,9 +67,9 @@ main(int argc, char **argv)
 
   try
     {
-      const Expression f("x < 0.5 ? 0.3 : 0.2", variables, constants,
+      const Expression f("x < 0.5 ? 0.3", variables, constants,
                          "friction bound");
-      out() << "'?' accepted: NO\n";
+      out() << "'?' without ':' accepted: NO\n";
     }
   catch (const InputError &e)
     {

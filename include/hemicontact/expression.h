@@ -17,7 +17,8 @@ namespace hemicontact
    * max(a, 0) (for C^2 cut-offs such as pos(x-0.4)^3), step(a) (1 if a > 0,
    * else 0), sign(a) (-1 if a < 0, else 1), pow(a,b), max(a,b), min(a,b),
    * and, as in muparser, the comparisons < > <= >= == != and the logical
-   * && || (1 if true, else 0; looser than + and -, || loosest).
+   * && || (1 if true, else 0; looser than + and -, then ||), and c ? a : b
+   * (a if c is not 0, else b; loosest of all).
    *
    * derivative() differentiates symbolically: the derivatives of a
    * manufactured solution are plain expressions evaluated in doubles.
@@ -91,6 +92,9 @@ namespace hemicontact
     /** The function_id of '<', the first comparison or logical operator
      *  (written between its operands, not as a call). */
     static constexpr int first_condition = 17;
+
+    /** The function_id of c ? a : b, whose node has three arguments. */
+    static constexpr int conditional = 25;
 
     /** Whether the function number @p id is a comparison or a logical
      *  operator (a value 1 or 0, piecewise constant). */
@@ -177,6 +181,10 @@ namespace hemicontact
           }
         default:
           {
+            if (node.function_id == conditional)
+              return eval(*node.args[0], values) != Number(0.) ?
+                       eval(*node.args[1], values) :
+                       eval(*node.args[2], values);
             const Number a = eval(*node.args[0], values);
             const Number b =
               node.args.size() > 1 ? eval(*node.args[1], values) : Number(0.);
