@@ -10,7 +10,9 @@ namespace hemicontact
 {
   namespace
   {
-    /** Recursive-descent parser: expr = term {(+|-) term}, term = factor
+    /** Recursive-descent parser, loosest first: expr = disjunction [?
+     *  expr : expr], disjunction = conjunction {|| conjunction}, conjunction = comparison {&& comparison}, comparison =
+     *  sum [(<|>|<=|>=|==|!=) sum], sum = term {(+|-) term}, term = factor
      *  {(*|/) factor}, factor = unary [^ factor], unary = [-|+] primary. */
     class Parser
     {
@@ -37,12 +39,15 @@ namespace hemicontact
     private:
       using NodePtr = std::unique_ptr<Expression::Node>;
 
+      /** Throw the InputError for @p what at the current position, with
+       *  the sentence @p hint after it. */
       [[noreturn]] void
-      fail(const std::string &what) const
+      fail(const std::string &what, const std::string &hint = "") const
       {
-        throw InputError("cannot parse '" + parameter_name + "' = '" + text +
-                         "': " + what + " at position " +
-                         std::to_string(position + 1) + ".");
+        throw InputError("cannot parse '" + parameter_name + "' = " +
+                         quoted_expression(text) + ": " + what +
+                         " at position " + std::to_string(position + 1) + "." +
+                         (hint.empty() ? "" : " " + hint));
       }
 
       void
@@ -75,8 +80,81 @@ namespace hemicontact
         return node;
       }
 
+      /** Whether the text at the position starts with @p op (consumed). */
+      bool
+      accept(const std::string &op)
+      {
+        skip_space();
+        if (text.compare(position, op.size(), op) != 0)
+          return false;
+        position += op.size();
+        return true;
+      }
+
+      /** a op b for a comparison or logical operator: a function node. */
+      NodePtr
+      operation(const std::string &op, NodePtr a, NodePtr b)
+      {
+        NodePtr node     = binary(op, std::move(a), std::move(b));
+        node->kind        = Expression::Node::function;
+        node->function_id = Expression::function_id(op);
+        return node;
+      }
+
       NodePtr
       expression()
+      {
+        NodePtr condition = disjunction();
+        if (!accept('?'))
+          return condition;
+        NodePtr if_true = expression();
+        if (!accept(':'))
+          fail("missing ':' of 'c ? a : b'");
+        NodePtr node = operation("?:", std::move(condition), std::move(if_true));
+        node->args.push_back(expression());
+        return node;
+      }
+
+      NodePtr
+      disjunction()
+      {
+        NodePtr left = conjunction();
+        while (accept("||"))
+          left = operation("||", std::move(left), conjunction());
+        return left;
+      }
+
+      NodePtr
+      conjunction()
+      {
+        NodePtr left = comparison();
+        while (accept("&&"))
+          left = operation("&&", std::move(left), comparison());
+        return left;
+      }
+
+      NodePtr
+      comparison()
+      {
+        NodePtr left = sum();
+        for (;;)
+          {
+            // the two-character operators first
+            const std::string *op = nullptr;
+            for (const std::string &candidate : comparison_operators)
+              if (accept(candidate))
+                {
+                  op = &candidate;
+                  break;
+                }
+            if (op == nullptr)
+              return left;
+            left = operation(*op, std::move(left), sum());
+          }
+      }
+
+      NodePtr
+      sum()
       {
         NodePtr left = term();
         for (;;)
@@ -212,6 +290,9 @@ namespace hemicontact
         return node;
       }
 
+      inline static const std::vector<std::string> comparison_operators = {
+        "<=", ">=", "==", "!=", "<", ">"};
+
       const std::string                    text;
       const std::vector<std::string> &     variables;
       const std::map<std::string, double> &constants;
@@ -225,8 +306,25 @@ namespace hemicontact
   {
     static const std::vector<std::string> names = {
       "sin",  "cos",  "tan",  "exp", "log", "sqrt", "abs", "tanh",
-      "sinh", "cosh", "atan", "pos", "step", "sign", "pow", "max", "min"};
+      "sinh", "cosh", "atan", "pos", "step", "sign", "pow", "max", "min",
+      "<",    ">",    "<=",   ">=",  "==",  "!=",   "&&",  "||",  "?:"};
     return names;
+  }
+
+  bool
+  Expression::is_condition(const int id)
+  {
+    return id >= first_condition && id < conditional;
+  }
+
+  std::string
+  quoted_expression(const std::string &text)
+  {
+    constexpr std::size_t shown = 200;
+    if (text.size() <= shown)
+      return "'" + text + "'";
+    return "'" + text.substr(0, shown) + "...' (" +
+           std::to_string(text.size()) + " characters)";
   }
 
   Expression::Expression(const std::string &                  text,

@@ -243,6 +243,20 @@ namespace hemicontact
         return power_derivative(a, *node.args[1], index);
       if (name == "max" || name == "min")
         return selection_derivative(a, *node.args[1], name == "max", index);
+      if (node.function_id == Expression::conditional)
+        {
+          // c ? a' : b' (c is constant between its switches)
+          NodePtr da = derivative(*node.args[1], index);
+          NodePtr db = derivative(*node.args[2], index);
+          if (is_constant(da, 0) && is_constant(db, 0))
+            return constant(0);
+          NodePtr result  = clone(node);
+          result->args[1] = std::move(da);
+          result->args[2] = std::move(db);
+          return result;
+        }
+      if (Expression::is_condition(node.function_id))
+        return constant(0); // piecewise constant: 0 off the switching set
       NodePtr da = derivative(a, index);
       if (is_constant(da, 0) || name == "step" || name == "sign")
         return constant(0);

@@ -38,6 +38,8 @@ namespace hemicontact
           keep(c.a);
           if (c.n_operands > 1)
             keep(c.b);
+          if (c.n_operands > 2)
+            keep(c.c);
         }
     for (const unsigned int o : outputs)
       keep(o);
@@ -75,14 +77,16 @@ namespace hemicontact
             const bool binary   = instruction.n_operands > 1;
             const Instruction &a = code[instruction.a];
             const Instruction &b = code[binary ? instruction.b : instruction.a];
-            instruction.uniform = a.uniform && b.uniform;
-            instruction.timed   = a.timed || b.timed;
+            const Instruction &c =
+              code[instruction.n_operands > 2 ? instruction.c : instruction.a];
+            instruction.uniform = a.uniform && b.uniform && c.uniform;
+            instruction.timed   = a.timed || b.timed || c.timed;
           }
       }
     instruction.spatial = !instruction.uniform && !instruction.timed;
     // the same operation on the same operands is the same subexpression
     const Key key{static_cast<int>(instruction.op), instruction.function_id,
-                  instruction.a, instruction.b, instruction.n,
+                  instruction.a, instruction.b, instruction.c, instruction.n,
                   bits(instruction.value)};
     const auto found = known.find(key);
     if (found != known.end())
@@ -157,6 +161,8 @@ namespace hemicontact
           instruction.n_operands  = node.args.size();
           if (node.args.size() > 1)
             instruction.b = compile(*node.args[1]);
+          if (node.args.size() > 2)
+            instruction.c = compile(*node.args[2]);
           return append(instruction);
       }
   }
@@ -244,6 +250,7 @@ namespace hemicontact
           }
         const double *const a = r + std::size_t(c.a) * n_points;
         const double *const b = r + std::size_t(c.b) * n_points;
+        const double *const d = r + std::size_t(c.c) * n_points;
         const unsigned int  n = c.uniform ? 1 : n_points;
         switch (c.op)
           {
@@ -284,8 +291,13 @@ namespace hemicontact
                 }
               break;
             default:
-              for (unsigned int p = 0; p < n; ++p)
-                out[p] = Expression::apply_function(c.function_id, a[p], b[p]);
+              if (c.function_id == Expression::conditional)
+                for (unsigned int p = 0; p < n; ++p)
+                  out[p] = a[p] != 0 ? b[p] : d[p];
+              else
+                for (unsigned int p = 0; p < n; ++p)
+                  out[p] =
+                    Expression::apply_function(c.function_id, a[p], b[p]);
           }
         if (c.uniform)
           std::fill(out + 1, out + n_points, out[0]);

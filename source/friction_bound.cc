@@ -22,11 +22,11 @@ namespace hemicontact
                                     const std::string &constants)
     : text(expression_text)
   {
+    const std::map<std::string, double> values = parse_constants(constants);
     try
       {
         expression = std::make_unique<Expression>(text, bound_variables(dim),
-                                                  parse_constants(constants),
-                                                  "friction bound");
+                                                  values, "friction bound");
       }
     catch (const InputError &e)
       {
@@ -53,7 +53,7 @@ namespace hemicontact
     if (!(v >= 0) || !std::isfinite(v))
       {
         std::ostringstream s;
-        s << "data: 'friction bound' = '" << text << "' is "
+        s << "data: 'friction bound' = " << quoted_expression(text) << " is "
           << (std::isfinite(v) ? "negative" : "not a finite number") << " ("
           << v << ") at the contact node x = (" << p << "), t = " << t
           << ", u_nu = " << u_nu << "; F_b must be a finite number >= 0.";

@@ -5,6 +5,7 @@
 #include <hemicontact/normal_laws/piecewise_linear_law.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace hemicontact
 {
@@ -38,6 +39,9 @@ namespace hemicontact
     prm.enter_subsection(law);
     const double value = prm.get_double(key);
     prm.leave_subsection();
+    require(std::isfinite(value), "'" + law + "/" + key + "' = " +
+                                    std::to_string(value) +
+                                    " is not a finite number.");
     return value;
   }
 

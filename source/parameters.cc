@@ -282,7 +282,9 @@ namespace hemicontact
     prm.enter_subsection("data");
     prm.declare_entry("constants", "", Patterns::Anything(),
                       "User constants for the expressions below, e.g. "
-                      "'g=9.81, v=0.1'. 'pi' is predefined.");
+                      "'g=9.81, v=0.1': finite numbers, each name once and "
+                      "none of a variable (x, y, z, t, u_nu) or a function "
+                      "(sin, ...). 'pi' is predefined.");
     const std::string vec_help =
       " Vector-valued: 'dimension' expressions separated by ';' in x, y, z "
       "and t. A single number (e.g. 0) means that value in every component.";
@@ -301,7 +303,9 @@ namespace hemicontact
                       "displacement at the node (positive into the "
                       "foundation), evaluated at the start of each step with "
                       "the known u_n; e.g. mu*cp*pos(u_nu) for normal "
-                      "compliance with friction.");
+                      "compliance with friction. Comparisons < > <= >= == != "
+                      "and && || give 1 or 0; c ? a : b is a if c is not 0, "
+                      "else b; e.g. x < 0.5 ? 0.3 : 0.2.");
     prm.declare_entry("initial displacement", "0", Patterns::Anything(),
                       "u0(x); must vanish on Gamma_1." + vec_help);
     prm.declare_entry("initial velocity", "0", Patterns::Anything(),

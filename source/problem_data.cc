@@ -7,15 +7,61 @@
 #include <hemicontact/input_error.h>
 #include <hemicontact/problem_data.h>
 
+#include <hemicontact/expression.h>
+
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace hemicontact
 {
   namespace
   {
+    /** @p text with its line breaks and runs of spaces made single spaces,
+     *  at most 300 characters of it. */
+    std::string
+    one_paragraph(const std::string &text)
+    {
+      std::string result;
+      for (const char c : text)
+        if (std::isspace(static_cast<unsigned char>(c)))
+          {
+            if (!result.empty() && result.back() != ' ')
+              result += ' ';
+          }
+        else
+          result += c;
+      while (!result.empty() && result.back() == ' ')
+        result.pop_back();
+      if (result.size() > 300)
+        result = result.substr(0, 300) + "...";
+      return result;
+    }
+
+    /** While it lives, what is written to std::cerr is discarded. */
+    class CerrSilenced
+    {
+    public:
+      CerrSilenced()
+        : saved(std::cerr.rdbuf(discarded.rdbuf()))
+      {}
+      ~CerrSilenced()
+      {
+        std::cerr.rdbuf(saved);
+      }
+      CerrSilenced(const CerrSilenced &) = delete;
+      CerrSilenced &
+      operator=(const CerrSilenced &) = delete;
+
+    private:
+      std::ostringstream    discarded;
+      std::streambuf *const saved;
+    };
+
     bool
     is_number(const std::string &s)
     {
@@ -31,11 +77,47 @@ namespace hemicontact
     }
   } // namespace
 
+  namespace
+  {
+    /** Why @p name cannot be a constant of 'data/constants' ("" if it can):
+     *  not a name, or a name the expressions already give a meaning. */
+    std::string
+    reserved_because(const std::string &name)
+    {
+      if (!(std::isalpha(static_cast<unsigned char>(name[0])) ||
+            name[0] == '_') ||
+          !std::all_of(name.begin(), name.end(), [](const char c) {
+            return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+          }))
+        return "is not a name (letters, digits and '_', not starting with "
+               "a digit)";
+      static const std::set<std::string> variables = {"x", "y", "z", "t",
+                                                      "u_nu"};
+      if (variables.count(name) != 0)
+        return "is a variable of the expressions (x, y, z, t, and u_nu in "
+               "the friction bound)";
+      if (name == "pi" || name == "_pi" || name == "_e")
+        return "is a predefined constant";
+      // muparser's and deal.II's functions besides those of the project's
+      // own grammar (Expression::function_names())
+      static const std::set<std::string> parser_functions = {
+        "asin", "acos",  "asinh", "acosh", "atanh", "log2", "log10", "ln",
+        "rint", "sum",   "avg",   "if",    "int",   "ceil", "floor", "cot",
+        "csc",  "sec",   "erfc",  "rand",  "rand_seed",    "atan2", "fmod"};
+      const auto &functions = Expression::function_names();
+      if (parser_functions.count(name) != 0 ||
+          std::find(functions.begin(), functions.end(), name) !=
+            functions.end())
+        return "is a function of the expressions";
+      return "";
+    }
+  } // namespace
+
   std::map<std::string, double>
   parse_constants(const std::string &text)
   {
-    std::map<std::string, double> constants;
-    constants["pi"] = numbers::PI;
+    std::map<std::string, double>      constants;
+    std::map<std::string, std::string> definition; // name -> its entry
     for (const std::string &item : Utilities::split_string_list(text, ','))
       {
         const std::vector<std::string> kv =
@@ -43,16 +125,32 @@ namespace hemicontact
         require(kv.size() == 2 && !kv[0].empty(),
                 "data: 'constants' entry '" + item +
                   "' is not of the form name=value.");
+        const std::string &name = kv[0];
+        const std::string  why  = reserved_because(name);
+        require(why.empty(), "data: the constant '" + name +
+                               "' of 'constants' " + why +
+                               "; choose another name.");
+        const auto earlier = definition.find(name);
+        if (earlier != definition.end())
+          throw InputError("data: 'constants' defines '" + name +
+                           "' twice: '" + earlier->second + "' and '" + item +
+                           "'; keep one (neither is chosen silently).");
+        double value;
         try
           {
-            constants[kv[0]] = Utilities::string_to_double(kv[1]);
+            value = Utilities::string_to_double(kv[1]);
           }
         catch (...)
           {
             throw InputError("data: 'constants' entry '" + item +
                              "' does not give a number.");
           }
+        require(std::isfinite(value), "data: 'constants' entry '" + item +
+                                        "' is not a finite number.");
+        constants[name]  = value;
+        definition[name] = item;
       }
+    constants["pi"] = numbers::PI;
     return constants;
   }
 
@@ -68,14 +166,14 @@ namespace hemicontact
         is_number(expressions[0]))
       expressions.assign(n_components, expressions[0]);
     require(expressions.size() == n_components,
-            "data: '" + parameter_name + "' = '" + expression + "' has " +
+            "data: '" + parameter_name + "' = " + quoted_expression(expression) + " has " +
               std::to_string(expressions.size()) +
               " components separated by ';' but needs " +
               std::to_string(n_components) + ".");
     for (const std::string &e : expressions)
       require(!e.empty(), "data: '" + parameter_name +
-                            "' has an empty component in '" + expression +
-                            "'.");
+                            "' has an empty component in " +
+                            quoted_expression(expression) + ".");
 
     // constant data (e.g. the default zero body force) need no parser: a
     // ConstantFunction evaluates without muparser's per-thread lookup, and
@@ -93,37 +191,36 @@ namespace hemicontact
 
     const std::string variables =
       dim == 2 ? std::string("x,y,t") : std::string("x,y,z,t");
+    const std::map<std::string, double> constants =
+      parse_constants(constants_text);
     auto function = std::make_unique<FunctionParser<dim>>(n_components);
+    const std::string what = "data: cannot parse '" + parameter_name +
+                             "' = " + quoted_expression(expression);
+    // deal.II writes muparser's own report (the whole expression) to
+    // std::cerr before it throws: keep it out of the one-paragraph message
+    const CerrSilenced silenced;
     try
       {
-        function->initialize(variables, expressions,
-                             parse_constants(constants_text),
+        function->initialize(variables, expressions, constants,
                              /*time_dependent=*/true);
         // muparser reports some errors only on evaluation: try once
         Vector<double> values(n_components);
         function->vector_value(Point<dim>(), values);
       }
-    catch (const InputError &)
-      {
-        throw;
-      }
     catch (const ExceptionBase &e)
       {
         std::ostringstream s;
         e.print_info(s);
-        throw InputError("data: cannot parse '" + parameter_name + "' = '" +
-                         expression + "' (variables " + variables +
-                         " and the constants): " + s.str());
+        throw InputError(what + " (variables " + variables +
+                         " and the constants): " + one_paragraph(s.str()));
       }
     catch (const std::exception &e)
       {
-        throw InputError("data: cannot parse '" + parameter_name + "' = '" +
-                         expression + "': " + e.what());
+        throw InputError(what + ": " + one_paragraph(e.what()));
       }
     catch (...)
       {
-        throw InputError("data: cannot parse '" + parameter_name + "' = '" +
-                         expression + "' (variables " + variables + ").");
+        throw InputError(what + " (variables " + variables + ").");
       }
     return function;
   }

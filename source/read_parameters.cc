@@ -7,10 +7,14 @@
 #include <hemicontact/normal_law.h>
 #include <hemicontact/parameters.h>
 
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <iterator>
+#include <map>
 #include <set>
 #include <fstream>
 #include <sstream>
@@ -87,6 +91,142 @@ namespace hemicontact
       return message;
     }
 
+    /** @p text without leading and trailing white space, with each run
+     *  of white space inside made one space. */
+    std::string
+    normalized(const std::string &text)
+    {
+      std::string result;
+      for (const char c : text)
+        if (std::isspace(static_cast<unsigned char>(c)))
+          {
+            if (!result.empty() && result.back() != ' ')
+              result += ' ';
+          }
+        else
+          result += c;
+      if (!result.empty() && result.back() == ' ')
+        result.pop_back();
+      return result;
+    }
+
+    /**
+     * Throw an InputError if the .prm @p text sets an entry twice within
+     * one subsection block (between a 'subsection' and its 'end', or at the
+     * top level), naming the entry and both lines of @p filename: deal.II
+     * would take the last value silently. A later block of the same
+     * subsection may set an entry again (scripts append such blocks to
+     * override a file's values).
+     */
+    void
+    require_each_entry_once_in_prm(const std::string &text,
+                                   const std::string &filename)
+    {
+      std::istringstream       in(text);
+      std::vector<std::string> path;
+      // per open block: the line of each entry set in it
+      std::vector<std::map<std::string, unsigned int>> blocks(1);
+      std::string  line, statement;
+      unsigned int line_number = 0, start = 0;
+      while (std::getline(in, line))
+        {
+          ++line_number;
+          if (statement.empty())
+            start = line_number;
+          // a line ending in a backslash continues on the next one
+          const std::size_t end = line.find_last_not_of(" \t\r");
+          if (end != std::string::npos && line[end] == '\\')
+            {
+              statement += line.substr(0, end) + " ";
+              continue;
+            }
+          statement += line;
+          const std::size_t comment = statement.find('#');
+          const std::string s = normalized(statement.substr(0, comment));
+          statement.clear();
+          if (s.rfind("subsection ", 0) == 0)
+            {
+              path.push_back(normalized(s.substr(11)));
+              blocks.emplace_back();
+            }
+          else if (s == "end" && !path.empty())
+            {
+              path.pop_back();
+              blocks.pop_back();
+            }
+          else if (s.rfind("set ", 0) == 0 && s.find('=') != std::string::npos)
+            {
+              const std::string name =
+                normalized(s.substr(4, s.find('=') - 4));
+              const auto known = blocks.back().emplace(name, start);
+              if (known.second)
+                continue;
+              std::string entry;
+              for (const std::string &p : path)
+                entry += p + "/";
+              throw InputError("the parameter file '" + filename + "' sets '" +
+                               entry + name + "' twice in one subsection, on line " +
+                               std::to_string(known.first->second) +
+                               " and on line " + std::to_string(start) +
+                               "; keep one (neither is chosen silently).");
+            }
+        }
+    }
+
+    /** Throw an InputError naming the key path (e.g. "time/end time") of
+     *  a key that occurs twice in one object of the JSON @p tree. */
+    void
+    require_each_key_once(const boost::property_tree::ptree &tree,
+                          const std::string &prefix, const std::string &filename)
+    {
+      std::set<std::string> seen;
+      for (const auto &child : tree)
+        {
+          if (child.first.empty()) // an element of an array
+            continue;
+          require(seen.insert(child.first).second,
+                  "the parameter file '" + filename + "' has the key '" +
+                    prefix + child.first +
+                    "' twice; keep one (neither is chosen silently).");
+          require_each_key_once(child.second, prefix + child.first + "/",
+                                filename);
+        }
+    }
+
+    /** The same for the JSON @p text; a file that is not valid JSON is
+     *  left to deal.II's reader, which reports where. */
+    void
+    require_each_entry_once_in_json(const std::string &text,
+                                    const std::string &filename)
+    {
+      boost::property_tree::ptree tree;
+      std::istringstream          in(text);
+      try
+        {
+          boost::property_tree::read_json(in, tree);
+        }
+      catch (const boost::property_tree::json_parser_error &)
+        {
+          return;
+        }
+      require_each_key_once(tree, "", filename);
+    }
+
+    /** "json", "xml" or "prm": how deal.II reads @p filename (by its
+     *  extension, in any case; anything else is .prm). */
+    std::string
+    format_of(const std::string &filename)
+    {
+      std::string extension = std::filesystem::path(filename).extension();
+      std::transform(extension.begin(), extension.end(), extension.begin(),
+                     [](const unsigned char c) { return std::tolower(c); });
+      if (extension == ".json")
+        return "json";
+      if (extension == ".xml")
+        return "xml";
+      return "prm";
+    }
+
     template <typename ParseFunction>
     Parameters
     read_with(ParameterHandler &prm, const std::string &source,
@@ -158,10 +298,21 @@ namespace hemicontact
     }
     // a UTF-8 byte order mark (written by some editors) is not part of the
     // first line
-    const bool bom = text.rfind("\xEF\xBB\xBF", 0) == 0;
+    const bool        bom    = text.rfind("\xEF\xBB\xBF", 0) == 0;
+    const std::string body   = bom ? text.substr(3) : text;
+    const std::string format = format_of(filename);
+    if (format == "prm")
+      require_each_entry_once_in_prm(body, filename);
+    else if (format == "json")
+      require_each_entry_once_in_json(body, filename);
     return read_with(prm, "'" + filename + "'", [&]() {
-      if (bom)
-        prm.parse_input_from_string(text.substr(3), "", false);
+      std::istringstream in(body);
+      if (format == "json")
+        prm.parse_input_from_json(in);
+      else if (format == "xml")
+        prm.parse_input_from_xml(in);
+      else if (bom)
+        prm.parse_input_from_string(body, "", false);
       else
         prm.parse_input(filename);
       if (!overrides.empty())

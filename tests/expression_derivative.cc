@@ -2,7 +2,7 @@
 // (Sacado) of the same expression: first and second derivatives of
 // expressions using every rule of the grammar (+ - * / ^ with integer and
 // real exponents, unary minus, every function, pos/abs/max/min on both sides
-// of their kinks), at points of a grid, agree to round-off. The same
+// of their kinks, the comparisons, && || and c ? a : b), at points of a grid, agree to round-off. The same
 // expressions and derivatives on one ExpressionTape, evaluated for all
 // points of the grid at once with the time uniform, give the values of the
 // trees.
@@ -30,7 +30,10 @@ main(int argc, char **argv)
     "log(2 + x*y) + sqrt(3 + y) + tanh(x - y) + sinh(t) * cosh(x)",
     "atan(x*y) + pow(1.5 + x, 2.5) + pow(2 + y, x) + (2 + x)^0.5",
     "pos(x - 0.1)^3 + abs(y - 0.2)*x + max(x, y)*t + min(x*x, y)",
-    "-(x - y)^2 + step(x)*y + sign(y - 0.3)*x^2 + pos(t - x)"};
+    "-(x - y)^2 + step(x)*y + sign(y - 0.3)*x^2 + pos(t - x)",
+    "(x < y)*x^2 + (x >= 0.15 && y != 0.05)*t*x + (x > y || t <= 0.5)*y^2 - "
+    "(x == 0.45)*t*y",
+    "(x < y ? x^2*t : sin(y)*x) + (t > 0.5 ? y : 0)"};
 
   using AD  = Sacado::Fad::SFad<double, 3>;
   using AD2 = Sacado::Fad::SFad<AD, 3>;

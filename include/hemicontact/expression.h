@@ -15,7 +15,10 @@ namespace hemicontact
    * variables and constants, + - * / ^, unary minus, parentheses, and the
    * functions sin cos tan exp log sqrt abs tanh sinh cosh atan, pos(a) =
    * max(a, 0) (for C^2 cut-offs such as pos(x-0.4)^3), step(a) (1 if a > 0,
-   * else 0), sign(a) (-1 if a < 0, else 1), pow(a,b), max(a,b), min(a,b).
+   * else 0), sign(a) (-1 if a < 0, else 1), pow(a,b), max(a,b), min(a,b),
+   * and, as in muparser, the comparisons < > <= >= == != and the logical
+   * && || (1 if true, else 0; looser than + and -, then ||), and c ? a : b
+   * (a if c is not 0, else b; loosest of all).
    *
    * derivative() differentiates symbolically: the derivatives of a
    * manufactured solution are plain expressions evaluated in doubles.
@@ -86,6 +89,18 @@ namespace hemicontact
     /** The function_id of pow, the first function of two arguments. */
     static constexpr int first_binary_function = 14;
 
+    /** The function_id of '<', the first comparison or logical operator
+     *  (written between its operands, not as a call). */
+    static constexpr int first_condition = 17;
+
+    /** The function_id of c ? a : b, whose node has three arguments. */
+    static constexpr int conditional = 25;
+
+    /** Whether the function number @p id is a comparison or a logical
+     *  operator (a value 1 or 0, piecewise constant). */
+    static bool
+    is_condition(const int id);
+
     /** f(a) (or f(a, b)) for the function number @p id of function_names(). */
     template <typename Number>
     static Number
@@ -104,6 +119,13 @@ namespace hemicontact
 
     std::unique_ptr<Node> root;
   };
+
+  /**
+   * @p text in quotes for a message: at most its first 200 characters,
+   * followed by "..." and its length if it is longer.
+   */
+  std::string
+  quoted_expression(const std::string &text);
 
   // ---------------------------------------------------------------------
   template <typename Number>
@@ -159,6 +181,10 @@ namespace hemicontact
           }
         default:
           {
+            if (node.function_id == conditional)
+              return eval(*node.args[0], values) != Number(0.) ?
+                       eval(*node.args[1], values) :
+                       eval(*node.args[2], values);
             const Number a = eval(*node.args[0], values);
             const Number b =
               node.args.size() > 1 ? eval(*node.args[1], values) : Number(0.);
@@ -216,8 +242,24 @@ namespace hemicontact
           return pow(a, b);
         case 15:
           return a > b ? a : b;
-        default: // 16: min
+        case 16:
           return a < b ? a : b;
+        case 17:
+          return Number(a < b ? 1. : 0.);
+        case 18:
+          return Number(a > b ? 1. : 0.);
+        case 19:
+          return Number(a <= b ? 1. : 0.);
+        case 20:
+          return Number(a >= b ? 1. : 0.);
+        case 21:
+          return Number(a == b ? 1. : 0.);
+        case 22:
+          return Number(a != b ? 1. : 0.);
+        case 23:
+          return Number(a != Number(0.) && b != Number(0.) ? 1. : 0.);
+        default: // 24: ||
+          return Number(a != Number(0.) || b != Number(0.) ? 1. : 0.);
       }
   }
 } // namespace hemicontact

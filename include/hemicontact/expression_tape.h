@@ -114,7 +114,7 @@ namespace hemicontact
     {
       Op           op;
       int          function_id = -1;
-      unsigned int a = 0, b = 0; ///< operand instructions
+      unsigned int a = 0, b = 0, c = 0; ///< operand instructions
       unsigned int n = 0;        ///< variable index or integer exponent
       double       value = 0;    ///< constant
       unsigned int n_operands = 0;
@@ -161,10 +161,10 @@ namespace hemicontact
     /** The instructions each Pass runs, in order. */
     std::vector<unsigned int> all_instructions, time_free_instructions,
       given_spatial_instructions;
-    /** While compiling: the instruction of each (op, function, a, b, n,
-     *  value bits) appended so far. */
+    /** While compiling: the instruction of each (op, function, a, b, c,
+     *  n, value bits) appended so far. */
     using Key = std::tuple<int, int, unsigned int, unsigned int, unsigned int,
-                           std::uint64_t>;
+                           unsigned int, std::uint64_t>;
     std::map<Key, unsigned int> known;
   };
 } // namespace hemicontact

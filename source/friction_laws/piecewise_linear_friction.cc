@@ -4,6 +4,7 @@
 #include <hemicontact/input_error.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace hemicontact
 {
@@ -33,6 +34,11 @@ namespace hemicontact
               throw InputError(law_prefix + "the breakpoint '" + item +
                                "' does not hold two numbers s:g.");
             }
+          require(std::isfinite(result.back().first) &&
+                    std::isfinite(result.back().second),
+                  law_prefix + "the breakpoint '" + item +
+                    "' of 'response breakpoints' holds a value that is not "
+                    "a finite number.");
         }
       return result;
     }

@@ -33,6 +33,11 @@ namespace hemicontact
               throw InputError("normal law 'piecewise linear': the breakpoint '" +
                                item + "' does not hold two numbers r:p.");
             }
+          require(std::isfinite(result.back().first) &&
+                    std::isfinite(result.back().second),
+                  "normal law 'piecewise linear': the breakpoint '" + item +
+                    "' of 'subgradient breakpoints' holds a value that is "
+                    "not a finite number.");
         }
       return result;
     }

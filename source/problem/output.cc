@@ -8,6 +8,7 @@
 #include <hemicontact/input_error.h>
 #include <hemicontact/output_file.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -160,6 +161,10 @@ namespace hemicontact
         require(coordinates.size() == dim,
                 "output: 'probe points' entry '" + text + "' needs " +
                   std::to_string(dim) + " coordinates.");
+        require(std::all_of(coordinates.begin(), coordinates.end(),
+                            [](const double c) { return std::isfinite(c); }),
+                "output: 'probe points' entry '" + text +
+                  "' has a coordinate that is not a finite number.");
         Point<dim> p;
         for (unsigned int d = 0; d < dim; ++d)
           p[d] = coordinates[d];
