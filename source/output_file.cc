@@ -339,7 +339,7 @@ namespace hemicontact
     if (available >= bytes)
       return "";
     return "No space left on device (about " + std::to_string(bytes / 1024) +
-           " kB needed, " + std::to_string(available / 1024) + " kB free)";
+           " KiB needed, " + std::to_string(available / 1024) + " KiB free)";
   }
 
   void

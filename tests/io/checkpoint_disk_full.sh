@@ -25,7 +25,7 @@ for size in 300k 400k 500k 600k 700k 800k 900k 1000k 1500k 2000k; do
   mount -t tmpfs -o size=$size tmpfs disk
   status=0; "$exe" run.prm > run.out 2> run.err || status=$?
   [ "$status" -eq 6 ] || { echo "FAIL ($size): exit code $status, not 6"; cat run.err; exit 1; }
-  grep -q "I/O error: cannot write the checkpoint of step [0-9]* in 'disk/out/checkpoint': No space left on device (about [0-9]* kB needed, [0-9]* kB free)" run.err ||
+  grep -q "I/O error: cannot write the checkpoint of step [0-9]* in 'disk/out/checkpoint': No space left on device (about [0-9]* KiB needed, [0-9]* KiB free)" run.err ||
     { echo "FAIL ($size): the message does not name the directory and the cause"; cat run.err; exit 1; }
   rm -rf copy; cp -a disk/out copy
   umount disk
