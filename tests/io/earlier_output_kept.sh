@@ -2,13 +2,15 @@
 # earlier_output_kept.sh EXE PRM WORKDIR STUDY_PRM
 # A run that stops on bad data at its first step, in a directory holding an
 # earlier run's results, leaves every file of that directory as it was
-# (steps.csv, probes.csv, solution.pvd, the solution and contact files);
+# (steps.csv, probes.csv, solution.pvd, the solution and contact files),
+# on 1 and on 2 MPI ranks;
 # so does such a run after one killed before its first step (which left the
 # earlier files in earlier_run/); a run that completes leaves only its own
 # files and no earlier_run/. A convergence study that stops on bad data
 # leaves an earlier convergence.csv as it was.
 set -euo pipefail
 exe=$1; prm=$2; work=$3; study_prm=$(realpath "$4")
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
 { cat "$prm"
   printf 'subsection time\n  set time step = 0.04\nend\n'
@@ -23,6 +25,12 @@ status=0; "$exe" bad.prm 2> bad.err || status=$?
 grep -q "input error: data: 'body force'" bad.err || { echo "FAIL: no input error"; cat bad.err; exit 1; }
 diff -r earlier out || { echo "FAIL: the bad run changed the earlier run's files"; exit 1; }
 echo "bad data at step 1: exit 2, the earlier run's $(ls out | wc -l) files unchanged"
+# the same on 2 MPI ranks (each writes its own piece of solution_00000)
+status=0; mpirun -np 2 "$exe" bad.prm > /dev/null 2> bad.err || status=$?
+[ "$status" -ne 0 ] || { echo "FAIL: the bad run on 2 ranks succeeded"; exit 1; }
+grep -q "input error: data: 'body force'" bad.err || { echo "FAIL: no input error on 2 ranks"; cat bad.err; exit 1; }
+diff -r earlier out || { echo "FAIL: the bad run on 2 ranks changed the earlier run's files"; exit 1; }
+echo "the same on 2 ranks: the earlier files unchanged"
 
 # a run killed before its first step (a large mesh: the first step takes a
 # while), then the bad run: the earlier files come back
