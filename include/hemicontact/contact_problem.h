@@ -341,6 +341,11 @@ namespace hemicontact
      */
     void
     finish_solution_output();
+    /**
+     * Create the output directory, lock it, set an earlier run's files
+     * aside (or on resume cut the tables back to the checkpoint) and open
+     * steps.csv and probes.csv.
+     */
     void
     open_tables();
     void
@@ -352,7 +357,25 @@ namespace hemicontact
     void
     print_step(const StepStatistics &stats) const;
 
+    /**
+     * Refuse (OutputError on every rank, naming the directory and the
+     * space) a checkpoint the file system has no room for: an estimate of
+     * its size from the mesh against the free space.
+     */
+    void
+    require_checkpoint_space() const;
+    /**
+     * After an input or output error: wait for the solution write and
+     * move an earlier run's files back if this run has not completed a
+     * step (EarlierOutput).
+     */
+    void
+    restore_earlier_output();
+
     /** @name run.cc */
+    /** run() without the restoring of an earlier run's files. */
+    void
+    run_and_write();
     /**
      * One interval [start, start + k]: a step of size k, or if Newton
      * fails (and 'time step halvings' allows) two intervals of k/2.
@@ -482,6 +505,8 @@ namespace hemicontact
     std::ofstream                               steps_file;
     /** Held by the root while the run writes its output directory. */
     std::unique_ptr<OutputLock>                 output_lock;
+    /** An earlier run's files, until this run completes its first step. */
+    EarlierOutput                               earlier_output;
     std::ofstream                               probes_file;
 
     /** What a solution write reads: copies made when the write started. */

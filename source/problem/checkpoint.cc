@@ -477,33 +477,6 @@ namespace hemicontact
       for (const fs::path &f : old)
         fs::remove(f, ec);
     }
-
-    /**
-     * Keep the header and the rows of @p step or earlier of a CSV table
-     * whose first column is the step (what an interrupted run wrote after
-     * its last checkpoint goes), written aside, then renamed.
-     */
-    void
-    truncate_table(const fs::path &file, const unsigned int step)
-    {
-      std::ifstream in(file);
-      if (!in)
-        return;
-      const fs::path aside = file.string() + ".tmp";
-      std::ofstream  out(aside);
-      std::string    line;
-      bool           header = true;
-      while (std::getline(in, line))
-        {
-          if (!header &&
-              (line.empty() || std::stoul(line.substr(0, line.find(','))) > step))
-            continue;
-          out << line << "\n";
-          header = false;
-        }
-      out.close();
-      fs::rename(aside, file);
-    }
   } // namespace
 
   template <int dim>
@@ -541,6 +514,7 @@ namespace hemicontact
   ContactProblem<dim>::write_checkpoint()
   {
     finish_solution_output(); // the series it saves lists every write
+    require_checkpoint_space(); // p4est aborts on a failed write
     TimerOutput::Scope t(timer, "checkpoint");
     const fs::path     dir  = fs::path(parameters.output.directory) / "checkpoint";
     const fs::path     aside = dir / "writing";
@@ -825,8 +799,13 @@ namespace hemicontact
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
     const fs::path dir = parameters.output.directory;
-    truncate_table(dir / "steps.csv", step_number);
-    truncate_table(dir / "probes.csv", step_number);
+    for (const char *table : {"steps.csv", "probes.csv"})
+      {
+        const std::string warning =
+          truncate_table((dir / table).string(), step_number);
+        if (!warning.empty())
+          std::cerr << "hemicontact: warning: " << warning << std::endl;
+      }
   }
 
 #define HEMICONTACT_INSTANTIATE(dim)                                           \

@@ -70,7 +70,10 @@ namespace hemicontact
   {
     const std::string &dir  = parameters.output.directory;
     std::string        error;
-    bool               write_header = true;
+    // an earlier run's files that cannot be set aside, a table that cannot
+    // be continued
+    std::string io_error, table_error;
+    bool        write_header = true;
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
         std::error_code ec;
@@ -87,13 +90,26 @@ namespace hemicontact
             {
               error = e.what();
             }
+        bool continuing = false;
         if (error.empty())
+          try
+            {
+              earlier_output.set_aside(dir, parameters.checkpoint.resume);
+              continuing = parameters.checkpoint.resume &&
+                           std::filesystem::exists(dir + "/steps.csv");
+              if (continuing)
+                continue_tables();
+            }
+          catch (const InputError &e)
+            {
+              table_error = e.what();
+            }
+          catch (const OutputError &e)
+            {
+              io_error = e.what();
+            }
+        if (error.empty() && table_error.empty() && io_error.empty())
           {
-            const bool continuing =
-              parameters.checkpoint.resume &&
-              std::filesystem::exists(dir + "/steps.csv");
-            if (continuing)
-              continue_tables();
             steps_file.open(dir + "/steps.csv",
                             continuing ? std::ios::app : std::ios::trunc);
             write_header = !continuing;
@@ -104,6 +120,9 @@ namespace hemicontact
       }
     error = Utilities::MPI::broadcast(mpi_communicator, error, 0);
     require(error.empty(), "output: " + error);
+    table_error = Utilities::MPI::broadcast(mpi_communicator, table_error, 0);
+    require(table_error.empty(), table_error);
+    throw_if_any(io_error, mpi_communicator);
 
     if (steps_file.is_open() && write_header)
       steps_file
@@ -480,6 +499,79 @@ namespace hemicontact
         error = append_complete(steps_file,
                                 parameters.output.directory + "/steps.csv",
                                 row.str());
+        // the run has completed a step: an earlier run's files go
+        if (error.empty() && earlier_output.pending())
+          {
+            const std::string failure = earlier_output.keep_new_output();
+            if (!failure.empty())
+              std::cerr << "hemicontact: warning: " << failure << std::endl;
+          }
+      }
+    throw_if_any(error, mpi_communicator);
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::restore_earlier_output()
+  {
+    // every rank's solution files are complete before they are deleted
+    solution_writer.wait();
+    MPI_Barrier(mpi_communicator);
+    if (!earlier_output.pending())
+      return;
+    steps_file.close();
+    probes_file.close();
+    const std::string error = earlier_output.restore();
+    std::cerr << "hemicontact: "
+              << (error.empty() ?
+                    "the earlier run's files in '" +
+                      parameters.output.directory + "' are restored." :
+                    "warning: " + error)
+              << std::endl;
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::require_checkpoint_space() const
+  {
+    namespace fs = std::filesystem;
+    const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+    // w_n, u_n and the branches on every cell (p4est's data file) or at
+    // every dof with its index (the rank files of a simplex mesh), the
+    // cells themselves, and the state with the series and the parameters
+    std::uintmax_t bytes = 16 * 1024;
+    for (const auto &record : pvd_records)
+      bytes += record.second.size() + 32;
+    for (const std::string &entry : parameters.problem_definition)
+      bytes += entry.size() + 16;
+    if (discretization.is_simplex())
+      bytes += std::uintmax_t(dof_handler.n_dofs()) * 4 * sizeof(double) +
+               Utilities::MPI::n_mpi_processes(mpi_communicator) * 8;
+    else
+      bytes += std::uintmax_t(
+                 discretization.triangulation->n_global_active_cells()) *
+               (3 * discretization.fe->n_dofs_per_cell() * sizeof(double) +
+                64);
+    std::string error;
+    if (root)
+      {
+        const fs::path  dir = fs::path(parameters.output.directory) /
+                             "checkpoint";
+        std::error_code ec;
+        // a checkpoint write cut short is deleted before the next one
+        for (const auto &entry : fs::directory_iterator(dir / "writing", ec))
+          {
+            const std::uintmax_t size = fs::file_size(entry.path(), ec);
+            bytes -= std::min(bytes, ec ? 0 : size);
+          }
+        error = free_space_shortfall(
+          fs::is_directory(dir, ec) ? dir.string() : parameters.output.directory,
+          bytes);
+        if (!error.empty())
+          error = "cannot write the checkpoint of step " +
+                  std::to_string(step_number) + " in '" + dir.string() +
+                  "': " + error + "; nothing of it was written, the earlier "
+                  "checkpoints are unchanged.";
       }
     throw_if_any(error, mpi_communicator);
   }
@@ -546,6 +638,8 @@ namespace hemicontact
   template void ContactProblem<dim>::write_solution();                        \
   template void ContactProblem<dim>::finish_solution_output();                \
   template void ContactProblem<dim>::write_step_row(const StepStatistics &);  \
+  template void ContactProblem<dim>::restore_earlier_output();                \
+  template void ContactProblem<dim>::require_checkpoint_space() const;        \
   template void ContactProblem<dim>::print_step(const StepStatistics &) const;
 
   HEMICONTACT_INSTANTIATE(2)

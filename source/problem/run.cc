@@ -162,8 +162,40 @@ namespace hemicontact
   void
   ContactProblem<dim>::run()
   {
+    // an earlier run's files come back if this run stops on an input or
+    // output error before its first step; a solver failure keeps the state
+    // it wrote (doc/outputs.md)
+    try
+      {
+        run_and_write();
+      }
+    catch (const InputError &)
+      {
+        restore_earlier_output();
+        throw;
+      }
+    catch (const OutputError &)
+      {
+        restore_earlier_output();
+        throw;
+      }
+    catch (const SolverFailure &)
+      {
+        const std::string error = earlier_output.keep_new_output();
+        if (!error.empty())
+          std::cerr << "hemicontact: warning: " << error << std::endl;
+        throw;
+      }
+  }
+
+  template <int dim>
+  void
+  ContactProblem<dim>::run_and_write()
+  {
     // validate everything (mesh, boundary ids, data) before touching the
     // output directory, so that a bad input does not truncate earlier output
+    require_usable_output_directory(parameters.output.directory,
+                                    mpi_communicator);
     const CheckpointParameters &checkpoints = parameters.checkpoint;
     require(parameters.adaptivity.pre_refinement_steps <= n_steps,
             "adaptivity: 'pre-refinement steps' (" +
@@ -383,7 +415,8 @@ namespace hemicontact
     const double, const double, const unsigned int);                           \
   template void ContactProblem<dim>::set_time_step(const double);                     \
   template bool ContactProblem<dim>::adapt_mesh_if_due(StepStatistics &);    \
-  template void           ContactProblem<dim>::run();
+  template void           ContactProblem<dim>::run();                        \
+  template void           ContactProblem<dim>::run_and_write();
 
   HEMICONTACT_INSTANTIATE(2)
   HEMICONTACT_INSTANTIATE(3)

@@ -210,28 +210,46 @@ namespace hemicontact
       return result;
     }
 
-    /** Open convergence.csv in the output directory and write its header. */
-    std::ofstream
-    open_csv(const Parameters &parameters)
+    /**
+     * Check that convergence.csv can be written in the output directory
+     * (created if needed) without touching an earlier study's file.
+     */
+    void
+    require_writable_csv(const Parameters &parameters, MPI_Comm comm)
     {
-      std::filesystem::create_directories(parameters.output.directory);
-      std::ofstream csv(parameters.output.directory + "/convergence.csv");
-      require(static_cast<bool>(csv),
-              "output: cannot write convergence.csv in '" +
-                parameters.output.directory + "'.");
+      require_usable_output_directory(parameters.output.directory, comm);
+      std::string error;
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        {
+          const std::string probe =
+            parameters.output.directory + "/convergence.csv.tmp";
+          std::error_code ec;
+          std::filesystem::create_directories(parameters.output.directory, ec);
+          if (ec || !std::ofstream(probe))
+            error = "output: cannot write convergence.csv in '" +
+                    parameters.output.directory + "'.";
+          std::filesystem::remove(probe, ec);
+        }
+      error = Utilities::MPI::broadcast(comm, error, 0);
+      require(error.empty(), error);
+    }
+
+    /** The header of convergence.csv. */
+    std::string
+    csv_header()
+    {
       // new columns go at the end: readers select columns by name or position
-      csv << "level,h,k,n_dofs,n_steps,E_H,E_V,E_u,E_V_H1,E_u_H1,"
+      return "level,h,k,n_dofs,n_steps,E_H,E_V,E_u,E_V_H1,E_u_H1,"
              "mean_newton_iterations,max_newton_iterations,wall_seconds,"
              "share_separating,share_normal_stick,share_damped,"
              "share_stick,share_slip,mean_dofs,max_dofs,step_wall_seconds\n";
-      return csv;
     }
 
-    void
-    write_csv_row(std::ofstream &csv, const unsigned int level,
-                  const LevelResult &r)
+    std::string
+    csv_row(const unsigned int level, const LevelResult &r)
     {
-      const ErrorNorms &e = r.errors;
+      const ErrorNorms & e = r.errors;
+      std::ostringstream csv;
       csv << std::setprecision(10) << level << "," << r.h << "," << r.k << ","
           << r.n_dofs << "," << r.n_steps << "," << e.E_H << "," << e.E_V
           << "," << e.E_u << "," << e.E_V_H1 << "," << e.E_u_H1 << ","
@@ -241,7 +259,7 @@ namespace hemicontact
         csv << "," << share;
       csv << "," << r.mean_dofs << "," << r.max_dofs << ","
           << r.step_wall_seconds << "\n";
-      csv.flush();
+      return csv.str();
     }
 
     void
@@ -385,9 +403,10 @@ namespace hemicontact
     // a 'k' study keeps its orders per halving of k
     const bool against_dofs = adaptive && (type == "h" || type == "coupled");
 
-    std::ofstream csv;
-    if (root)
-      csv = open_csv(parameters);
+    // convergence.csv is replaced (atomically) after each level: an
+    // earlier study's file stays until this one has a row of its own
+    require_writable_csv(parameters, comm);
+    std::string csv = csv_header();
 
     std::vector<LevelResult> results;
     ConvergenceTable         table;
@@ -397,8 +416,12 @@ namespace hemicontact
         p.output.terminal = "quiet";
         results.push_back(run_level<dim>(p, prm, comm, level == 0));
         add_table_row(table, level, results.back(), adaptive);
-        if (root)
-          write_csv_row(csv, level, results.back());
+        csv += csv_row(level, results.back());
+        throw_if_any(root ? write_atomically(parameters.output.directory +
+                                               "/convergence.csv",
+                                             csv) :
+                            "",
+                     comm);
         if (verbose)
           print_branch_shares(level, results.back());
       }

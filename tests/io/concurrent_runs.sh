@@ -9,10 +9,13 @@ exe=$1; prm=$2; work=$3
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
 { cat "$prm"
   printf 'subsection geometry\n  set global refinements = 5\nend\n'
-  printf 'subsection time\n  set end time = 6\nend\n'
+  printf 'subsection time\n  set end time = 6\n  set time step = 0.04\nend\n'
   printf 'subsection output\n  set directory = shared\n  set terminal = quiet\nend\n'; } > run.prm
 "$exe" run.prm & first=$!
-while [ ! -s shared/steps.csv ]; do sleep 0.05; done
+while [ ! -s shared/steps.csv ]; do
+  kill -0 $first 2> /dev/null || { echo "FAIL: the first run ended before writing a row"; exit 1; }
+  sleep 0.05
+done
 status=0; "$exe" run.prm 2> second.err || status=$?
 kill -0 $first 2> /dev/null || { echo "FAIL: the first run ended before the second was refused (too short)"; exit 1; }
 [ "$status" -eq 2 ] || { echo "FAIL: the second run exited with $status, not 2"; cat second.err; kill $first; exit 1; }

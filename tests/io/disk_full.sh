@@ -12,6 +12,7 @@ mount -t tmpfs -o size=1m tmpfs disk 2> /dev/null || { echo "cannot mount a tmpf
 trap 'cd / && umount "$work/disk" 2> /dev/null || true' EXIT
 { cat "$prm"
   printf 'subsection geometry\n  set global refinements = 4\nend\n'
+  printf 'subsection time\n  set time step = 0.04\nend\n'
   printf 'subsection output\n  set directory = disk/out\n  set vtu interval = 1\n'
   printf '  set probe points = 4, 0\n  set terminal = quiet\nend\n'; } > run.prm
 status=0; "$exe" run.prm 2> run.err || status=$?
