@@ -26,17 +26,7 @@ namespace hemicontact
     std::string
     one_paragraph(const std::string &text)
     {
-      std::string result;
-      for (const char c : text)
-        if (std::isspace(static_cast<unsigned char>(c)))
-          {
-            if (!result.empty() && result.back() != ' ')
-              result += ' ';
-          }
-        else
-          result += c;
-      while (!result.empty() && result.back() == ' ')
-        result.pop_back();
+      std::string result = single_spaced(text);
       if (result.size() > 300)
         result = result.substr(0, 300) + "...";
       return result;

@@ -77,37 +77,7 @@ namespace hemicontact
     {
       std::ostringstream s;
       e.print_info(s);
-      std::string message;
-      for (const char c : s.str())
-        if (std::isspace(static_cast<unsigned char>(c)))
-          {
-            if (!message.empty() && message.back() != ' ')
-              message += ' ';
-          }
-        else
-          message += c;
-      while (!message.empty() && message.back() == ' ')
-        message.pop_back();
-      return message;
-    }
-
-    /** @p text without leading and trailing white space, with each run
-     *  of white space inside made one space. */
-    std::string
-    normalized(const std::string &text)
-    {
-      std::string result;
-      for (const char c : text)
-        if (std::isspace(static_cast<unsigned char>(c)))
-          {
-            if (!result.empty() && result.back() != ' ')
-              result += ' ';
-          }
-        else
-          result += c;
-      if (!result.empty() && result.back() == ' ')
-        result.pop_back();
-      return result;
+      return single_spaced(s.str());
     }
 
     /**
@@ -142,11 +112,11 @@ namespace hemicontact
             }
           statement += line;
           const std::size_t comment = statement.find('#');
-          const std::string s = normalized(statement.substr(0, comment));
+          const std::string s = single_spaced(statement.substr(0, comment));
           statement.clear();
           if (s.rfind("subsection ", 0) == 0)
             {
-              path.push_back(normalized(s.substr(11)));
+              path.push_back(single_spaced(s.substr(11)));
               blocks.emplace_back();
             }
           else if (s == "end" && !path.empty())
@@ -157,7 +127,7 @@ namespace hemicontact
           else if (s.rfind("set ", 0) == 0 && s.find('=') != std::string::npos)
             {
               const std::string name =
-                normalized(s.substr(4, s.find('=') - 4));
+                single_spaced(s.substr(4, s.find('=') - 4));
               const auto known = blocks.back().emplace(name, start);
               if (known.second)
                 continue;

@@ -3,9 +3,9 @@
 // solver settings: run 0.15 time units of a .prm plus extra settings and
 // return the final velocity and the Newton and Krylov iterations it took.
 // The solver's tuning constants (SolverTuning) are changed from C++.
-// The 0.15 time units are 3 steps in 2D (k = 0.05, as in
-// tests/block_2d_short.prm) and 8 steps in 3D (k = 0.01875, the nearest
-// divisor of 0.15 to the 0.02 of tests/block_3d_short.prm).
+// In 2D 3 steps of k = 0.04 (as in tests/block_2d_short.prm), in 3D 8 steps
+// of k = 0.01875 (the nearest divisor of 0.15 to the 0.02 of
+// tests/block_3d_short.prm).
 #include <hemicontact/contact_problem.h>
 #include <hemicontact/parameters.h>
 
@@ -29,10 +29,11 @@ run_block(const std::string &file, const std::string &settings,
   using namespace hemicontact;
   std::ifstream     in(file);
   std::stringstream text;
-  const unsigned int n_steps = (dim == 2 ? 3 : 8);
+  const unsigned int n_steps  = (dim == 2 ? 3 : 8);
+  const double       end_time = (dim == 2 ? 0.12 : 0.15);
   text.precision(17);
-  text << in.rdbuf() << "subsection time\n  set end time = 0.15\n"
-       << "  set time step = " << 0.15 / n_steps << "\nend\n"
+  text << in.rdbuf() << "subsection time\n  set end time = " << end_time
+       << "\n  set time step = " << end_time / n_steps << "\nend\n"
        << "subsection output\n  set directory = output-" << dim
        << "d\n  set terminal = quiet\nend\n"
        << settings;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cctype>
 #include <stdexcept>
 #include <string>
 
@@ -64,5 +65,24 @@ namespace hemicontact
   {
     if (!condition)
       throw InputError(message);
+  }
+
+  /** @p text without leading and trailing white space, each run of white
+   *  space inside it one space (a message, or a line of an input file). */
+  inline std::string
+  single_spaced(const std::string &text)
+  {
+    std::string result;
+    for (const char c : text)
+      if (std::isspace(static_cast<unsigned char>(c)))
+        {
+          if (!result.empty() && result.back() != ' ')
+            result += ' ';
+        }
+      else
+        result += c;
+    if (!result.empty() && result.back() == ' ')
+      result.pop_back();
+    return result;
   }
 } // namespace hemicontact

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <tuple>
 #include <csignal>
-#include <filesystem>
 #include <iomanip>
 #include <sstream>
 
@@ -207,16 +206,6 @@ namespace hemicontact
     else
       setup();
     setup_probes(); // checks the points before the output is touched
-    {
-      const std::filesystem::path dir =
-        std::filesystem::path(parameters.output.directory) / "checkpoint";
-      std::error_code ec;
-      require(!has_checkpoints() || !std::filesystem::exists(dir, ec) ||
-                std::filesystem::is_directory(dir, ec),
-              "output: '" + dir.string() +
-                "' is not a directory, but the run's checkpoints go there "
-                "(also on SIGTERM or SIGINT); move it away.");
-    }
     open_tables();
     if (!checkpoints.resume)
       start_checkpoint_run();
