@@ -333,22 +333,6 @@ namespace hemicontact
                          const std::string &                  parameter_name)
     : root(Parser(text, variables, constants, parameter_name).parse())
   {}
-  unsigned int
-  Expression::size() const
-  {
-    unsigned int              n     = 0;
-    std::vector<const Node *> stack = {root.get()};
-    while (!stack.empty())
-      {
-        const Node *node = stack.back();
-        stack.pop_back();
-        ++n;
-        for (const auto &arg : node->args)
-          stack.push_back(arg.get());
-      }
-    return n;
-  }
-
   bool
   Expression::uses_variable(const unsigned int index) const
   {

@@ -539,8 +539,8 @@ namespace hemicontact
                       "Write a checkpoint (mesh and state, to "
                       "OUTPUT/checkpoint/) after every this many steps; 0: "
                       "never. The last two checkpoints are kept; each is "
-                      "written aside, then renamed. Needs 'geometry/cell type "
-                      "= hypercube'.");
+                      "written aside, then renamed. A simplex mesh resumes "
+                      "on the number of MPI ranks that wrote it.");
     prm.declare_entry("wall interval", "0", Patterns::Double(0),
                       "Also write one when this many wall-clock seconds have "
                       "passed since the last; 0: never.");
@@ -602,9 +602,6 @@ namespace hemicontact
     checkpoint.parse(prm);
     manufactured.parse(prm);
     study.parse(prm);
-    prm.enter_subsection("normal law");
-    normal_law_name = prm.get("law");
-    prm.leave_subsection();
 
     {
       std::ostringstream message;

@@ -388,9 +388,6 @@ namespace hemicontact
     set_time_step(const double k);
 
     /** @name checkpoint.cc */
-    /** Whether this mesh type can be checkpointed (p4est). */
-    bool
-    has_checkpoints() const;
     /**
      * A run not resumed: a new run id and the mesh file's signature (for
      * its checkpoints); OUTPUT/checkpoint, if it exists, then names this

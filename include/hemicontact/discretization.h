@@ -51,13 +51,6 @@ namespace hemicontact
       return simplex;
     }
 
-    /** Whether the mesh can be adapted (p4est). */
-    bool
-    is_distributed() const
-    {
-      return !simplex;
-    }
-
     /** A quadrature of @p n_points per direction (Gauss / Gauss simplex). */
     Quadrature<dim>
     cell_quadrature(const unsigned int n_points) const;

@@ -73,10 +73,6 @@ namespace hemicontact
       return *root;
     }
 
-    /** The number of nodes of the expression tree. */
-    unsigned int
-    size() const;
-
     /** Whether the expression refers to the variable number @p index. */
     bool
     uses_variable(const unsigned int index) const;

@@ -235,8 +235,6 @@ namespace hemicontact
     CheckpointParameters       checkpoint;
     ManufacturedParameters     manufactured;
     ConvergenceStudyParameters study;
-    /** The normal law is parsed by its own factory (see normal_law.h). */
-    std::string normal_law_name;
     /**
      * Every entry that defines the problem, as "path/entry = value" (all
      * subsections but output, checkpoint, the solvers and the convergence

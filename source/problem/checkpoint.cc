@@ -480,15 +480,6 @@ namespace hemicontact
   } // namespace
 
   template <int dim>
-  bool
-  ContactProblem<dim>::has_checkpoints() const
-  {
-    return discretization.is_simplex() ||
-           dynamic_cast<const parallel::distributed::Triangulation<dim> *>(
-             discretization.triangulation.get()) != nullptr;
-  }
-
-  template <int dim>
   void
   ContactProblem<dim>::start_checkpoint_run()
   {
@@ -809,7 +800,6 @@ namespace hemicontact
   }
 
 #define HEMICONTACT_INSTANTIATE(dim)                                           \
-  template bool ContactProblem<dim>::has_checkpoints() const;                 \
   template void ContactProblem<dim>::start_checkpoint_run();                  \
   template void ContactProblem<dim>::write_checkpoint();                      \
   template void ContactProblem<dim>::setup_from_checkpoint();                 \

@@ -301,16 +301,13 @@ namespace hemicontact
                 write_contact_csv();
               }
             finish_solution_output();
-            if (has_checkpoints())
-              write_checkpoint();
+            write_checkpoint();
             throw SolverFailure(std::string(failure.what()) +
                                 " The last converged state (step " +
                                 std::to_string(step_number) +
                                 ") was written to '" +
-                                parameters.output.directory + "'" +
-                                (has_checkpoints() ?
-                                   " with a checkpoint to resume from." :
-                                   "."));
+                                parameters.output.directory +
+                                "' with a checkpoint to resume from.");
           }
         ++totals.steps;
         totals.newton_iterations += stats.newton_iterations;
@@ -364,7 +361,7 @@ namespace hemicontact
           (checkpoints.wall_interval > 0 &&
            Utilities::MPI::max(since_checkpoint.wall_time(), mpi_communicator) >=
              checkpoints.wall_interval);
-        if (has_checkpoints() && (periodic || (interrupted && !finished())))
+        if (periodic || (interrupted && !finished()))
           {
             write_checkpoint();
             since_checkpoint.reset();
@@ -375,12 +372,9 @@ namespace hemicontact
             finish_solution_output();
             throw RunInterrupted(
               "stopped after step " + std::to_string(step_number) + " (t = " +
-              std::to_string(get_time()) + ")" +
-              (has_checkpoints() ? "; a checkpoint was written to '" +
-                                     parameters.output.directory +
-                                     "/checkpoint'; continue with "
-                                     "'hemicontact --resume FILE.prm'." :
-                                   "; no checkpoint (simplex mesh)."));
+              std::to_string(get_time()) + "); a checkpoint was written to '" +
+              parameters.output.directory +
+              "/checkpoint'; continue with 'hemicontact --resume FILE.prm'.");
           }
       }
 
