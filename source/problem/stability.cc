@@ -34,10 +34,10 @@ namespace hemicontact
       elastic_matrix.vmult(out, in);
       base_constraints.set_zero(out);
     };
-    double     current_k = k;
-    const auto apply_s   = [&](const TrilinosWrappers::MPI::Vector &in,
+    double                        current_k = k;
+    TrilinosWrappers::MPI::Vector m_in(locally_owned_dofs, mpi_communicator);
+    const auto apply_s = [&](const TrilinosWrappers::MPI::Vector &in,
                              TrilinosWrappers::MPI::Vector &      out) {
-      TrilinosWrappers::MPI::Vector m_in(out);
       mass_matrix.vmult(m_in, in);
       step_matrix.vmult(out, in);
       out.add(1. / current_k, m_in);
