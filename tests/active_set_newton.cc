@@ -8,8 +8,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <hemicontact/active_set_newton.h>
-#include <hemicontact/input_error.h>
+#include <hemicontact/solver/active_set_newton.h>
+#include <hemicontact/base/exceptions.h>
 
 #include "tests.h"
 

@@ -15,9 +15,9 @@
 // - at the finest level the adaptive E_V and E_u lie below 0.95 times the
 //   uniform errors at the adaptive mean dofs (log-log interpolated or
 //   extrapolated; about 0.87 and 0.80 when written).
-#include <hemicontact/convergence_study.h>
-#include <hemicontact/normal_law.h>
-#include <hemicontact/parameters.h>
+#include <hemicontact/verification/convergence_study.h>
+#include <hemicontact/laws/normal_law.h>
+#include <hemicontact/input/parameters.h>
 
 #include <cmath>
 #include <iomanip>

@@ -5,7 +5,7 @@
 // exception it throws both come back from wait(); the next job starts only
 // after wait(); retired buffers are freed on another thread, and the next job
 // starts only after they are.
-#include <hemicontact/background_writer.h>
+#include <hemicontact/output/background_writer.h>
 
 #include <atomic>
 #include <chrono>

@@ -4,7 +4,7 @@
 // decreases the energy; a direction along which the energy only grows (by
 // less than the round-off bound for small theta) gets the full step, never
 // a creeping theta whose increase hides under the bound.
-#include <hemicontact/backtracking.h>
+#include <hemicontact/solver/backtracking.h>
 
 #include "tests.h"
 

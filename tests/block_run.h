@@ -6,8 +6,8 @@
 // In 2D 3 steps of k = 0.04 (as in tests/block_2d_short.prm), in 3D 8 steps
 // of k = 0.01875 (the nearest divisor of 0.15 to the 0.02 of
 // tests/block_3d_short.prm).
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/parameters.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/input/parameters.h>
 
 #include <fstream>
 #include <functional>

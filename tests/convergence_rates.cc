@@ -4,9 +4,9 @@
 // E_u at the finest pair lie in [0.85, 1.3], that E_H converges at least at
 // first order, and that every contact branch occurs on a share of at least
 // 5% of the (node, step) pairs.
-#include <hemicontact/convergence_study.h>
-#include <hemicontact/normal_law.h>
-#include <hemicontact/parameters.h>
+#include <hemicontact/verification/convergence_study.h>
+#include <hemicontact/laws/normal_law.h>
+#include <hemicontact/input/parameters.h>
 
 #include <cmath>
 #include <iomanip>

@@ -7,8 +7,8 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
 
-#include <hemicontact/expression.h>
-#include <hemicontact/input_error.h>
+#include <hemicontact/expressions/expression.h>
+#include <hemicontact/base/exceptions.h>
 
 #include "tests.h"
 

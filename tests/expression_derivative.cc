@@ -6,8 +6,8 @@
 // expressions and derivatives on one ExpressionTape, evaluated for all
 // points of the grid at once with the time uniform, give the values of the
 // trees.
-#include <hemicontact/expression.h>
-#include <hemicontact/expression_tape.h>
+#include <hemicontact/expressions/expression.h>
+#include <hemicontact/expressions/expression_tape.h>
 
 #include <Sacado.hpp>
 

@@ -10,13 +10,13 @@
 // gradient is that force.
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <hemicontact/contact_node.h>
-#include <hemicontact/friction_law.h>
-#include <hemicontact/friction_laws/piecewise_linear_friction.h>
-#include <hemicontact/friction_laws/slip_rate_weakening.h>
-#include <hemicontact/friction_laws/tresca.h>
-#include <hemicontact/input_error.h>
-#include <hemicontact/normal_laws/linear_damping_law.h>
+#include <hemicontact/model/contact_node.h>
+#include <hemicontact/laws/friction_law.h>
+#include <hemicontact/laws/friction/piecewise_linear_friction.h>
+#include <hemicontact/laws/friction/slip_rate_weakening.h>
+#include <hemicontact/laws/friction/tresca.h>
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/laws/normal/linear_damping_law.h>
 
 #include <cmath>
 #include <functional>

@@ -10,7 +10,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <hemicontact/generalized_eigenvalue.h>
+#include <hemicontact/solver/generalized_eigenvalue.h>
 
 #include "tests.h"
 

@@ -4,10 +4,10 @@
 // so w, dw/dt, grad u, grad w and Div sigma are written out by hand below.
 // Checks f0, f2 = sigma nu and the three cases of f3 (w_nu > 0: damped
 // response; w_nu < 0: none; w_nu = 0: the given multiplier), to 1e-12.
-#include <hemicontact/friction_laws/tresca.h>
-#include <hemicontact/manufactured_solution.h>
-#include <hemicontact/normal_laws/exponential_law.h>
-#include <hemicontact/parameters.h>
+#include <hemicontact/laws/friction/tresca.h>
+#include <hemicontact/verification/manufactured_solution.h>
+#include <hemicontact/laws/normal/exponential_law.h>
+#include <hemicontact/input/parameters.h>
 
 #include <cmath>
 #include <iostream>

@@ -3,7 +3,7 @@
 // a relative 3e-7 (float round-off and solver tolerances, as between runs on
 // 1 and 2 MPI ranks) marked exactly as the unperturbed ones, also where
 // mirror-image pairs of equal values straddle the aimed cut.
-#include <hemicontact/marking.h>
+#include <hemicontact/mesh/marking.h>
 
 #include <cstdint>
 #include <iostream>

@@ -6,11 +6,11 @@
 // the gradual normal branch changes (separating <-> damped via stick).
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <hemicontact/contact_node.h>
-#include <hemicontact/normal_laws/exponential_law.h>
-#include <hemicontact/normal_laws/linear_damping_law.h>
-#include <hemicontact/friction_disk.h>
-#include <hemicontact/friction_laws/tresca.h>
+#include <hemicontact/model/contact_node.h>
+#include <hemicontact/laws/normal/exponential_law.h>
+#include <hemicontact/laws/normal/linear_damping_law.h>
+#include <hemicontact/laws/friction_disk.h>
+#include <hemicontact/laws/friction/tresca.h>
 
 #include <cmath>
 #include <iomanip>

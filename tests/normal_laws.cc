@@ -3,10 +3,10 @@
 // of p, and alpha against the steepest descent of the response, at and
 // around every kink (r = 0 and the breakpoints). Also checks the relaxed
 // monotonicity inequality on a grid.
-#include <hemicontact/input_error.h>
-#include <hemicontact/normal_laws/exponential_law.h>
-#include <hemicontact/normal_laws/linear_damping_law.h>
-#include <hemicontact/normal_laws/piecewise_linear_law.h>
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/laws/normal/exponential_law.h>
+#include <hemicontact/laws/normal/linear_damping_law.h>
+#include <hemicontact/laws/normal/piecewise_linear_law.h>
 
 #include <cmath>
 #include <iomanip>

@@ -7,8 +7,8 @@
 // one.
 #include <deal.II/numerics/vector_tools.h>
 
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/parameters.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/input/parameters.h>
 
 #include <sstream>
 #include <string>

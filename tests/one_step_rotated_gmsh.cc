@@ -4,8 +4,8 @@
 // discrete solution must be reproduced to solver tolerance.
 #include <deal.II/numerics/vector_tools.h>
 
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/parameters.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/input/parameters.h>
 
 #include <cmath>
 #include <fstream>

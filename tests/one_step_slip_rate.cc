@@ -13,8 +13,8 @@
 // on the friction disk), hexahedra and simplices.
 #include <deal.II/numerics/vector_tools.h>
 
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/parameters.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/input/parameters.h>
 
 #include <cmath>
 #include <sstream>

@@ -4,8 +4,8 @@
 // with a warning naming the line, refuses a damaged row in the middle
 // (naming the file and the line, the file unchanged, nothing aside), and
 // leaves a table without rows to cut unchanged.
-#include <hemicontact/input_error.h>
-#include <hemicontact/output_file.h>
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/output/output_file.h>
 
 #include <filesystem>
 #include <fstream>

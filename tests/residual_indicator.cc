@@ -12,8 +12,8 @@
 // 2. u = (0, 2x) for x < 2 and (0, 4) for x > 2 (a kink at x = 2): sigma_12
 //    jumps by 2 mu = 4 there. An interior cell next to x = 2 has
 //    eta_K^2 = 1/2 h_F |F| 16 = 8 h^2, every other interior cell 0.
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/parameters.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/input/parameters.h>
 
 #include "tests.h"
 

@@ -3,9 +3,9 @@
 // and computes the spatial part only once per batch; a changed batch (a new
 // mesh), a batch of another loop at the same time, a cache too small for a
 // batch and callers on two threads at once still get the same bits.
-#include <hemicontact/expression.h>
-#include <hemicontact/expression_tape.h>
-#include <hemicontact/spatial_cache.h>
+#include <hemicontact/expressions/expression.h>
+#include <hemicontact/expressions/expression_tape.h>
+#include <hemicontact/expressions/spatial_cache.h>
 
 #include "tests.h"
 

@@ -17,9 +17,9 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/kelvin_voigt.h>
-#include <hemicontact/parameters.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/model/kelvin_voigt.h>
+#include <hemicontact/input/parameters.h>
 
 #include "tests.h"
 

@@ -1,9 +1,9 @@
 // Unit test of the stability limit of the left-point rule
-// (include/hemicontact/time_step_stability.h): for single modes (m, a, b)
+// (include/hemicontact/model/time_step_stability.h): for single modes (m, a, b)
 // the spectral radius of the step's amplification matrix is at most 1 just
 // below the limit and above 1 just above it; for a viscosity proportional
 // to the elasticity the mesh-independent limit is 2 mu_v / mu.
-#include <hemicontact/time_step_stability.h>
+#include <hemicontact/model/time_step_stability.h>
 
 #include <algorithm>
 #include <cmath>

@@ -30,8 +30,8 @@
  */
 #include <deal.II/base/mpi.h>
 
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/parameters.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/input/parameters.h>
 
 #include <fstream>
 #include <iostream>

@@ -4,8 +4,8 @@
 #include <deal.II/grid/grid_refinement.h>
 #include <deal.II/numerics/error_estimator.h>
 
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/marking.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/mesh/marking.h>
 
 #include <cmath>
 #include <limits>

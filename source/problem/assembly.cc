@@ -4,8 +4,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/input_error.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/base/exceptions.h>
 
 #include <cmath>
 #include <set>

@@ -2,10 +2,10 @@
 #include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
 
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/input_error.h>
-#include <hemicontact/output_file.h>
-#include <hemicontact/projected_operator.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/output/output_file.h>
+#include <hemicontact/solver/projected_operator.h>
 
 #include <boost/archive/text_iarchive.hpp>
 #include <boost/archive/text_oarchive.hpp>

@@ -1,8 +1,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/output_file.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/output/output_file.h>
 
 #include <algorithm>
 #include <fstream>

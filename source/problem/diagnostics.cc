@@ -1,8 +1,8 @@
 #include <deal.II/base/mpi.h>
 
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/generalized_eigenvalue.h>
-#include <hemicontact/input_error.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/solver/generalized_eigenvalue.h>
+#include <hemicontact/base/exceptions.h>
 
 #include <algorithm>
 #include <tuple>

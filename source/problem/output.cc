@@ -4,9 +4,9 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools_evaluate.h>
 
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/input_error.h>
-#include <hemicontact/output_file.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/output/output_file.h>
 
 #include <algorithm>
 #include <cerrno>

@@ -1,7 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
-#include <hemicontact/contact_problem.h>
+#include <hemicontact/problem/contact_problem.h>
 
 #include <sys/resource.h>
 

@@ -1,7 +1,7 @@
 #include <deal.II/fe/fe_interface_values.h>
 #include <deal.II/fe/fe_values.h>
 
-#include <hemicontact/contact_problem.h>
+#include <hemicontact/problem/contact_problem.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/friction_laws/tresca.h>
-#include <hemicontact/input_error.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/laws/friction/tresca.h>
+#include <hemicontact/base/exceptions.h>
 
 #include <algorithm>
 #include <tuple>

@@ -5,8 +5,8 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/input_error.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/base/exceptions.h>
 
 #include <cmath>
 #include <map>

@@ -1,9 +1,9 @@
 #include <deal.II/base/mpi.h>
 
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/generalized_eigenvalue.h>
-#include <hemicontact/input_error.h>
-#include <hemicontact/time_step_stability.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/solver/generalized_eigenvalue.h>
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/model/time_step_stability.h>
 
 #include <cmath>
 #include <iomanip>

@@ -4,7 +4,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <hemicontact/contact_problem.h>
+#include <hemicontact/problem/contact_problem.h>
 
 #include <map>
 #include <vector>

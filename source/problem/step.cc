@@ -1,8 +1,8 @@
 #include <deal.II/base/mpi.h>
 
-#include <hemicontact/active_set_newton.h>
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/contact_step.h>
+#include <hemicontact/solver/active_set_newton.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/model/contact_step.h>
 
 namespace hemicontact
 {

@@ -5,11 +5,11 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/reference_cell.h>
 
-#include <hemicontact/contact_problem.h>
-#include <hemicontact/convergence_study.h>
-#include <hemicontact/input_error.h>
-#include <hemicontact/manufactured_smoothness.h>
-#include <hemicontact/manufactured_solution.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/verification/convergence_study.h>
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/verification/manufactured_smoothness.h>
+#include <hemicontact/verification/manufactured_solution.h>
 
 #include <algorithm>
 #include <cmath>

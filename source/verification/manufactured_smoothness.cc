@@ -1,6 +1,6 @@
 #include <deal.II/base/mpi.h>
 
-#include <hemicontact/manufactured_smoothness.h>
+#include <hemicontact/verification/manufactured_smoothness.h>
 
 #include <algorithm>
 #include <array>

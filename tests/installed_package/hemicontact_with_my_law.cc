@@ -2,10 +2,10 @@
 // velocity-strengthening friction F(s) = F_b (1 + c s), the remainder
 // r(s) = F_b c s (monotone, so alpha_tau = 0). Everything else, the
 // parameter file, the output and the exit codes, is hemicontact's.
-#include <hemicontact/command_line.h>
-#include <hemicontact/friction_law.h>
-#include <hemicontact/input_error.h>
-#include <hemicontact/normal_law.h>
+#include <hemicontact/input/command_line.h>
+#include <hemicontact/laws/friction_law.h>
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/laws/normal_law.h>
 
 #include <string>
 

@@ -1,0 +1,273 @@
+#pragma once
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <hemicontact/solver/solver_tuning.h>
+
+#include <string>
+#include <vector>
+
+namespace hemicontact
+{
+  using namespace dealii;
+
+  /** Mesh: built-in rectangle/box or a Gmsh file, and the element type. */
+  struct GeometryParameters
+  {
+    std::string         mesh_type;  ///< "rectangle" or "gmsh"
+    std::string         cell_type;  ///< "hypercube" (FE_Q, p4est) or "simplex"
+    std::vector<double> lower_left; ///< corner of the rectangle/box
+    std::vector<double> upper_right;
+    std::vector<unsigned int> subdivisions;
+    std::string               mesh_file;
+    unsigned int              global_refinements;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** The three boundary parts, each a set of boundary ids. */
+  struct BoundaryParameters
+  {
+    std::vector<unsigned int> clamped_ids;  ///< Gamma_1: u = 0
+    std::vector<unsigned int> traction_ids; ///< Gamma_2: sigma nu = f2
+    std::vector<unsigned int> contact_ids;  ///< Gamma_3: contact
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** An isotropic Lame pair, given either as (mu, lambda) or as (E, nu). */
+  struct LamePair
+  {
+    double mu;
+    double lambda;
+
+    static void declare(ParameterHandler &prm);
+    /** Parse; @p name ("elasticity"/"viscosity") is used in error messages. */
+    void parse(ParameterHandler &prm, const std::string &name);
+  };
+
+  /** Kelvin-Voigt material: density, viscosity A and elasticity B. */
+  struct MaterialParameters
+  {
+    double   density;
+    LamePair viscosity;
+    LamePair elasticity;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** Uniform time stepping t_n = n k on [0, T]. */
+  struct TimeParameters
+  {
+    double end_time;
+    double time_step;
+    /** Run a time step above the left-point rule's stability limit. */
+    bool allow_unstable_time_step;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** Data of the problem as muparser expressions in x, y, z, t. */
+  struct DataParameters
+  {
+    std::string constants;
+    std::string body_force;          ///< f0(x,t)
+    std::string surface_traction;    ///< f2(x,t) on Gamma_2
+    std::string contact_traction;    ///< f3(x,t) on Gamma_3 (manufactured data)
+    std::string friction_bound;      ///< F_b(x) >= 0
+    std::string initial_displacement;///< u0(x)
+    std::string initial_velocity;    ///< w0(x)
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** Where Newton starts in a step. */
+  enum class InitialGuess
+  {
+    extrapolated, ///< w_{n-1} + k_n/k_{n-1} (w_{n-1} - w_{n-2})
+    previous      ///< w_{n-1}
+  };
+
+  /** Settings of the semismooth Newton / active-set iteration of one step. */
+  struct NonlinearSolverParameters
+  {
+    double       tolerance; ///< relative nonsmooth residual
+    unsigned int max_iterations;
+    /** How often a failing step may be retried with half the time step. */
+    unsigned int time_step_halvings;
+    bool         line_search;
+    InitialGuess initial_guess;
+    bool         strict_convexity_check;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** The linear solver of a Newton iteration. */
+  enum class LinearSolverType
+  {
+    cg_amg, ///< CG on the projected operator, AMG-based preconditioner
+    direct  ///< sparse direct solve of the projected Newton matrix (reference)
+  };
+
+  /** How far each Krylov solve of a Newton iteration goes. */
+  enum class ForcingTerm
+  {
+    eisenstat_walker, ///< follows the decrease of the Newton residual
+    fixed             ///< always to 'relative tolerance'
+  };
+
+  /** Linear solver of each Newton step. */
+  struct LinearSolverParameters
+  {
+    LinearSolverType type;
+    ForcingTerm      forcing_term;
+    double           relative_tolerance;
+    unsigned int     max_iterations;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** What is written, where and how often. */
+  /** The format of the solution files. */
+  enum class SolutionFormat
+  {
+    vtu, ///< .vtu per rank, .pvtu per output time, the .pvd series
+    hdf5 ///< one .h5 per output time (parallel HDF5), the .xdmf series
+  };
+
+  struct OutputParameters
+  {
+    std::string  directory;
+    unsigned int vtu_interval; ///< every this many steps, 0 = never
+    SolutionFormat format;
+    std::string  probe_points; ///< "x,y; x,y" (empty: none)
+    std::string  terminal;     ///< "progress", "quiet" or "test"
+    /** zlib level of the VTU files (lossless at every level). */
+    DataOutBase::VtkFlags::ZlibCompressionLevel compression;
+    bool         timing_summary;
+    /** Write performance.csv (and time one step-matrix solve) at the end. */
+    bool         performance_summary;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /**
+   * A manufactured solution: the exact displacement u(x,t) and the
+   * multiplier choices where the contact subdifferentials are intervals;
+   * f0, f2, f3, u0 and w0 are derived from them (doc/theory.md section 4).
+   */
+  struct ManufacturedParameters
+  {
+    bool        enabled;
+    std::string exact_displacement;    ///< dim expressions in x, y, z, t
+    std::string normal_multiplier;     ///< s* in (0, a) where w_nu = 0
+    std::string tangential_multiplier; ///< lambda* (|.| < F_b) where w_tau = 0
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** Adaptive mesh refinement during the time loop (hypercube meshes). */
+  struct AdaptivityParameters
+  {
+    unsigned int interval;         ///< adapt after every this many steps, 0 = never
+    std::string  indicator;        ///< "kelly", "kelly contact", "residual"
+    double       contact_weight;   ///< weight of the Gamma_3 traction jumps
+    unsigned int pre_refinement_steps; ///< restart from t = 0 after these, 0 = never
+    std::string  strategy;         ///< "fixed fraction" or "fixed number"
+    double       refine_fraction;
+    double       coarsen_fraction;
+    unsigned int max_cells;        ///< 0 = no limit
+    unsigned int min_level;
+    unsigned int max_level;
+    std::string  state_transfer;   ///< "interpolation" or "projection"
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** Checkpoints of the time loop and resuming from them (p4est meshes). */
+  struct CheckpointParameters
+  {
+    unsigned int interval;      ///< every this many steps, 0 = never
+    double       wall_interval; ///< every this many wall seconds, 0 = never
+    unsigned int stop_after;    ///< stop (with a checkpoint) after this many steps
+    bool         resume;        ///< continue from the newest checkpoint
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** A convergence study over refinement levels (manufactured solutions). */
+  struct ConvergenceStudyParameters
+  {
+    std::string  type;     ///< "single", "h", "k" or "coupled"
+    unsigned int n_levels; ///< number of levels
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** All parameters of a run, one struct per subsection. */
+  struct Parameters
+  {
+    unsigned int               dimension;
+    GeometryParameters         geometry;
+    BoundaryParameters         boundary;
+    MaterialParameters         material;
+    TimeParameters             time;
+    DataParameters             data;
+    NonlinearSolverParameters  nonlinear_solver;
+    LinearSolverParameters     linear_solver;
+    /** Set from C++ only (tests, benchmarks): see SolverTuning. */
+    SolverTuning               solver_tuning;
+    OutputParameters           output;
+    AdaptivityParameters       adaptivity;
+    CheckpointParameters       checkpoint;
+    ManufacturedParameters     manufactured;
+    ConvergenceStudyParameters study;
+    /**
+     * Every entry that defines the problem, as "path/entry = value" (all
+     * subsections but output, checkpoint, the solvers and the convergence
+     * study): a checkpoint records them, and a resume that would change
+     * one is refused.
+     */
+    std::vector<std::string> problem_definition;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
+  /** Declare every parameter of the program (including the laws). */
+  void
+  declare_all_parameters(ParameterHandler &prm);
+
+  /**
+   * Read @p filename into @p prm and return the parsed parameters. Any
+   * problem (missing file, syntax, unknown key, wrong type, non-physical
+   * value) throws an InputError that names the cause.
+   */
+  Parameters
+  read_parameters(ParameterHandler &prm, const std::string &filename);
+
+  /**
+   * Read @p filename, then the entries of @p overrides (parameter-file
+   * text) on top of it -- e.g. coarser levels of a shipped study in a test.
+   */
+  Parameters
+  read_parameters(ParameterHandler &prm, const std::string &filename,
+                  const std::string &overrides);
+
+  /** Same, from a string holding a parameter file (used by tests). */
+  Parameters
+  read_parameters_from_string(ParameterHandler &prm, const std::string &text);
+} // namespace hemicontact

@@ -1,0 +1,99 @@
+#pragma once
+
+#include <hemicontact/laws/normal_law.h>
+
+namespace hemicontact
+{
+  /**
+   * Monotone linear damping xi = c r_+ (convex j = c r_+^2 / 2, alpha = 0,
+   * no jump).
+   */
+  class LinearDampingLaw : public NormalLaw
+  {
+  public:
+    static constexpr const char *law_name = "linear damping";
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    explicit LinearDampingLaw(ParameterHandler &prm);
+    explicit LinearDampingLaw(const double coefficient);
+
+    std::string
+    name() const override
+    {
+      return law_name;
+    }
+    double
+    jump() const override
+    {
+      return 0.;
+    }
+    double
+    remainder(const double r) const override
+    {
+      return r > 0 ? coefficient * r : 0.;
+    }
+    double
+    remainder_derivative(const double r) const override
+    {
+      return r > 0 ? coefficient : 0.;
+    }
+    double
+    remainder_primitive(const double r) const override
+    {
+      return r > 0 ? 0.5 * coefficient * r * r : 0.;
+    }
+    double
+    relaxed_monotonicity_constant() const override
+    {
+      return 0.;
+    }
+
+  private:
+    double coefficient;
+  };
+
+  /** No normal resistance at all: j = 0. */
+  class NoNormalResistance : public NormalLaw
+  {
+  public:
+    static constexpr const char *law_name = "none";
+    static void
+    declare_parameters(ParameterHandler &)
+    {}
+    explicit NoNormalResistance(ParameterHandler &)
+    {}
+    NoNormalResistance() = default;
+
+    std::string
+    name() const override
+    {
+      return law_name;
+    }
+    double
+    jump() const override
+    {
+      return 0.;
+    }
+    double
+    remainder(const double) const override
+    {
+      return 0.;
+    }
+    double
+    remainder_derivative(const double) const override
+    {
+      return 0.;
+    }
+    double
+    remainder_primitive(const double) const override
+    {
+      return 0.;
+    }
+    double
+    relaxed_monotonicity_constant() const override
+    {
+      return 0.;
+    }
+  };
+} // namespace hemicontact

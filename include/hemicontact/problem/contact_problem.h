@@ -1,0 +1,528 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi_remote_point_evaluation.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <hemicontact/output/background_writer.h>
+#include <hemicontact/laws/contact_laws.h>
+#include <hemicontact/model/contact_node.h>
+#include <hemicontact/mesh/discretization.h>
+#include <hemicontact/model/energy_balance.h>
+#include <hemicontact/model/kelvin_voigt.h>
+#include <hemicontact/solver/linear_solver.h>
+#include <hemicontact/output/output_file.h>
+#include <hemicontact/laws/normal_law.h>
+#include <hemicontact/input/parameters.h>
+#include <hemicontact/model/problem_data.h>
+#include <hemicontact/solver/step_preconditioner.h>
+#include <hemicontact/solver/step_statistics.h>
+
+#include <chrono>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hemicontact
+{
+  using namespace dealii;
+
+  /**
+   * The dynamic contact problem of Han & Han (2019), Problem 4.4: a
+   * Kelvin-Voigt body, a normal damped response law and a friction law on
+   * Gamma_3, backward Euler in the velocity and the left-point rule for the
+   * displacement, P1/Q1 elements, nodal quadrature on Gamma_3.
+   *
+   * Each time step minimises the step energy J_n by a semismooth Newton /
+   * primal-dual active-set method (doc/theory.md section 3).
+   *
+   * The member functions are spread over source/problem/: setup.cc (mesh,
+   * dofs, constraints, contact nodes), assembly.cc (matrices and loads),
+   * step.cc (one step, by ActiveSetNewton on a ContactStep), diagnostics.cc (energies, convexity), output.cc
+   * and run.cc (the time loop).
+   */
+  template <int dim>
+  class ContactProblem
+  {
+  public:
+    /** A problem with data from the expressions of the parameter file. */
+    ContactProblem(const Parameters &parameters, ContactLaws laws,
+                   MPI_Comm comm);
+
+    /** A problem with given data (e.g. derived from a manufactured solution). */
+    ContactProblem(const Parameters &parameters, ContactLaws laws,
+                   ProblemData<dim> data, MPI_Comm comm);
+
+    /** Run the whole simulation: setup, time loop, output, summary. */
+    void
+    run();
+
+    /** @name The pieces of run(), public for tests and other drivers. */
+    /** @{ */
+    /** Mesh, dofs, constraints, contact nodes, matrices, initial state. */
+    void
+    setup();
+
+    /** Advance one time step; throws SolverFailure if Newton fails. */
+    StepStatistics
+    advance();
+
+    /**
+     * Refine and coarsen the mesh by the indicator of the 'adaptivity'
+     * parameters and move w_n, u_n to the new mesh; rebuilds dofs,
+     * constraints, matrices, contact nodes and the preconditioner. Fills
+     * the adaptation fields of @p stats (energies before and after).
+     */
+    void
+    adapt_mesh(StepStatistics &stats);
+
+    /**
+     * Call adapt_mesh() if it is due after the step just taken: every
+     * 'adaptivity/interval' steps (never if 0), and not after the last
+     * step. Returns whether the mesh was adapted.
+     */
+    bool
+    adapt_mesh_if_due(StepStatistics &stats);
+
+    /** The cell-wise refinement indicator of the current state. */
+    Vector<float>
+    refinement_indicators() const;
+
+    /**
+     * The residual indicator of the step just solved (residual_indicator.cc):
+     * eta_K^2 = h_K^2 |f0 - rho/k (w_n - w_{n-1}) + div sigma_h|^2_K
+     * + 1/2 sum h_F |[sigma_h nu]|^2_F over interior faces + h_F |f2 -
+     * sigma_h nu|^2_F on Neumann faces + 'contact weight'^2 h_F |f3 -
+     * sigma_h nu - xi_h|^2_F on Gamma_3, sigma_h = A eps(w_n) + B eps(u_n),
+     * xi_h the nodal contact traction.
+     */
+    Vector<float>
+    residual_indicators() const;
+
+    /** Whether the final time has been reached. */
+    bool
+    finished() const
+    {
+      return step_number >= n_steps;
+    }
+    /** @} */
+
+    /** @name Read access to the state (after setup()). */
+    /** @{ */
+    const DoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+    const Mapping<dim> &
+    get_mapping() const
+    {
+      return *discretization.mapping;
+    }
+    /** w_n (owned entries). */
+    const TrilinosWrappers::MPI::Vector &
+    get_velocity() const
+    {
+      return velocity;
+    }
+    /** u_n, the displacement that entered step n (approximates u(t_n)). */
+    const TrilinosWrappers::MPI::Vector &
+    get_displacement() const
+    {
+      return displacement;
+    }
+    const std::vector<ContactNode<dim>> &
+    get_contact_nodes() const
+    {
+      return contact_nodes;
+    }
+    const EnergyBalance &
+    get_energy() const
+    {
+      return energy;
+    }
+    double
+    get_time() const
+    {
+      return step_number * time_step;
+    }
+    double
+    get_time_step() const
+    {
+      return time_step;
+    }
+    unsigned int
+    get_step_number() const
+    {
+      return step_number;
+    }
+    /** Nodal traction -(K w - b)_i / m_i at owned contact node dofs. */
+    const TrilinosWrappers::MPI::Vector &
+    get_contact_traction() const
+    {
+      return contact_traction;
+    }
+    /**
+     * Estimated smallest eigenvalue of K0 against sum m_i nu nu (0 if not
+     * computed); with a friction law that has alpha_tau > 0, against
+     * sum m_i (alpha_nu nu nu + alpha_tau (I - nu nu)), so that each step is
+     * strongly convex iff it exceeds 1.
+     */
+    double
+    get_convexity_bound() const
+    {
+      return convexity_bound;
+    }
+    /** Whether the convexity bound includes the friction law's alpha_tau. */
+    bool
+    convexity_includes_friction() const
+    {
+      return convexity_with_friction;
+    }
+    const NormalLaw &
+    get_normal_law() const
+    {
+      return *law;
+    }
+    const FrictionLaw &
+    get_friction_law() const
+    {
+      return *friction;
+    }
+    /** @} */
+
+  private:
+    /** @name setup.cc */
+    void
+    make_mesh();
+    /** Dofs, constraints, constant matrices, contact nodes, AMG modes. */
+    void
+    setup_on_current_mesh();
+    void
+    setup_dofs();
+    void
+    setup_base_constraints();
+    void
+    setup_contact_nodes();
+    void
+    initialize_state();
+    /**
+     * F_b at every contact node from 'data/friction bound' at time @p t and
+     * the displacement u_n (the left-point rule: known when step n starts).
+     */
+    void
+    update_friction_bounds(const double t);
+
+    /** @name assembly.cc */
+    void
+    assemble_constant_matrices();
+    /**
+     * The cell matrices of rho M, A and B at @p fe_values (reinit on the
+     * cell; values, gradients and JxW), as assemble_constant_matrices()
+     * adds them up.
+     */
+    void
+    cell_matrices(const FEValues<dim> &fe_values,
+                  FullMatrix<double> & mass,
+                  FullMatrix<double> & viscous,
+                  FullMatrix<double> & elastic) const;
+    void
+    assemble_load(const double time);
+    void
+    assemble_step_rhs();
+
+    /** @name step.cc */
+    /** Solve the current step by ActiveSetNewton on a ContactStep. */
+    StepStatistics
+    solve_step();
+    void
+    count_branches(StepStatistics &stats) const;
+
+    /** @name diagnostics.cc */
+    void
+    update_energy_balance(const bool initial);
+    /** Kinetic rho/2|w_n|^2 and elastic 1/2 a_B(u_{n+1},u_{n+1}) energy now. */
+    std::pair<double, double>
+    stored_energy() const;
+    /**
+     * Estimate the convexity bound of the step energy for the current
+     * friction bounds and warn (or stop, with 'strict convexity check') if
+     * a step may not be convex; @p context starts the message of a check
+     * during the run, which warns only when the steps leave the convex
+     * regime.
+     */
+    void
+    check_convexity(const std::string &context = "");
+    /**
+     * check_convexity() again, for time @p t, if a node's alpha_tau exceeds
+     * the value last checked or the contact nodes changed (a new mesh).
+     */
+    void
+    recheck_convexity_if_bounds_grew(const double t);
+    TrilinosWrappers::MPI::Vector
+    without_constrained(const TrilinosWrappers::MPI::Vector &v) const;
+
+    /** @name stability.cc */
+    /**
+     * Refuse (InputError) a time step above the stability limit of the
+     * left-point rule on the current mesh, unless 'time/allow unstable time
+     * step' is set (then a warning).
+     */
+    void
+    check_time_step_stability();
+    /**
+     * The largest stable time step on the current mesh, estimated from the
+     * largest eigenvalue of B against A + 2M/k, or infinity if @p k is
+     * stable.
+     */
+    double
+    largest_stable_time_step(const double k);
+
+    /** @name state_projection.cc */
+    /**
+     * For 'adaptivity/state transfer = projection': register with the
+     * mesh, before execute_coarsening_and_refinement(), the functionals
+     * rho M w and B u_next (tested with the parent's shape functions) of
+     * every family of cells about to be coarsened. @p w and @p u_next are
+     * ghosted and must live until project_transferred_state().
+     */
+    /**
+     * The local vectors rho M_K w and B_K u_next of @p cell (reinits
+     * @p fe_values there), from cell_matrices().
+     */
+    void
+    cell_functionals(FEValues<dim> &                                fe_values,
+                     const typename DoFHandler<dim>::cell_iterator &cell,
+                     const TrilinosWrappers::MPI::Vector &          w,
+                     const TrilinosWrappers::MPI::Vector &          u_next,
+                     Vector<double> &                               m_w,
+                     Vector<double> &                               b_u) const;
+    unsigned int
+    attach_coarsened_functionals(const TrilinosWrappers::MPI::Vector &w,
+                                 const TrilinosWrappers::MPI::Vector &u_next);
+    /**
+     * After the new mesh is set up and @p w, @p u_next are interpolated onto
+     * it (hanging-node values not yet distributed): replace them by the
+     * M-projection of the old w and the a_B-projection of the old u_next, so
+     * that rho M w and B u_next are the same functionals on the new mesh as
+     * on the old (exact where cells were refined or kept, from the attached
+     * integrals where coarsened). The caller distributes the constraints.
+     */
+    void
+    project_transferred_state(const unsigned int             handle,
+                              TrilinosWrappers::MPI::Vector &w,
+                              TrilinosWrappers::MPI::Vector &u_next);
+
+    /** @name output.cc */
+    /**
+     * Start writing the solution of the current step ('output/format') on
+     * a background thread while the run goes on: VTU files, or the data of
+     * an HDF5 file, which finish_solution_output() writes (collectively).
+     */
+    void
+    write_solution();
+    /**
+     * Wait for the solution write in progress, check it on every rank,
+     * write the HDF5 file and replace the series file (solution.pvd or
+     * solution.xdmf) atomically.
+     * Called before the next write, before the mesh changes or a checkpoint
+     * saves the series, and at the end of a run.
+     */
+    void
+    finish_solution_output();
+    /**
+     * Create the output directory, lock it, set an earlier run's files
+     * aside (or on resume cut the tables back to the checkpoint) and open
+     * steps.csv and probes.csv.
+     */
+    void
+    open_tables();
+    void
+    setup_probes();
+    void
+    write_step_row(const StepStatistics &stats);
+    void
+    write_probes();
+    void
+    print_step(const StepStatistics &stats) const;
+
+    /**
+     * Refuse (OutputError on every rank, naming the directory and the
+     * space) a checkpoint the file system has no room for: an estimate of
+     * its size from the mesh against the free space.
+     */
+    void
+    require_checkpoint_space() const;
+    /**
+     * After an input or output error: wait for the solution write and
+     * move an earlier run's files back if this run has not completed a
+     * step (EarlierOutput).
+     */
+    void
+    restore_earlier_output();
+
+    /** @name run.cc */
+    /** run() without the restoring of an earlier run's files. */
+    void
+    run_and_write();
+    /**
+     * One interval [start, start + k]: a step of size k, or if Newton
+     * fails (and 'time step halvings' allows) two intervals of k/2.
+     */
+    StepStatistics
+    advance_interval(const double start, const double k,
+                     const unsigned int depth);
+    /** Change k and what depends on it (step matrix, AMG). */
+    void
+    set_time_step(const double k);
+
+    /** @name checkpoint.cc */
+    /**
+     * A run not resumed: a new run id and the mesh file's signature (for
+     * its checkpoints); OUTPUT/checkpoint, if it exists, then names this
+     * run, so that a resume takes no checkpoint of an earlier run.
+     */
+    void
+    start_checkpoint_run();
+    /** Write mesh, fields and state to OUTPUT/checkpoint (aside, then renamed). */
+    void
+    write_checkpoint();
+    /** setup() from the newest checkpoint instead of the initial data. */
+    void
+    setup_from_checkpoint();
+    /** Drop the rows after the checkpoint's step from steps.csv, probes.csv. */
+    void
+    continue_tables();
+
+    /** @name performance.cc */
+    /** Totals over the run's steps (for the summary line and performance.csv). */
+    struct RunTotals
+    {
+      unsigned int steps             = 0;
+      unsigned int newton_iterations = 0;
+      unsigned int max_newton        = 0;
+      unsigned int linear_iterations = 0;
+      double       step_wall_seconds = 0; ///< advance() only, no output
+    };
+    void
+    write_performance_summary(const RunTotals &totals);
+
+    /** @name contact_output.cc */
+    /**
+     * Write contact_NNNNN.csv: one row per contact node (all ranks, sorted
+     * by coordinates) with w_nu, w_tau, sigma_nu, sigma_tau, the branches
+     * and the nodal mass m_i.
+     */
+    void
+    write_contact_csv();
+    /**
+     * On the root: the gathered rows (@p width values each) sorted by
+     * coordinates, written atomically; returns the reason of a failure.
+     */
+    std::string
+    write_contact_table(const std::vector<std::vector<double>> &gathered,
+                        const unsigned int                      width) const;
+
+    MPI_Comm           mpi_communicator;
+    Parameters         parameters;
+    ConditionalOStream pcout;
+    TimerOutput        timer;
+
+    KelvinVoigtMaterial<dim>   material;
+    std::unique_ptr<NormalLaw>   law;
+    std::unique_ptr<FrictionLaw> friction;
+    ProblemData<dim>           data;
+
+    Discretization<dim> discretization;
+    DoFHandler<dim>     dof_handler;
+    IndexSet            locally_owned_dofs;
+    IndexSet            locally_relevant_dofs;
+
+    /** Hanging nodes and u = 0 on Gamma_1. */
+    AffineConstraints<double> base_constraints;
+
+    /** Constant on a fixed mesh, condensed with the base constraints. */
+    TrilinosWrappers::SparseMatrix mass_matrix;    ///< M
+    TrilinosWrappers::SparseMatrix step_matrix;    ///< K0 = rho/k M + A
+    TrilinosWrappers::SparseMatrix elastic_matrix; ///< B
+
+    TrilinosWrappers::MPI::Vector velocity;     ///< w_n
+    TrilinosWrappers::MPI::Vector old_velocity; ///< w_{n-1}
+    TrilinosWrappers::MPI::Vector displacement; ///< u_n
+    TrilinosWrappers::MPI::Vector load;         ///< F_n = (f0, f2, f3) tested
+    TrilinosWrappers::MPI::Vector step_rhs;     ///< b = rho/k M w_{n-1} - B u_n + F_n
+    TrilinosWrappers::MPI::Vector contact_traction;
+
+    std::vector<ContactNode<dim>> contact_nodes; ///< locally relevant nodes
+    LinearSolver            linear_solver;
+    /** Every AMG of the mesh and the preconditioner of the Newton solves. */
+    StepPreconditioner<dim> preconditioner;
+    EnergyBalance energy;
+    double        convexity_bound = 0;
+    bool          convexity_with_friction = false;
+    /** The largest alpha_tau over the contact nodes at the last check. */
+    double        largest_alpha_tau = 0;
+    /** alpha_tau of each contact node that the last convexity check covers. */
+    std::vector<double> checked_alpha_tau;
+    /** Whether the last convexity check found the steps strongly convex. */
+    bool steps_convex = true;
+
+    double       time_step   = 0;
+    /** Length of the last converged step (0: none yet). */
+    double       last_step_length = 0;
+    /** The run (a resumed run continues its run): checkpoints record it. */
+    std::string run_id;
+    /** file_signature() of the mesh file the run read ("" if none). */
+    std::string mesh_signature;
+    unsigned int n_steps     = 0;
+    unsigned int step_number = 0;
+
+    /** The series written so far: (time, .pvtu file) for VTU output,
+     *  (time, XDMF grid element) for HDF5 output. */
+    std::vector<std::pair<double, std::string>> pvd_records;
+    /** Wall clock and step number when the time loop started (for the
+     *  time left on the progress line). */
+    std::chrono::steady_clock::time_point loop_start;
+    unsigned int                          loop_start_step = 0;
+    /** Wall seconds of the time loop, with every output (0 until done). */
+    double run_wall_seconds = 0;
+    std::vector<Point<dim>>                     probe_points;
+    Utilities::MPI::RemotePointEvaluation<dim>  probe_cache;
+    std::ofstream                               steps_file;
+    /** Held by the root while the run writes its output directory. */
+    std::unique_ptr<OutputLock>                 output_lock;
+    /** An earlier run's files, until this run completes its first step. */
+    EarlierOutput                               earlier_output;
+    std::ofstream                               probes_file;
+
+    /** What a solution write reads: copies made when the write started. */
+    struct SolutionSnapshot
+    {
+      unsigned int step = 0;
+      double       time = 0;
+      /** The fields (DataOut copies them when they are added; the copies
+       *  need MPI, so they are made before the job starts). */
+      std::unique_ptr<DataOut<dim>> data_out;
+      /** w and u with ghost entries, for the cell stresses. */
+      TrilinosWrappers::MPI::Vector velocity, displacement;
+      /** HDF5 output: the patches' data in the layout of the file. */
+      std::unique_ptr<DataOutBase::DataOutFilter> hdf5_filter;
+    };
+    SolutionSnapshot solution_snapshot;
+    /** The series entry of the write in progress. */
+    std::pair<double, std::string> pending_record;
+    /** Declared last: destroyed (after waiting) before what its job reads. */
+    BackgroundWriter solution_writer;
+  };
+} // namespace hemicontact

@@ -1,0 +1,140 @@
+#pragma once
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <hemicontact/expressions/expression.h>
+#include <hemicontact/expressions/expression_tape.h>
+#include <hemicontact/laws/friction_bound.h>
+#include <hemicontact/laws/friction_law.h>
+#include <hemicontact/model/kelvin_voigt.h>
+#include <hemicontact/laws/normal_law.h>
+#include <hemicontact/input/parameters.h>
+#include <hemicontact/model/problem_data.h>
+#include <hemicontact/expressions/spatial_cache.h>
+
+#include <memory>
+#include <vector>
+
+namespace hemicontact
+{
+  using namespace dealii;
+
+  /**
+   * A manufactured solution u(x,t) given as expressions, with everything
+   * derived from it exactly: w = du/dt, dw/dt, grad u, grad w and the second
+   * derivatives in Div sigma are differentiated symbolically once
+   * (Expression::derivative()) and evaluated in doubles, all of them in one
+   * pass with their common subexpressions shared (ExpressionTape), hence
+   *   f0 = rho dw/dt - Div sigma,  f2 = sigma nu,
+   *   f3 = sigma nu + xi_nu nu + xi_tau  (doc/theory.md, section 4),
+   * with xi_nu in dj(w_nu), xi_tau in dphi(w_tau) (the friction law's force
+   * F(|w_tau|) w_tau/|w_tau| with the bound F_b(x, t, u_nu) of the exact
+   * state) and the given multiplier choices where those sets are intervals
+   * (w_nu = 0, w_tau = 0).
+   */
+  template <int dim>
+  class ManufacturedSolution
+  {
+  public:
+    /** The exact fields at one point and time. */
+    struct Values
+    {
+      Tensor<1, dim> u, w, w_dot, div_sigma;
+      Tensor<2, dim> grad_u, grad_w;
+    };
+
+    ManufacturedSolution(const Parameters &parameters, const NormalLaw &law,
+                         const FrictionLaw &friction);
+
+    /** u, w, their gradients, dw/dt and Div sigma at (p, t). */
+    Values
+    evaluate(const Point<dim> &p, const double t) const;
+
+    /** Only u, w and their gradients (first derivatives: cheaper). */
+    Values
+    evaluate_fields(const Point<dim> &p, const double t) const;
+
+    /** evaluate() at all @p points in one batch (cheaper per point). */
+    std::vector<Values>
+    evaluate(const std::vector<Point<dim>> &points, const double t) const;
+
+    /**
+     * evaluate_fields() at all @p points in one batch; a loop that visits
+     * the same batches at every step passes a @p cache of its own
+     * (make_fields_cache()).
+     */
+    std::vector<Values>
+    evaluate_fields(const std::vector<Point<dim>> &points, const double t,
+                    SpatialCache *cache = nullptr) const;
+
+    /** A cache for evaluate_fields() (SpatialCache). */
+    std::unique_ptr<SpatialCache>
+    make_fields_cache() const;
+
+    /** sigma = A eps(w) + B eps(u). */
+    SymmetricTensor<2, dim>
+    stress(const Values &v) const;
+
+    /** f0 = rho dw/dt - Div sigma. */
+    Tensor<1, dim>
+    body_force(const Point<dim> &p, const double t) const;
+
+    /** f0 at all @p points in one batch, with an optional @p cache
+     *  (make_force_cache()). */
+    std::vector<Tensor<1, dim>>
+    body_force(const std::vector<Point<dim>> &points, const double t,
+               SpatialCache *cache = nullptr) const;
+
+    /** A cache for body_force() (SpatialCache). */
+    std::unique_ptr<SpatialCache>
+    make_force_cache() const;
+
+    /** f2 = sigma nu. */
+    Tensor<1, dim>
+    surface_traction(const Point<dim> &p, const Tensor<1, dim> &normal,
+                     const double t) const;
+
+    /** f3 = sigma nu + xi_nu nu + xi_tau. */
+    Tensor<1, dim>
+    contact_traction(const Point<dim> &p, const Tensor<1, dim> &normal,
+                     const double t) const;
+
+    /**
+     * The problem data: derived f0, f2, f3, u0, w0 and the friction bound
+     * of the parameter file. The returned data refer to this object.
+     */
+    ProblemData<dim>
+    make_problem_data() const;
+
+  private:
+    /** w_dot and Div sigma from the force tape's outputs at @p r. */
+    void
+    unpack_second_derivatives(const double *r, Values &v) const;
+
+    const NormalLaw &                   law;
+    const FrictionLaw &                 friction;
+    KelvinVoigtMaterial<dim>            material;
+    std::vector<Expression>             displacement;
+    /** @name The derivatives of u, one expression per component */
+    /** @{ */
+    std::vector<Expression> velocity;              ///< w_c = du_c/dt
+    std::vector<Expression> acceleration;          ///< dw_c/dt
+    std::vector<Expression> displacement_gradient; ///< [c dim + i]: du_c/dx_i
+    std::vector<Expression> velocity_gradient;     ///< [c dim + i]: dw_c/dx_i
+    /** [(c dim + i) dim + j]: d^2 u_c/dx_i dx_j (and of w_c) */
+    std::vector<Expression> displacement_hessian, velocity_hessian;
+    /** @} */
+    /** u, w and their gradients in one pass (evaluate_fields()). */
+    std::unique_ptr<ExpressionTape> fields_tape;
+    /** dw/dt and the second derivatives with j >= i (body_force()). */
+    std::unique_ptr<ExpressionTape> force_tape;
+    /** The fields tape's outputs, then the force tape's (evaluate()). */
+    std::unique_ptr<ExpressionTape> all_tape;
+    std::unique_ptr<Expression>         normal_multiplier;
+    std::vector<Expression>             tangential_multiplier;
+    std::shared_ptr<const FrictionBound<dim>> friction_bound;
+  };
+} // namespace hemicontact

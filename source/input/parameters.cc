@@ -1,0 +1,643 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/input/parameters.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace hemicontact
+{
+  namespace
+  {
+    std::vector<unsigned int>
+    get_id_list(ParameterHandler &prm, const std::string &key)
+    {
+      std::vector<unsigned int> ids;
+      for (const int i : Utilities::string_to_int(
+             Utilities::split_string_list(prm.get(key), ',')))
+        ids.push_back(static_cast<unsigned int>(i));
+      return ids;
+    }
+  } // namespace
+
+  void
+  GeometryParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("geometry");
+    prm.declare_entry("mesh", "rectangle", Patterns::Selection("rectangle|gmsh"),
+                      "'rectangle' builds a rectangle (2D) or box (3D) from the "
+                      "corners below, with boundary ids 0 (x = x0), 1 (x = x1), "
+                      "2 (y = y0), 3 (y = y1), 4 (z = z0), 5 (z = z1). 'gmsh' "
+                      "reads 'mesh file' (physical tags become boundary ids).");
+    prm.declare_entry("cell type", "hypercube",
+                      Patterns::Selection("hypercube|simplex"),
+                      "'hypercube': quadrilaterals/hexahedra, FE_Q(1)^d on a "
+                      "p4est distributed mesh. 'simplex': triangles/tetrahedra, "
+                      "FE_SimplexP(1)^d on a fully distributed mesh (uniform "
+                      "refinement only).");
+    prm.declare_entry("lower left corner", "0, 0, 0",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "Corner (x0, y0[, z0]) of the rectangle/box; only the "
+                      "first 'dimension' entries are used.");
+    prm.declare_entry("upper right corner", "4, 1, 1",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "Opposite corner (x1, y1[, z1]).");
+    prm.declare_entry("subdivisions", "4, 1, 1",
+                      Patterns::List(Patterns::Integer(1), 2, 3),
+                      "Number of coarse cells in each direction.");
+    prm.declare_entry("mesh file", "", Patterns::Anything(),
+                      "Gmsh .msh file (relative to the working directory) for "
+                      "mesh = gmsh. Its cells must all be of 'cell type', in "
+                      "2D its nodes in z = 0, without duplicated nodes or "
+                      "self-intersecting cells.");
+    prm.declare_entry("global refinements", "3", Patterns::Integer(0, 20),
+                      "Number of uniform refinements of the coarse mesh. For "
+                      "a simplex rectangle/box the mesh is instead built "
+                      "with 2^r times the subdivisions (same mesh size, "
+                      "better shapes than refined tetrahedra). Refused when "
+                      "the estimated memory exceeds the machine's.");
+    prm.leave_subsection();
+  }
+
+  void
+  GeometryParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("geometry");
+    mesh_type  = prm.get("mesh");
+    cell_type  = prm.get("cell type");
+    lower_left = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("lower left corner")));
+    upper_right = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("upper right corner")));
+    for (const int s : Utilities::string_to_int(
+           Utilities::split_string_list(prm.get("subdivisions"))))
+      subdivisions.push_back(s);
+    mesh_file          = prm.get("mesh file");
+    global_refinements = prm.get_integer("global refinements");
+    prm.leave_subsection();
+    if (mesh_type == "gmsh")
+      require(!mesh_file.empty(),
+              "geometry: 'mesh = gmsh' needs a 'mesh file', but none is set.");
+  }
+
+  void
+  BoundaryParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("boundary");
+    prm.declare_entry("clamped boundary ids", "0",
+                      Patterns::List(Patterns::Integer(0, 255)),
+                      "Boundary ids of Gamma_1 (u = 0). Must not be empty.");
+    prm.declare_entry("traction boundary ids", "1, 3",
+                      Patterns::List(Patterns::Integer(0, 255)),
+                      "Boundary ids of Gamma_2 (sigma nu = f2); may be empty. "
+                      "Boundary parts in no list are traction free.");
+    prm.declare_entry("contact boundary ids", "2",
+                      Patterns::List(Patterns::Integer(0, 255)),
+                      "Boundary ids of Gamma_3 (contact). Must not be empty.");
+    prm.leave_subsection();
+  }
+
+  void
+  BoundaryParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("boundary");
+    clamped_ids  = get_id_list(prm, "clamped boundary ids");
+    traction_ids = get_id_list(prm, "traction boundary ids");
+    contact_ids  = get_id_list(prm, "contact boundary ids");
+    prm.leave_subsection();
+    require(!clamped_ids.empty(),
+            "boundary: 'clamped boundary ids' is empty; the clamped part "
+            "Gamma_1 must have positive measure (Korn's inequality).");
+    require(!contact_ids.empty(),
+            "boundary: 'contact boundary ids' is empty; the contact part "
+            "Gamma_3 must have positive measure.");
+    // Gamma_1, Gamma_2 and Gamma_3 are disjoint parts of the boundary
+    const auto require_disjoint = [](const std::vector<unsigned int> &a,
+                                     const std::vector<unsigned int> &b,
+                                     const std::string &what) {
+      for (const unsigned int i : a)
+        for (const unsigned int j : b)
+          require(i != j, "boundary: id " + std::to_string(i) +
+                            " is listed both as " + what +
+                            "; Gamma_1 (clamped), Gamma_2 (traction) and "
+                            "Gamma_3 (contact) are disjoint parts of the "
+                            "boundary, so each id belongs to one list.");
+    };
+    require_disjoint(contact_ids, clamped_ids, "clamped and as contact");
+    require_disjoint(traction_ids, contact_ids, "traction and as contact");
+    require_disjoint(traction_ids, clamped_ids, "clamped and as traction");
+  }
+
+  void
+  LamePair::declare(ParameterHandler &prm)
+  {
+    prm.declare_entry("parametrisation", "lame",
+                      Patterns::Selection("lame|young"),
+                      "'lame': use 'mu' and 'lambda'; 'young': use 'young "
+                      "modulus' and 'poisson ratio'.");
+    prm.declare_entry("mu", "1", Patterns::Double(), "Lame parameter mu.");
+    prm.declare_entry("lambda", "1", Patterns::Double(),
+                      "Lame parameter lambda.");
+    prm.declare_entry("young modulus", "1", Patterns::Double(),
+                      "Young's modulus E > 0.");
+    prm.declare_entry("poisson ratio", "0.3", Patterns::Double(),
+                      "Poisson's ratio, -1 < nu < 0.5.");
+  }
+
+  void
+  LamePair::parse(ParameterHandler &prm, const std::string &name)
+  {
+    if (prm.get("parametrisation") == "lame")
+      {
+        mu     = prm.get_double("mu");
+        lambda = prm.get_double("lambda");
+      }
+    else
+      {
+        const double E  = prm.get_double("young modulus");
+        const double nu = prm.get_double("poisson ratio");
+        require(E > 0, "material/" + name + ": 'young modulus' = " +
+                         std::to_string(E) + " must be positive.");
+        require(nu > -1 && nu < 0.5,
+                "material/" + name + ": 'poisson ratio' = " +
+                  std::to_string(nu) + " must lie in (-1, 0.5).");
+        mu     = E / (2 * (1 + nu));
+        lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+      }
+  }
+
+  void
+  MaterialParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("material");
+    prm.declare_entry("density", "1", Patterns::Double(), "Mass density rho > 0.");
+    prm.enter_subsection("viscosity");
+    LamePair::declare(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("elasticity");
+    LamePair::declare(prm);
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  void
+  MaterialParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("material");
+    density = prm.get_double("density");
+    prm.enter_subsection("viscosity");
+    viscosity.parse(prm, "viscosity");
+    prm.leave_subsection();
+    prm.enter_subsection("elasticity");
+    elasticity.parse(prm, "elasticity");
+    prm.leave_subsection();
+    prm.leave_subsection();
+
+    require(density > 0, "material: 'density' = " + std::to_string(density) +
+                           " must be positive.");
+    require(viscosity.mu > 0,
+            "material/viscosity: 'mu' = " + std::to_string(viscosity.mu) +
+              " must be positive (the viscosity A must be coercive, m_A > 0).");
+    require(viscosity.lambda + 2. / 3. * viscosity.mu > 0,
+            "material/viscosity: 'lambda' = " +
+              std::to_string(viscosity.lambda) +
+              " makes the bulk viscosity lambda + 2 mu / 3 non-positive.");
+    require(elasticity.mu >= 0,
+            "material/elasticity: 'mu' = " + std::to_string(elasticity.mu) +
+              " must be non-negative.");
+    require(elasticity.lambda + 2. / 3. * elasticity.mu >= 0,
+            "material/elasticity: 'lambda' = " +
+              std::to_string(elasticity.lambda) +
+              " makes the bulk modulus lambda + 2 mu / 3 negative.");
+  }
+
+  void
+  TimeParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("time");
+    prm.declare_entry("end time", "1", Patterns::Double(), "Final time T > 0.");
+    prm.declare_entry("time step", "0.01", Patterns::Double(),
+                      "Time step k > 0; it must divide the end time (the run "
+                      "takes T/k uniform steps).");
+    prm.declare_entry(
+      "allow unstable time step", "false", Patterns::Bool(),
+      "The left-point rule is stable only for k below a limit set by the "
+      "viscosity, the elasticity and the mesh; a larger time step is "
+      "refused at start-up. 'true' runs it anyway, with a warning.");
+    prm.leave_subsection();
+  }
+
+  void
+  TimeParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("time");
+    end_time  = prm.get_double("end time");
+    time_step = prm.get_double("time step");
+    allow_unstable_time_step = prm.get_bool("allow unstable time step");
+    prm.leave_subsection();
+    require(end_time > 0, "time: 'end time' = " + std::to_string(end_time) +
+                            " must be positive.");
+    require(time_step > 0, "time: 'time step' = " + std::to_string(time_step) +
+                             " must be positive.");
+    require(time_step <= end_time,
+            "time: 'time step' = " + std::to_string(time_step) +
+              " is larger than 'end time' = " + std::to_string(end_time) + ".");
+    // the scheme takes N uniform steps k = T/N: a time step that does not
+    // divide the end time would be changed, so it is refused
+    const double n_steps = end_time / time_step;
+    if (std::abs(n_steps - std::round(n_steps)) > 1e-8 * n_steps)
+      {
+        std::ostringstream message;
+        message << std::setprecision(12) << "time: 'end time' = " << end_time
+                << " is not a whole number of steps of 'time step' = "
+                << time_step << " (" << n_steps
+                << " steps); the scheme takes uniform steps, so choose a "
+                   "time step that divides the end time (e.g. "
+                << end_time / std::max(1., std::round(n_steps)) << ").";
+        throw InputError(message.str());
+      }
+    // the step counter is an unsigned int
+    if (std::round(n_steps) > std::numeric_limits<unsigned int>::max())
+      {
+        std::ostringstream message;
+        message << std::setprecision(12) << "time: 'end time' = " << end_time
+                << " takes " << n_steps << " steps of 'time step' = "
+                << time_step << ", more than the program counts (at most "
+                << std::numeric_limits<unsigned int>::max()
+                << "); choose a larger time step or a shorter end time.";
+        throw InputError(message.str());
+      }
+  }
+
+  void
+  DataParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("data");
+    prm.declare_entry("constants", "", Patterns::Anything(),
+                      "User constants for the expressions below, e.g. "
+                      "'g=9.81, v=0.1': finite numbers, each name once and "
+                      "none of a variable (x, y, z, t, u_nu) or a function "
+                      "(sin, ...). 'pi' is predefined.");
+    const std::string vec_help =
+      " Vector-valued: 'dimension' expressions separated by ';' in x, y, z "
+      "and t. A single number (e.g. 0) means that value in every component.";
+    prm.declare_entry("body force", "0", Patterns::Anything(),
+                      "Body force density f0(x,t)." + vec_help);
+    prm.declare_entry("surface traction", "0", Patterns::Anything(),
+                      "Traction f2(x,t) on Gamma_2." + vec_help);
+    prm.declare_entry("contact traction", "0", Patterns::Anything(),
+                      "An additional given traction f3(x,t) on Gamma_3 "
+                      "(zero in physical runs; used by manufactured "
+                      "solutions)." + vec_help);
+    prm.declare_entry("friction bound", "0", Patterns::Anything(),
+                      "Friction bound F_b >= 0 on Gamma_3: the radius of the "
+                      "friction disk (the static bound of a weakening law). A "
+                      "scalar expression in x, y, z, t and u_nu, the normal "
+                      "displacement at the node (positive into the "
+                      "foundation), evaluated at the start of each step with "
+                      "the known u_n; e.g. mu*cp*pos(u_nu) for normal "
+                      "compliance with friction. Comparisons < > <= >= == != "
+                      "and && || give 1 or 0; c ? a : b is a if c is not 0, "
+                      "else b; e.g. x < 0.5 ? 0.3 : 0.2.");
+    prm.declare_entry("initial displacement", "0", Patterns::Anything(),
+                      "u0(x); must vanish on Gamma_1." + vec_help);
+    prm.declare_entry("initial velocity", "0", Patterns::Anything(),
+                      "w0(x); must vanish on Gamma_1." + vec_help);
+    prm.leave_subsection();
+  }
+
+  void
+  DataParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("data");
+    constants            = prm.get("constants");
+    body_force           = prm.get("body force");
+    surface_traction     = prm.get("surface traction");
+    contact_traction     = prm.get("contact traction");
+    friction_bound       = prm.get("friction bound");
+    initial_displacement = prm.get("initial displacement");
+    initial_velocity     = prm.get("initial velocity");
+    prm.leave_subsection();
+  }
+
+  void
+  OutputParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("output");
+    prm.declare_entry("directory", "output", Patterns::Anything(),
+                      "Directory for all output (created if missing).");
+    prm.declare_entry("vtu interval", "10", Patterns::Integer(0),
+                      "Write the solution files every this many steps; 0 "
+                      "writes none.");
+    prm.declare_entry("format", "vtu", Patterns::Selection("vtu|hdf5"),
+                      "Solution files: 'vtu' (.vtu per rank and .pvtu per "
+                      "output time, series solution.pvd) or 'hdf5' (one .h5 "
+                      "per output time written by all ranks, series "
+                      "solution.xdmf). ParaView opens either series.");
+    prm.declare_entry("compression", "best speed",
+                      Patterns::Selection("best speed|default|best "
+                                          "compression|none"),
+                      "zlib compression of VTU files: 'best speed' "
+                      "(fast, files somewhat larger), 'default', 'best "
+                      "compression' (smallest files, slowest) or 'none'. "
+                      "Lossless at every level.");
+    prm.declare_entry("probe points", "", Patterns::Anything(),
+                      "Points whose w and u are written to probes.csv each "
+                      "step, separated by ';', coordinates by ',' (e.g. "
+                      "'1, 0.5; 2, 1').");
+    prm.declare_entry("terminal", "progress",
+                      Patterns::Selection("progress|quiet|test"),
+                      "'progress': one line per step; 'quiet': start and end "
+                      "only; 'test': rounded, machine-independent lines for "
+                      "the test suite.");
+    prm.declare_entry(
+      "performance summary", "false", Patterns::Bool(),
+      "At the end, time one solve of the step matrix rho/k M + A with the "
+      "same solver (fresh AMG set-up plus CG from zero to 'relative "
+      "tolerance') and write performance.csv: iteration counts, wall time "
+      "per step, the time split, peak memory and bytes per dof (bench/ uses "
+      "it).");
+    prm.declare_entry("timing summary", "true", Patterns::Bool(),
+                      "Print the TimerOutput summary at the end.");
+    prm.leave_subsection();
+  }
+
+  void
+  OutputParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("output");
+    directory      = prm.get("directory");
+    vtu_interval   = prm.get_integer("vtu interval");
+    format = prm.get("format") == "hdf5" ? SolutionFormat::hdf5 :
+                                           SolutionFormat::vtu;
+    probe_points   = prm.get("probe points");
+    terminal       = prm.get("terminal");
+    const std::string level = prm.get("compression");
+    compression =
+      level == "none"             ? DataOutBase::VtkFlags::no_compression :
+      level == "default"          ? DataOutBase::VtkFlags::default_compression :
+      level == "best compression" ? DataOutBase::VtkFlags::best_compression :
+                                    DataOutBase::VtkFlags::best_speed;
+    timing_summary = prm.get_bool("timing summary");
+    performance_summary = prm.get_bool("performance summary");
+    prm.leave_subsection();
+    require(!directory.empty(), "output: 'directory' must not be empty.");
+  }
+
+  void
+  ManufacturedParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("manufactured solution");
+    prm.declare_entry("enabled", "false", Patterns::Bool(),
+                      "Verify against a manufactured solution: the body force, "
+                      "the tractions on Gamma_2 and Gamma_3 and the initial "
+                      "data are derived from 'exact displacement' (exact "
+                      "derivatives); the expressions in subsection 'data' "
+                      "except 'friction bound' are ignored, and the errors "
+                      "E_H, E_V, E_u are computed.");
+    prm.declare_entry("exact displacement", "0", Patterns::Anything(),
+                      "u(x,t): 'dimension' expressions separated by ';' in x, "
+                      "y, z, t and the data constants. Functions: sin cos tan "
+                      "exp log sqrt abs tanh sinh cosh atan pos(a)=max(a,0) "
+                      "pow max min; a^n for powers. It must vanish on "
+                      "Gamma_1.");
+    prm.declare_entry("normal multiplier", "0", Patterns::Anything(),
+                      "The choice xi_nu = s*(x,t) in dj(0) = [0,a] where the "
+                      "normal velocity vanishes; should lie strictly inside "
+                      "(0, a).");
+    prm.declare_entry("tangential multiplier", "0", Patterns::Anything(),
+                      "The choice xi_tau = lambda*(x,t) (projected on the "
+                      "tangent plane) where the tangential velocity vanishes; "
+                      "should satisfy |lambda*| < F_b.");
+    prm.leave_subsection();
+  }
+
+  void
+  ManufacturedParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("manufactured solution");
+    enabled               = prm.get_bool("enabled");
+    exact_displacement    = prm.get("exact displacement");
+    normal_multiplier     = prm.get("normal multiplier");
+    tangential_multiplier = prm.get("tangential multiplier");
+    prm.leave_subsection();
+  }
+
+  void
+  ConvergenceStudyParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("convergence study");
+    prm.declare_entry("type", "single",
+                      Patterns::Selection("single|h|k|coupled"),
+                      "With a manufactured solution: 'single' runs once; 'h' "
+                      "refines the mesh once per level at a fixed time step; "
+                      "'k' halves the time step per level on a fixed mesh; "
+                      "'coupled' does both (k = c h). Level 0 uses "
+                      "'geometry/global refinements' and 'time/time step'; "
+                      "adaptive studies are described in doc/adaptivity.md.");
+    prm.declare_entry("levels", "4", Patterns::Integer(1, 12),
+                      "Number of levels.");
+    prm.leave_subsection();
+  }
+
+  void
+  ConvergenceStudyParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("convergence study");
+    type     = prm.get("type");
+    n_levels = prm.get_integer("levels");
+    prm.leave_subsection();
+  }
+
+  void
+  AdaptivityParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("adaptivity");
+    prm.declare_entry("interval", "0", Patterns::Integer(0),
+                      "Adapt the mesh after every this many time steps "
+                      "(0: never). Needs 'geometry/cell type = hypercube'.");
+    prm.declare_entry(
+      "indicator", "kelly",
+      Patterns::Selection("kelly|kelly contact|residual"),
+      "Cell indicator: 'kelly' (jumps of the normal derivative of w_n), "
+      "'kelly contact' (plus the jumps of the nodal contact traction on "
+      "Gamma_3) or 'residual' (the step's residual in cells, on faces and "
+      "on Gamma_3). Formulas in doc/adaptivity.md.");
+    prm.declare_entry("contact weight", "1", Patterns::Double(0),
+                      "Weight of the contact term of 'kelly contact' and "
+                      "'residual'.");
+    prm.declare_entry(
+      "pre-refinement steps", "0", Patterns::Integer(0),
+      "After this many steps, restart once from t = 0 on the mesh reached "
+      "(as deal.II's step-26), so that the early steps' coarse-mesh errors "
+      "do not stay in the solution; 0: never. Needs 'interval' > 0; not "
+      "with checkpoints or manufactured solutions.");
+    prm.declare_entry("strategy", "fixed fraction",
+                      Patterns::Selection("fixed fraction|fixed number"),
+                      "'fixed fraction': refine the cells that hold 'refine "
+                      "fraction' of the summed indicator and coarsen those "
+                      "that hold 'coarsen fraction' of it; 'fixed number': "
+                      "refine/coarsen these fractions of the cells. Cuts "
+                      "avoid near-ties, so the mesh is the same on any number "
+                      "of ranks (doc/adaptivity.md).");
+    prm.declare_entry("refine fraction", "0.3", Patterns::Double(0, 1),
+                      "See 'strategy'.");
+    prm.declare_entry(
+      "coarsen fraction", "0.05", Patterns::Double(0, 1),
+      "See 'strategy'; 0 refines only.");
+    prm.declare_entry("max cells", "0", Patterns::Integer(0),
+                      "Upper limit of the number of cells (0: none).");
+    prm.declare_entry("min level", "0", Patterns::Integer(0, 30),
+                      "No cell is coarsened below this refinement level.");
+    prm.declare_entry("max level", "8", Patterns::Integer(0, 30),
+                      "No cell is refined beyond this refinement level.");
+    prm.declare_entry(
+      "state transfer", "interpolation",
+      Patterns::Selection("interpolation|projection"),
+      "How w_n and u_n move to the new mesh: 'interpolation' (deal.II's "
+      "SolutionTransfer) or 'projection' (M- and a_B-projections that keep "
+      "what the next step sees of the state exactly, at two linear solves "
+      "per adaptation). See doc/adaptivity.md.");
+    prm.leave_subsection();
+  }
+
+  void
+  AdaptivityParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("adaptivity");
+    interval         = prm.get_integer("interval");
+    indicator        = prm.get("indicator");
+    contact_weight   = prm.get_double("contact weight");
+    pre_refinement_steps = prm.get_integer("pre-refinement steps");
+    strategy         = prm.get("strategy");
+    refine_fraction  = prm.get_double("refine fraction");
+    coarsen_fraction = prm.get_double("coarsen fraction");
+    state_transfer   = prm.get("state transfer");
+    max_cells        = prm.get_integer("max cells");
+    min_level        = prm.get_integer("min level");
+    max_level        = prm.get_integer("max level");
+    prm.leave_subsection();
+    require(refine_fraction + coarsen_fraction <= 1,
+            "adaptivity: 'refine fraction' + 'coarsen fraction' must not "
+            "exceed 1.");
+    require(min_level <= max_level,
+            "adaptivity: 'min level' must not exceed 'max level'.");
+  }
+
+  void
+  CheckpointParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("checkpoint");
+    prm.declare_entry("interval", "0", Patterns::Integer(0),
+                      "Write a checkpoint (mesh and state, to "
+                      "OUTPUT/checkpoint/) after every this many steps; 0: "
+                      "never. The last two checkpoints are kept; each is "
+                      "written aside, then renamed. A simplex mesh resumes "
+                      "on the number of MPI ranks that wrote it.");
+    prm.declare_entry("wall interval", "0", Patterns::Double(0),
+                      "Also write one when this many wall-clock seconds have "
+                      "passed since the last; 0: never.");
+    prm.declare_entry("stop after", "0", Patterns::Integer(0),
+                      "Stop after this many steps of this run with a "
+                      "checkpoint, as SIGTERM does (exit code 5); for job "
+                      "chunks under batch time limits. 0: run to the end.");
+    prm.declare_entry("resume", "false", Patterns::Bool(),
+                      "Continue from the newest checkpoint in OUTPUT/checkpoint "
+                      "(also: hemicontact --resume FILE.prm). steps.csv, "
+                      "probes.csv and solution.pvd are continued; the number "
+                      "of MPI ranks may differ from the interrupted run's.");
+    prm.leave_subsection();
+  }
+
+  void
+  CheckpointParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("checkpoint");
+    interval      = prm.get_integer("interval");
+    wall_interval = prm.get_double("wall interval");
+    stop_after    = prm.get_integer("stop after");
+    resume        = prm.get_bool("resume");
+    prm.leave_subsection();
+  }
+
+  void
+  Parameters::declare(ParameterHandler &prm)
+  {
+    prm.declare_entry("dimension", "2", Patterns::Integer(2, 3),
+                      "Space dimension, 2 or 3.");
+    GeometryParameters::declare(prm);
+    BoundaryParameters::declare(prm);
+    MaterialParameters::declare(prm);
+    TimeParameters::declare(prm);
+    DataParameters::declare(prm);
+    NonlinearSolverParameters::declare(prm);
+    LinearSolverParameters::declare(prm);
+    OutputParameters::declare(prm);
+    AdaptivityParameters::declare(prm);
+    CheckpointParameters::declare(prm);
+    ManufacturedParameters::declare(prm);
+    ConvergenceStudyParameters::declare(prm);
+  }
+
+  void
+  Parameters::parse(ParameterHandler &prm)
+  {
+    dimension = prm.get_integer("dimension");
+    geometry.parse(prm);
+    boundary.parse(prm);
+    material.parse(prm);
+    time.parse(prm);
+    data.parse(prm);
+    nonlinear_solver.parse(prm);
+    linear_solver.parse(prm);
+    output.parse(prm);
+    adaptivity.parse(prm);
+    checkpoint.parse(prm);
+    manufactured.parse(prm);
+    study.parse(prm);
+
+    {
+      std::ostringstream message;
+      message << "nonlinear solver: 'tolerance' = "
+              << nonlinear_solver.tolerance
+              << " is below 'linear solver/relative tolerance' = "
+              << linear_solver.relative_tolerance
+              << ", the accuracy of every linear solve; Newton could not "
+                 "reach it. Raise the Newton tolerance or lower the linear "
+                 "solver's relative tolerance below it.";
+      require(nonlinear_solver.tolerance >= linear_solver.relative_tolerance,
+              message.str());
+    }
+
+    require(adaptivity.interval == 0 || geometry.cell_type == "hypercube",
+            "adaptivity: adaptive refinement needs 'geometry/cell type = "
+            "hypercube' (p4est meshes); set 'adaptivity/interval = 0' for "
+            "simplex meshes.");
+    require(adaptivity.pre_refinement_steps == 0 ||
+              (adaptivity.interval > 0 && !manufactured.enabled &&
+               checkpoint.interval == 0 && checkpoint.wall_interval == 0 &&
+               checkpoint.stop_after == 0 && !checkpoint.resume),
+            "adaptivity: 'pre-refinement steps' > 0 needs 'interval' > 0 and "
+            "works neither with checkpoints nor with manufactured solutions.");
+    require(geometry.mesh_type != "rectangle" ||
+              (geometry.lower_left.size() >= dimension &&
+               geometry.upper_right.size() >= dimension &&
+               geometry.subdivisions.size() >= dimension),
+            "geometry: the corners and subdivisions need at least " +
+              std::to_string(dimension) + " entries for dimension " +
+              std::to_string(dimension) + ".");
+    if (geometry.mesh_type == "rectangle")
+      for (unsigned int d = 0; d < dimension; ++d)
+        require(geometry.upper_right[d] > geometry.lower_left[d],
+                "geometry: 'upper right corner' must exceed 'lower left "
+                "corner' in every coordinate (coordinate " +
+                  std::to_string(d) + ").");
+  }
+} // namespace hemicontact

@@ -1,0 +1,226 @@
+#include <deal.II/base/mpi.h>
+
+#include <hemicontact/model/contact_step.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hemicontact
+{
+  template <int dim>
+  ContactStep<dim>::ContactStep(const StepSystem<dim> &system,
+                                const Parameters &     parameters)
+    : system(system)
+    , solver_type(parameters.linear_solver.type)
+    , linear_relative_tolerance(parameters.linear_solver.relative_tolerance)
+    , gradual_normal_branches(
+        parameters.solver_tuning.gradual_normal_branches)
+    , w_ghosted(system.locally_owned_dofs, system.locally_relevant_dofs,
+                system.mpi_communicator)
+    , residual_ghosted(w_ghosted)
+  {}
+
+  template <int dim>
+  TrilinosWrappers::MPI::Vector
+  ContactStep<dim>::without_constrained(const VectorType &v) const
+  {
+    VectorType result(v);
+    system.base_constraints.set_zero(result);
+    return result;
+  }
+
+  template <int dim>
+  void
+  ContactStep<dim>::residual(const VectorType &w, VectorType &residual) const
+  {
+    TimerOutput::Scope t(system.timer, "active set update");
+    // K0 and b are condensed with the base constraints, so R vanishes on
+    // constrained rows once constrained entries of w are zero
+    system.step_matrix.vmult(residual, without_constrained(w));
+    residual -= system.step_rhs;
+  }
+
+  template <int dim>
+  double
+  ContactStep<dim>::load_norm() const
+  {
+    return system.step_rhs.l2_norm();
+  }
+
+  template <int dim>
+  unsigned int
+  ContactStep<dim>::update_branches(const VectorType &w,
+                                    const VectorType &residual,
+                                    const unsigned int iteration)
+  {
+    {
+      TimerOutput::Scope t(system.timer, "active set update");
+      w_ghosted        = w;
+      residual_ghosted = residual;
+    }
+    std::vector<ContactNode<dim>> &nodes = system.contact_nodes;
+    node_states.resize(nodes.size());
+    unsigned int n_changed = 0;
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      {
+        ContactNode<dim> &node = nodes[k];
+        Tensor<1, dim>    velocity, force;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            velocity[c] = w_ghosted[node.dofs[c]];
+            force[c]    = -residual_ghosted[node.dofs[c]];
+          }
+        node_states[k] = nodal::state(node, velocity, force,
+                                                  system.law, system.friction);
+
+        NormalBranch nb =
+          nodal::normal_branch(node, node_states[k], system.law);
+        // not in the first iteration: its "current" branches are the
+        // previous step's, or the default of a new mesh
+        if (gradual_normal_branches && iteration > 0)
+          nb = nodal::gradual_normal_branch(node.normal_branch, nb,
+                                                  system.law);
+        const TangentialBranch tb =
+          nodal::tangential_branch(node, node_states[k]);
+        if (node.locally_owned &&
+            (nb != node.normal_branch || tb != node.tangential_branch))
+          ++n_changed;
+        node.normal_branch     = nb;
+        node.tangential_branch = tb;
+      }
+    return Utilities::MPI::sum(n_changed, system.mpi_communicator);
+  }
+
+  template <int dim>
+  double
+  ContactStep<dim>::nonsmooth_residual(const VectorType &residual) const
+  {
+    // equilibrium on every free dof that is not at a contact node ...
+    VectorType free_part(residual);
+    for (const ContactNode<dim> &node : system.contact_nodes)
+      if (node.locally_owned)
+        for (unsigned int c = 0; c < dim; ++c)
+          free_part[node.dofs[c]] = 0;
+    free_part.compress(VectorOperation::insert);
+    double sum = free_part.norm_sqr();
+
+    // ... plus the node-wise complementarity functions, as nodal forces
+    double local = 0;
+    for (unsigned int k = 0; k < system.contact_nodes.size(); ++k)
+      if (system.contact_nodes[k].locally_owned)
+        {
+          const ContactNode<dim> &node = system.contact_nodes[k];
+          const double            cn =
+            nodal::normal_complementarity(node, node_states[k],
+                                                system.law);
+          const Tensor<1, dim> ct =
+            nodal::tangential_complementarity(node, node_states[k]);
+          local += node.mass * node.mass * (cn * cn + ct.norm_square());
+        }
+    sum += Utilities::MPI::sum(local, system.mpi_communicator);
+    return std::sqrt(sum);
+  }
+
+  template <int dim>
+  unsigned int
+  ContactStep<dim>::solve_linearized(const VectorType &w,
+                                     const double      reduction,
+                                     const double      absolute_tolerance,
+                                     VectorType &      trial)
+  {
+    // the constrained quadratic problem of this iteration: minimise
+    // 1/2 x.K x - g.x over range(Pi), with K = K0 + sum L_i and
+    // g = b - (contact force - L_i w) at the nodes
+    ProjectedOperator<dim> op(system.step_matrix, system.locally_owned_dofs);
+    VectorType             rhs(system.step_rhs);
+    {
+      TimerOutput::Scope t(system.timer, "active set update");
+      for (unsigned int k = 0; k < system.contact_nodes.size(); ++k)
+        if (system.contact_nodes[k].locally_owned)
+          {
+            const ContactNode<dim> &     node = system.contact_nodes[k];
+            const NodeLinearization<dim> lin  = nodal::linearize(
+              node, node_states[k], system.law, system.friction);
+            op.add_node(node.dofs, nodal::free_projector(node),
+                        lin.matrix);
+
+            Tensor<1, dim> w_node;
+            for (unsigned int c = 0; c < dim; ++c)
+              w_node[c] = w_ghosted[node.dofs[c]];
+            const Tensor<1, dim> g_node = lin.matrix * w_node - lin.force;
+            for (unsigned int c = 0; c < dim; ++c)
+              rhs[node.dofs[c]] = system.step_rhs[node.dofs[c]] + g_node[c];
+          }
+      rhs.compress(VectorOperation::insert);
+      op.project(rhs);
+    }
+
+    TimerOutput::Scope t(system.timer, "linear solve");
+    unsigned int       n_iterations = 1;
+    if (solver_type == LinearSolverType::direct)
+      {
+        TrilinosWrappers::SparseMatrix matrix;
+        op.assemble(matrix);
+        system.linear_solver.solve_direct(matrix, trial, rhs);
+      }
+    else
+      {
+        system.preconditioner.prepare(op);
+        trial = w;
+        system.base_constraints.set_zero(trial);
+        op.project(trial);
+        n_iterations = system.linear_solver.solve_cg(
+          op, system.preconditioner, trial, rhs, reduction,
+          std::max(absolute_tolerance,
+                   linear_relative_tolerance * rhs.l2_norm()));
+      }
+    system.base_constraints.distribute(trial);
+    return n_iterations;
+  }
+
+  template <int dim>
+  void
+  ContactStep<dim>::apply_quadratic(const VectorType &d, VectorType &k_d) const
+  {
+    system.step_matrix.vmult(k_d, without_constrained(d));
+  }
+
+  template <int dim>
+  double
+  ContactStep<dim>::nodal_energy(const VectorType &w) const
+  {
+    double local = 0;
+    for (const ContactNode<dim> &node : system.contact_nodes)
+      if (node.locally_owned)
+        {
+          Tensor<1, dim> v;
+          for (unsigned int c = 0; c < dim; ++c)
+            v[c] = w[node.dofs[c]];
+          local += nodal::energy(node, v, system.law, system.friction);
+        }
+    return Utilities::MPI::sum(local, system.mpi_communicator);
+  }
+
+  ActiveSetNewton::Settings
+  newton_settings(const Parameters &parameters)
+  {
+    const SolverTuning &      tuning = parameters.solver_tuning;
+    ActiveSetNewton::Settings settings;
+    settings.tolerance           = parameters.nonlinear_solver.tolerance;
+    settings.absolute_tolerance  = tuning.absolute_tolerance;
+    settings.max_iterations      = parameters.nonlinear_solver.max_iterations;
+    settings.line_search         = parameters.nonlinear_solver.line_search;
+    settings.minimum_step_length = tuning.minimum_step_length;
+    settings.eisenstat_walker =
+      parameters.linear_solver.forcing_term == ForcingTerm::eisenstat_walker;
+    settings.maximum_forcing_term     = tuning.maximum_forcing_term;
+    settings.exact_solve_when_settled = tuning.exact_solve_when_settled;
+    settings.krylov_floor_fraction    = tuning.krylov_floor_fraction;
+    settings.linear_relative_tolerance =
+      parameters.linear_solver.relative_tolerance;
+    return settings;
+  }
+
+  template class ContactStep<2>;
+  template class ContactStep<3>;
+} // namespace hemicontact

@@ -1,0 +1,288 @@
+#include <deal.II/base/function_lib.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/numbers.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/lac/vector.h>
+
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/model/problem_data.h>
+
+#include <hemicontact/expressions/expression.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace hemicontact
+{
+  namespace
+  {
+    /** @p text with its line breaks and runs of spaces made single spaces,
+     *  at most 300 characters of it. */
+    std::string
+    one_paragraph(const std::string &text)
+    {
+      std::string result = single_spaced(text);
+      if (result.size() > 300)
+        result = result.substr(0, 300) + "...";
+      return result;
+    }
+
+    /** While it lives, what is written to std::cerr is discarded. */
+    class CerrSilenced
+    {
+    public:
+      CerrSilenced()
+        : saved(std::cerr.rdbuf(discarded.rdbuf()))
+      {}
+      ~CerrSilenced()
+      {
+        std::cerr.rdbuf(saved);
+      }
+      CerrSilenced(const CerrSilenced &) = delete;
+      CerrSilenced &
+      operator=(const CerrSilenced &) = delete;
+
+    private:
+      std::ostringstream    discarded;
+      std::streambuf *const saved;
+    };
+
+    bool
+    is_number(const std::string &s)
+    {
+      try
+        {
+          Utilities::string_to_double(s);
+          return true;
+        }
+      catch (...)
+        {
+          return false;
+        }
+    }
+  } // namespace
+
+  namespace
+  {
+    /** Why @p name cannot be a constant of 'data/constants' ("" if it can):
+     *  not a name, or a name the expressions already give a meaning. */
+    std::string
+    reserved_because(const std::string &name)
+    {
+      if (!(std::isalpha(static_cast<unsigned char>(name[0])) ||
+            name[0] == '_') ||
+          !std::all_of(name.begin(), name.end(), [](const char c) {
+            return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+          }))
+        return "is not a name (letters, digits and '_', not starting with "
+               "a digit)";
+      static const std::set<std::string> variables = {"x", "y", "z", "t",
+                                                      "u_nu"};
+      if (variables.count(name) != 0)
+        return "is a variable of the expressions (x, y, z, t, and u_nu in "
+               "the friction bound)";
+      if (name == "pi" || name == "_pi" || name == "_e")
+        return "is a predefined constant";
+      // muparser's and deal.II's functions besides those of the project's
+      // own grammar (Expression::function_names())
+      static const std::set<std::string> parser_functions = {
+        "asin", "acos",  "asinh", "acosh", "atanh", "log2", "log10", "ln",
+        "rint", "sum",   "avg",   "if",    "int",   "ceil", "floor", "cot",
+        "csc",  "sec",   "erfc",  "rand",  "rand_seed",    "atan2", "fmod"};
+      const auto &functions = Expression::function_names();
+      if (parser_functions.count(name) != 0 ||
+          std::find(functions.begin(), functions.end(), name) !=
+            functions.end())
+        return "is a function of the expressions";
+      return "";
+    }
+  } // namespace
+
+  std::map<std::string, double>
+  parse_constants(const std::string &text)
+  {
+    std::map<std::string, double>      constants;
+    std::map<std::string, std::string> definition; // name -> its entry
+    for (const std::string &item : Utilities::split_string_list(text, ','))
+      {
+        const std::vector<std::string> kv =
+          Utilities::split_string_list(item, '=');
+        require(kv.size() == 2 && !kv[0].empty(),
+                "data: 'constants' entry '" + item +
+                  "' is not of the form name=value.");
+        const std::string &name = kv[0];
+        const std::string  why  = reserved_because(name);
+        require(why.empty(), "data: the constant '" + name +
+                               "' of 'constants' " + why +
+                               "; choose another name.");
+        const auto earlier = definition.find(name);
+        if (earlier != definition.end())
+          throw InputError("data: 'constants' defines '" + name +
+                           "' twice: '" + earlier->second + "' and '" + item +
+                           "'; keep one (neither is chosen silently).");
+        double value;
+        try
+          {
+            value = Utilities::string_to_double(kv[1]);
+          }
+        catch (...)
+          {
+            throw InputError("data: 'constants' entry '" + item +
+                             "' does not give a number.");
+          }
+        require(std::isfinite(value), "data: 'constants' entry '" + item +
+                                        "' is not a finite number.");
+        constants[name]  = value;
+        definition[name] = item;
+      }
+    constants["pi"] = numbers::PI;
+    return constants;
+  }
+
+  template <int dim>
+  std::unique_ptr<Function<dim>>
+  parse_function(const std::string &expression, const unsigned int n_components,
+                 const std::string &constants_text,
+                 const std::string &parameter_name)
+  {
+    std::vector<std::string> expressions =
+      Utilities::split_string_list(expression, ';');
+    if (expressions.size() == 1 && n_components > 1 &&
+        is_number(expressions[0]))
+      expressions.assign(n_components, expressions[0]);
+    require(expressions.size() == n_components,
+            "data: '" + parameter_name + "' = " + quoted_expression(expression) + " has " +
+              std::to_string(expressions.size()) +
+              " components separated by ';' but needs " +
+              std::to_string(n_components) + ".");
+    for (const std::string &e : expressions)
+      require(!e.empty(), "data: '" + parameter_name +
+                            "' has an empty component in " +
+                            quoted_expression(expression) + ".");
+
+    // constant data (e.g. the default zero body force) need no parser: a
+    // ConstantFunction evaluates without muparser's per-thread lookup, and
+    // a ZeroFunction lets the assembly skip the integral
+    if (std::all_of(expressions.begin(), expressions.end(), is_number))
+      {
+        std::vector<double> values;
+        for (const std::string &e : expressions)
+          values.push_back(Utilities::string_to_double(e));
+        if (std::all_of(values.begin(), values.end(),
+                        [](const double v) { return v == 0; }))
+          return std::make_unique<Functions::ZeroFunction<dim>>(n_components);
+        return std::make_unique<Functions::ConstantFunction<dim>>(values);
+      }
+
+    const std::string variables =
+      dim == 2 ? std::string("x,y,t") : std::string("x,y,z,t");
+    const std::map<std::string, double> constants =
+      parse_constants(constants_text);
+    auto function = std::make_unique<FunctionParser<dim>>(n_components);
+    const std::string what = "data: cannot parse '" + parameter_name +
+                             "' = " + quoted_expression(expression);
+    // deal.II writes muparser's own report (the whole expression) to
+    // std::cerr before it throws: keep it out of the one-paragraph message
+    const CerrSilenced silenced;
+    try
+      {
+        function->initialize(variables, expressions, constants,
+                             /*time_dependent=*/true);
+        // muparser reports some errors only on evaluation: try once
+        Vector<double> values(n_components);
+        function->vector_value(Point<dim>(), values);
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream s;
+        e.print_info(s);
+        throw InputError(what + " (variables " + variables +
+                         " and the constants): " + one_paragraph(s.str()));
+      }
+    catch (const std::exception &e)
+      {
+        throw InputError(what + ": " + one_paragraph(e.what()));
+      }
+    catch (...)
+      {
+        throw InputError(what + " (variables " + variables + ").");
+      }
+    return function;
+  }
+
+  template <int dim>
+  void
+  ProblemData<dim>::set_time(const double t)
+  {
+    time = t;
+    for (Function<dim> *f :
+         {body_force.get(), surface_traction.get(), contact_traction.get(),
+          initial_displacement.get(),
+          initial_velocity.get()})
+      if (f != nullptr)
+        f->set_time(t);
+  }
+
+  template <int dim>
+  void
+  ProblemData<dim>::boundary_traction(
+    const bool                         on_traction,
+    const std::vector<Point<dim>> &    points,
+    const std::vector<Tensor<1, dim>> &normals,
+    std::vector<Vector<double>> &      values) const
+  {
+    const NormalTraction &with_normal = on_traction ?
+                                          surface_traction_with_normal :
+                                          contact_traction_with_normal;
+    if (!with_normal)
+      {
+        (on_traction ? surface_traction : contact_traction)
+          ->vector_value_list(points, values);
+        return;
+      }
+    for (unsigned int q = 0; q < points.size(); ++q)
+      {
+        const Tensor<1, dim> g = with_normal(points[q], normals[q], time);
+        for (unsigned int c = 0; c < dim; ++c)
+          values[q](c) = g[c];
+      }
+  }
+
+  template <int dim>
+  ProblemData<dim>
+  make_problem_data(const DataParameters &data)
+  {
+    ProblemData<dim> result;
+    const std::string &c = data.constants;
+    result.body_force = parse_function<dim>(data.body_force, dim, c, "body force");
+    result.surface_traction =
+      parse_function<dim>(data.surface_traction, dim, c, "surface traction");
+    result.contact_traction =
+      parse_function<dim>(data.contact_traction, dim, c, "contact traction");
+    result.friction_bound =
+      std::make_shared<FrictionBound<dim>>(data.friction_bound, c);
+    result.initial_displacement = parse_function<dim>(
+      data.initial_displacement, dim, c, "initial displacement");
+    result.initial_velocity =
+      parse_function<dim>(data.initial_velocity, dim, c, "initial velocity");
+    return result;
+  }
+
+  template struct ProblemData<2>;
+  template struct ProblemData<3>;
+  template ProblemData<2>
+  make_problem_data<2>(const DataParameters &);
+  template ProblemData<3>
+  make_problem_data<3>(const DataParameters &);
+  template std::unique_ptr<Function<2>>
+  parse_function<2>(const std::string &, const unsigned int,
+                    const std::string &, const std::string &);
+  template std::unique_ptr<Function<3>>
+  parse_function<3>(const std::string &, const unsigned int,
+                    const std::string &, const std::string &);
+} // namespace hemicontact

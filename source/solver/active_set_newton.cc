@@ -1,0 +1,146 @@
+#include <hemicontact/solver/active_set_newton.h>
+#include <hemicontact/solver/backtracking.h>
+#include <hemicontact/base/exceptions.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+namespace hemicontact
+{
+  namespace
+  {
+    std::string
+    format_number(const double x)
+    {
+      std::ostringstream s;
+      s.precision(3);
+      s << std::scientific << x;
+      return s.str();
+    }
+  } // namespace
+
+  ActiveSetNewton::ActiveSetNewton(const Settings &settings, TimerOutput *timer)
+    : settings(settings)
+    , timer(timer)
+  {}
+
+  void
+  ActiveSetNewton::line_search(const ActiveSetProblem &problem, VectorType &w,
+                               const VectorType &trial, VectorType &residual,
+                               unsigned int &n_reductions) const
+  {
+    std::unique_ptr<TimerOutput::Scope> scope;
+    if (timer != nullptr)
+      scope = std::make_unique<TimerOutput::Scope>(*timer, "line search");
+
+    VectorType direction(trial);
+    direction -= w;
+    if (!settings.line_search)
+      {
+        w = trial;
+        problem.residual(w, residual);
+        return;
+      }
+
+    // J_n(w + theta d) - J_n(w) = theta d.R + theta^2/2 d.K0 d + (nodal part)
+    VectorType k_d(direction);
+    problem.apply_quadratic(direction, k_d);
+    const double slope     = direction * residual;
+    const double curvature = direction * k_d;
+    const double nodal_0   = problem.nodal_energy(w);
+    const double scale =
+      std::abs(slope) + std::abs(curvature) + std::abs(nodal_0) + 1e-300;
+
+    VectorType   candidate(w);
+    const double theta = backtracking_step_length(
+      [&](const double t) {
+        candidate = w;
+        candidate.add(t, direction);
+        return t * slope + 0.5 * t * t * curvature +
+               problem.nodal_energy(candidate) - nodal_0;
+      },
+      scale, settings.minimum_step_length, n_reductions);
+    w.add(theta, direction);
+    // K0 is linear: R(w + theta d) = R(w) + theta K0 d
+    residual.add(theta, k_d);
+  }
+
+  ActiveSetNewton::Report
+  ActiveSetNewton::solve(ActiveSetProblem &problem, VectorType &w,
+                         VectorType &residual) const
+  {
+    Report     report;
+    VectorType trial(w);
+
+    double       forcing      = settings.maximum_forcing_term;
+    double       previous_res = 0;
+    const double load_norm    = problem.load_norm();
+    const double target =
+      settings.tolerance * load_norm + settings.absolute_tolerance;
+
+    problem.residual(w, residual); // then kept up to date by line_search()
+    for (unsigned int iteration = 0;; ++iteration)
+      {
+        const unsigned int n_changed =
+          problem.update_branches(w, residual, iteration);
+        const double res         = problem.nonsmooth_residual(residual);
+        report.relative_residual = res / std::max(load_norm, 1e-300);
+        if (!std::isfinite(res))
+          throw SolverFailure("the nonsmooth residual is not a finite number "
+                              "(NaN or Inf) in Newton iteration " +
+                              std::to_string(iteration) + ".");
+
+        // converged: no branch changed and the real residual is small; a
+        // residual far below the tolerance is accepted even if a node at a
+        // branch boundary flipped its label
+        if ((n_changed == 0 && res <= target) || res <= 1e-2 * target)
+          return report;
+        if (iteration == settings.max_iterations)
+          throw SolverFailure(
+            "Newton did not converge in " +
+            std::to_string(settings.max_iterations) +
+            " iterations: relative nonsmooth residual " +
+            format_number(report.relative_residual) + " (tolerance " +
+            format_number(settings.tolerance) + "), " +
+            (n_changed > 0 ?
+               std::to_string(n_changed) +
+                 " nodes still changing branch. Reduce the time step, raise "
+                 "'nonlinear solver/max iterations', or check the convexity "
+                 "warning at start-up." :
+               std::string(
+                 "with no node changing branch: the iteration stalled on "
+                 "fixed branches, where it is a linear solve, so the "
+                 "residual is limited by the accuracy of the linear solves "
+                 "('linear solver/relative tolerance' = ") +
+                 format_number(settings.linear_relative_tolerance) +
+                 ") or by the convexity of the step. Loosen the Newton "
+                 "tolerance, tighten the linear solver's, or reduce the "
+                 "time step."));
+
+        // inexact Newton: the Krylov tolerance follows the decrease of the
+        // nonsmooth residual (Eisenstat-Walker, choice 2), but never asks for
+        // more than the Newton tolerance needs; once no node changes branch
+        // the step is smooth and is solved to the tolerance at once
+        if (iteration > 0)
+          {
+            const double previous_forcing = forcing;
+            forcing = 0.9 * std::pow(res / previous_res, 2);
+            if (0.9 * previous_forcing * previous_forcing > 0.1)
+              forcing = std::max(forcing,
+                                 0.9 * previous_forcing * previous_forcing);
+            forcing = std::min(forcing, settings.maximum_forcing_term);
+          }
+        previous_res = res;
+        const bool inexact = settings.eisenstat_walker;
+        const bool settled = settings.exact_solve_when_settled && n_changed == 0;
+        report.linear_iterations += problem.solve_linearized(
+          w, inexact && !settled ? forcing : 0.,
+          inexact ? settings.krylov_floor_fraction * target : 0., trial);
+        line_search(problem, w, trial, residual,
+                    report.line_search_reductions);
+        ++report.newton_iterations;
+      }
+  }
+} // namespace hemicontact

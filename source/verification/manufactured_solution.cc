@@ -1,0 +1,383 @@
+#include <deal.II/base/utilities.h>
+#include <deal.II/lac/vector.h>
+
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/verification/manufactured_solution.h>
+
+#include <cmath>
+
+namespace hemicontact
+{
+  namespace
+  {
+    std::vector<std::string>
+    variable_names(const int dim)
+    {
+      return dim == 2 ? std::vector<std::string>{"x", "y", "t"} :
+                        std::vector<std::string>{"x", "y", "z", "t"};
+    }
+
+    std::vector<Expression>
+    parse_vector(const std::string &text, const int dim,
+                 const std::map<std::string, double> &constants,
+                 const std::string &name)
+    {
+      std::vector<std::string> parts = Utilities::split_string_list(text, ';');
+      if (parts.size() == 1 && dim > 1)
+        parts.assign(dim, parts[0]);
+      require(static_cast<int>(parts.size()) == dim,
+              "manufactured solution: '" + name + "' needs " +
+                std::to_string(dim) + " expressions separated by ';'.");
+      std::vector<Expression> result;
+      for (const std::string &part : parts)
+        result.emplace_back(part, variable_names(dim), constants,
+                            "manufactured solution/" + name);
+      return result;
+    }
+  } // namespace
+
+  template <int dim>
+  ManufacturedSolution<dim>::ManufacturedSolution(const Parameters &  parameters,
+                                                  const NormalLaw &   law,
+                                                  const FrictionLaw &friction)
+    : law(law)
+    , friction(friction)
+    , material(parameters.material)
+  {
+    const auto constants = parse_constants(parameters.data.constants);
+    const ManufacturedParameters &m = parameters.manufactured;
+    displacement = parse_vector(m.exact_displacement, dim, constants,
+                                "exact displacement");
+    normal_multiplier = std::make_unique<Expression>(
+      m.normal_multiplier, variable_names(dim), constants,
+      "manufactured solution/normal multiplier");
+    tangential_multiplier = parse_vector(m.tangential_multiplier, dim,
+                                         constants, "tangential multiplier");
+    friction_bound = std::make_shared<FrictionBound<dim>>(
+      parameters.data.friction_bound, parameters.data.constants);
+
+    // the derivatives, once: t is variable number dim
+    for (int c = 0; c < dim; ++c)
+      {
+        velocity.push_back(displacement[c].derivative(dim));
+        acceleration.push_back(velocity[c].derivative(dim));
+        for (int i = 0; i < dim; ++i)
+          {
+            displacement_gradient.push_back(displacement[c].derivative(i));
+            velocity_gradient.push_back(velocity[c].derivative(i));
+          }
+      }
+    for (int c = 0; c < dim; ++c) // in the order (c dim + i) dim + j
+      for (int i = 0; i < dim; ++i)
+        for (int j = 0; j < dim; ++j)
+          {
+            displacement_hessian.push_back(
+              displacement_gradient[c * dim + i].derivative(j));
+            velocity_hessian.push_back(
+              velocity_gradient[c * dim + i].derivative(j));
+          }
+
+    // the tapes, in the order unpack_fields() and evaluate() read them
+    std::vector<const Expression *> fields;
+    for (const auto *list : {&displacement, &velocity, &displacement_gradient,
+                             &velocity_gradient})
+      for (const Expression &e : *list)
+        fields.push_back(&e);
+    // the time (variable dim) is the same at all points of a batch
+    const std::vector<unsigned int> time = {dim};
+    fields_tape = std::make_unique<ExpressionTape>(fields, time);
+    std::vector<const Expression *> second_derivatives;
+    for (const Expression &e : acceleration)
+      second_derivatives.push_back(&e);
+    for (int c = 0; c < dim; ++c)
+      for (int i = 0; i < dim; ++i)
+        for (int j = i; j < dim; ++j)
+          {
+            second_derivatives.push_back(
+              &displacement_hessian[(c * dim + i) * dim + j]);
+            second_derivatives.push_back(
+              &velocity_hessian[(c * dim + i) * dim + j]);
+          }
+    force_tape = std::make_unique<ExpressionTape>(second_derivatives, time);
+    std::vector<const Expression *> all = fields;
+    all.insert(all.end(), second_derivatives.begin(), second_derivatives.end());
+    all_tape = std::make_unique<ExpressionTape>(all, time);
+  }
+
+  namespace
+  {
+    /** @p tape at every point of @p points at time @p t: n_outputs()
+     *  results per point (through @p cache unless it is null). */
+    template <int dim>
+    std::vector<double>
+    evaluate_tape(const ExpressionTape &         tape,
+                  const std::vector<Point<dim>> &points,
+                  const double                   t,
+                  SpatialCache *                 cache = nullptr)
+    {
+      std::vector<double> at(points.size() * (dim + 1));
+      for (unsigned int p = 0; p < points.size(); ++p)
+        {
+          for (int i = 0; i < dim; ++i)
+            at[p * (dim + 1) + i] = points[p][i];
+          at[p * (dim + 1) + dim] = t;
+        }
+      std::vector<double> r(points.size() * tape.n_outputs());
+      if (cache)
+        cache->evaluate(at.data(), dim + 1, points.size(), r.data());
+      else
+        tape.evaluate(at.data(), dim + 1, points.size(), r.data());
+      return r;
+    }
+
+    /** u, w, grad u, grad w from the outputs of the fields tape. */
+    template <int dim>
+    void
+    unpack_fields(const double *r, typename ManufacturedSolution<dim>::Values &v)
+    {
+      for (int c = 0; c < dim; ++c)
+        {
+          v.u[c] = r[c];
+          v.w[c] = r[dim + c];
+          for (int i = 0; i < dim; ++i)
+            {
+              v.grad_u[c][i] = r[2 * dim + c * dim + i];
+              v.grad_w[c][i] = r[2 * dim + dim * dim + c * dim + i];
+            }
+        }
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ManufacturedSolution<dim>::unpack_second_derivatives(const double *r,
+                                                       Values &      v) const
+  {
+    unsigned int k = 0;
+    for (int c = 0; c < dim; ++c)
+      v.w_dot[c] = r[k++];
+    Tensor<3, dim> hessian_u, hessian_w; // [component][i][j]
+    for (int c = 0; c < dim; ++c)
+      for (int i = 0; i < dim; ++i)
+        for (int j = i; j < dim; ++j)
+          {
+            hessian_u[c][i][j] = hessian_u[c][j][i] = r[k++];
+            hessian_w[c][i][j] = hessian_w[c][j][i] = r[k++];
+          }
+    v.div_sigma = material.stress_divergence(hessian_w, hessian_u);
+  }
+
+  template <int dim>
+  std::vector<typename ManufacturedSolution<dim>::Values>
+  ManufacturedSolution<dim>::evaluate(const std::vector<Point<dim>> &points,
+                                      const double                   t) const
+  {
+    const std::vector<double> r = evaluate_tape(*all_tape, points, t);
+    const unsigned int        n_fields = fields_tape->n_outputs();
+    std::vector<Values>       values(points.size());
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        const double *at = r.data() + p * all_tape->n_outputs();
+        unpack_fields<dim>(at, values[p]);
+        unpack_second_derivatives(at + n_fields, values[p]);
+      }
+    return values;
+  }
+
+  template <int dim>
+  std::vector<typename ManufacturedSolution<dim>::Values>
+  ManufacturedSolution<dim>::evaluate_fields(
+    const std::vector<Point<dim>> &points,
+    const double                   t,
+    SpatialCache *                 cache) const
+  {
+    const std::vector<double> r = evaluate_tape(*fields_tape, points, t, cache);
+    std::vector<Values>       values(points.size());
+    for (unsigned int p = 0; p < points.size(); ++p)
+      unpack_fields<dim>(r.data() + p * fields_tape->n_outputs(), values[p]);
+    return values;
+  }
+
+  template <int dim>
+  typename ManufacturedSolution<dim>::Values
+  ManufacturedSolution<dim>::evaluate(const Point<dim> &p, const double t) const
+  {
+    return evaluate(std::vector<Point<dim>>{p}, t)[0];
+  }
+
+  template <int dim>
+  typename ManufacturedSolution<dim>::Values
+  ManufacturedSolution<dim>::evaluate_fields(const Point<dim> &p,
+                                             const double      t) const
+  {
+    return evaluate_fields(std::vector<Point<dim>>{p}, t)[0];
+  }
+
+  template <int dim>
+  std::vector<Tensor<1, dim>>
+  ManufacturedSolution<dim>::body_force(const std::vector<Point<dim>> &points,
+                                        const double  t,
+                                        SpatialCache *cache) const
+  {
+    const std::vector<double> r = evaluate_tape(*force_tape, points, t, cache);
+    std::vector<Tensor<1, dim>> forces(points.size());
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        Values v;
+        unpack_second_derivatives(r.data() + p * force_tape->n_outputs(), v);
+        forces[p] = material.density() * v.w_dot - v.div_sigma;
+      }
+    return forces;
+  }
+
+  template <int dim>
+  std::unique_ptr<SpatialCache>
+  ManufacturedSolution<dim>::make_fields_cache() const
+  {
+    return std::make_unique<SpatialCache>(*fields_tape);
+  }
+
+  template <int dim>
+  std::unique_ptr<SpatialCache>
+  ManufacturedSolution<dim>::make_force_cache() const
+  {
+    return std::make_unique<SpatialCache>(*force_tape);
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  ManufacturedSolution<dim>::stress(const Values &v) const
+  {
+    return material.stress(symmetrize(v.grad_w), symmetrize(v.grad_u));
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  ManufacturedSolution<dim>::body_force(const Point<dim> &p,
+                                        const double      t) const
+  {
+    return body_force(std::vector<Point<dim>>{p}, t)[0];
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  ManufacturedSolution<dim>::surface_traction(const Point<dim> &    p,
+                                              const Tensor<1, dim> &normal,
+                                              const double          t) const
+  {
+    return stress(evaluate_fields(p, t)) * normal;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  ManufacturedSolution<dim>::contact_traction(const Point<dim> &    p,
+                                              const Tensor<1, dim> &normal,
+                                              const double          t) const
+  {
+    const Values         v      = evaluate_fields(p, t);
+    const double         w_n    = v.w * normal;
+    const Tensor<1, dim> w_t    = v.w - w_n * normal;
+    const double         scale  = 1e-13 * (1 + v.w.norm());
+    const double         bound  = friction_bound->value(p, t, v.u * normal);
+
+    std::vector<double> at(dim + 1);
+    for (int i = 0; i < dim; ++i)
+      at[i] = p[i];
+    at[dim] = t;
+
+    // xi_nu in dj(w_nu): the given multiplier where w_nu = 0
+    const double xi_n = std::abs(w_n) <= scale ?
+                          normal_multiplier->evaluate(at) :
+                          law.subgradient(w_n);
+    // xi_tau in dphi(w_tau): the given multiplier where w_tau = 0
+    Tensor<1, dim> xi_t;
+    if (w_t.norm() <= scale)
+      {
+        for (int c = 0; c < dim; ++c)
+          xi_t[c] = tangential_multiplier[c].evaluate(at);
+        xi_t -= (xi_t * normal) * normal;
+      }
+    else
+      xi_t = friction.response(bound, w_t.norm()) * w_t / w_t.norm();
+
+    return stress(v) * normal + xi_n * normal + xi_t;
+  }
+
+  template <int dim>
+  ProblemData<dim>
+  ManufacturedSolution<dim>::make_problem_data() const
+  {
+    ProblemData<dim> data;
+    // f0 and the initial fields as deal.II Functions (time from get_time())
+    class Field : public Function<dim>
+    {
+    public:
+      Field(const ManufacturedSolution<dim> &m, const int which)
+        : Function<dim>(dim)
+        , m(m)
+        , which(which)
+        , cache(which == 0 ? m.make_force_cache() : nullptr)
+      {}
+      void
+      vector_value(const Point<dim> &p, Vector<double> &values) const override
+      {
+        std::vector<Vector<double>> list(1, Vector<double>(dim));
+        vector_value_list({p}, list);
+        values = list[0];
+      }
+      void
+      vector_value_list(const std::vector<Point<dim>> &points,
+                        std::vector<Vector<double>> &  values) const override
+      {
+        // one batch: what depends only on t is computed once; f0 is
+        // assembled at every step on the same cells: what depends only on
+        // x is remembered
+        const double t = this->get_time();
+        if (which == 0)
+          {
+            const std::vector<Tensor<1, dim>> f =
+              m.body_force(points, t, cache.get());
+            for (unsigned int p = 0; p < points.size(); ++p)
+              for (int c = 0; c < dim; ++c)
+                values[p](c) = f[p][c];
+            return;
+          }
+        const std::vector<Values> v = m.evaluate_fields(points, t);
+        for (unsigned int p = 0; p < points.size(); ++p)
+          for (int c = 0; c < dim; ++c)
+            values[p](c) = which == 1 ? v[p].u[c] : v[p].w[c];
+      }
+      double
+      value(const Point<dim> &p, const unsigned int c) const override
+      {
+        Vector<double> v(dim);
+        vector_value(p, v);
+        return v(c);
+      }
+
+    private:
+      const ManufacturedSolution<dim> &    m;
+      const int                            which;
+      const std::unique_ptr<SpatialCache> cache;
+    };
+
+    data.body_force           = std::make_unique<Field>(*this, 0);
+    data.initial_displacement = std::make_unique<Field>(*this, 1);
+    data.initial_velocity     = std::make_unique<Field>(*this, 2);
+    data.surface_traction     = std::make_unique<Functions::ZeroFunction<dim>>(dim);
+    data.contact_traction     = std::make_unique<Functions::ZeroFunction<dim>>(dim);
+    data.friction_bound = friction_bound;
+    data.surface_traction_with_normal =
+      [this](const Point<dim> &p, const Tensor<1, dim> &n, double t) {
+        return surface_traction(p, n, t);
+      };
+    data.contact_traction_with_normal =
+      [this](const Point<dim> &p, const Tensor<1, dim> &n, double t) {
+        return contact_traction(p, n, t);
+      };
+    return data;
+  }
+
+  template class ManufacturedSolution<2>;
+  template class ManufacturedSolution<3>;
+} // namespace hemicontact
