@@ -16,7 +16,7 @@
 #include <hemicontact/laws/friction/slip_rate_weakening.h>
 #include <hemicontact/laws/friction/tresca.h>
 #include <hemicontact/base/exceptions.h>
-#include <hemicontact/laws/normal/linear_damping_law.h>
+#include <hemicontact/laws/normal/no_normal_resistance.h>
 
 #include <cmath>
 #include <functional>

@@ -6,6 +6,7 @@
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/laws/normal/exponential_law.h>
 #include <hemicontact/laws/normal/linear_damping_law.h>
+#include <hemicontact/laws/normal/no_normal_resistance.h>
 #include <hemicontact/laws/normal/piecewise_linear_law.h>
 
 #include <cmath>

@@ -33,7 +33,7 @@ namespace hemicontact
     registry()
     {
       static LawRegistry<FrictionLaw> laws(
-        "friction law", "tresca",
+        "friction law", TrescaLaw::law_name,
         "Friction law -sigma_tau in dphi(w_tau) on the contact boundary: the "
         "Tresca disk of radius 'data/friction bound' plus the law's "
         "remainder in the slip speed. Each law has its own subsection "
@@ -51,6 +51,12 @@ namespace hemicontact
   friction_law_registry()
   {
     return registry().entries();
+  }
+
+  const std::string &
+  default_friction_law_name()
+  {
+    return registry().default_name();
   }
 
   void

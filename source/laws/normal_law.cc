@@ -2,6 +2,7 @@
 #include <hemicontact/laws/normal_law.h>
 #include <hemicontact/laws/normal/exponential_law.h>
 #include <hemicontact/laws/normal/linear_damping_law.h>
+#include <hemicontact/laws/normal/no_normal_resistance.h>
 #include <hemicontact/laws/normal/piecewise_linear_law.h>
 
 #include <algorithm>
@@ -30,19 +31,6 @@ namespace hemicontact
   NormalLaw::subgradient(const double r) const
   {
     return r > 0 ? jump() + remainder(r) : 0.;
-  }
-
-  double
-  get_law_double(ParameterHandler &prm, const std::string &law,
-                 const std::string &key)
-  {
-    prm.enter_subsection(law);
-    const double value = prm.get_double(key);
-    prm.leave_subsection();
-    require(std::isfinite(value), "'" + law + "/" + key + "' = " +
-                                    std::to_string(value) +
-                                    " is not a finite number.");
-    return value;
   }
 
   namespace

@@ -2,7 +2,6 @@
 #include <deal.II/base/timer.h>
 
 #include <hemicontact/problem/contact_problem.h>
-#include <hemicontact/laws/friction/tresca.h>
 #include <hemicontact/base/exceptions.h>
 
 #include <algorithm>
@@ -223,7 +222,7 @@ namespace hemicontact
           << " cells, " << dof_handler.n_dofs() << " dofs, " << n_nodes
           << " contact nodes, " << n_steps << " steps of k = " << time_step
           << ", normal law '" << law->name() << "'";
-    if (friction->name() != TrescaLaw::law_name)
+    if (friction->name() != default_friction_law_name())
       pcout << ", friction law '" << friction->name() << "'";
     if (parameters.output.terminal != "test")
       pcout << ", " << Utilities::MPI::n_mpi_processes(mpi_communicator)

@@ -10,20 +10,25 @@ namespace hemicontact
   void
   ContactProblem<dim>::count_branches(StepStatistics &stats) const
   {
-    unsigned int counts[5] = {0, 0, 0, 0, 0};
-    for (const ContactNode<dim> &node : contact_nodes)
-      if (node.locally_owned)
-        {
-          ++counts[static_cast<unsigned int>(node.normal_branch)];
-          ++counts[3 + static_cast<unsigned int>(node.tangential_branch)];
-        }
-    for (unsigned int &c : counts)
-      c = Utilities::MPI::sum(c, mpi_communicator);
-    stats.n_separating   = counts[0];
-    stats.n_normal_stick = counts[1];
-    stats.n_damped       = counts[2];
-    stats.n_stick        = counts[3];
-    stats.n_slip         = counts[4];
+    // one count per branch, summed over the ranks
+    auto count = [&](const auto branch, const auto node_branch) {
+      unsigned int n = 0;
+      for (const ContactNode<dim> &node : contact_nodes)
+        if (node.locally_owned && node_branch(node) == branch)
+          ++n;
+      return Utilities::MPI::sum(n, mpi_communicator);
+    };
+    const auto normal = [](const ContactNode<dim> &node) {
+      return node.normal_branch;
+    };
+    const auto tangential = [](const ContactNode<dim> &node) {
+      return node.tangential_branch;
+    };
+    stats.n_separating   = count(NormalBranch::separating, normal);
+    stats.n_normal_stick = count(NormalBranch::stick, normal);
+    stats.n_damped       = count(NormalBranch::damped, normal);
+    stats.n_stick        = count(TangentialBranch::stick, tangential);
+    stats.n_slip         = count(TangentialBranch::slip, tangential);
   }
 
   template <int dim>

@@ -5,7 +5,7 @@
 #include <hemicontact/input/command_line.h>
 #include <hemicontact/laws/friction_law.h>
 #include <hemicontact/base/exceptions.h>
-#include <hemicontact/laws/normal_law.h>
+#include <hemicontact/laws/law_parameters.h>
 
 #include <string>
 

@@ -91,6 +91,10 @@ namespace hemicontact
   const std::vector<FrictionLawEntry> &
   friction_law_registry();
 
+  /** The friction law selected when the parameter file names none. */
+  const std::string &
+  default_friction_law_name();
+
   /**
    * Add a law to the registry, e.g. from a program that links the library:
    * register_friction_law(friction_law_entry<MyLaw>()). Call it before any

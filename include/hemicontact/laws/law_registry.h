@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/laws/law_parameters.h>
 
 #include <functional>
 #include <memory>
@@ -60,6 +61,13 @@ namespace hemicontact
       , documentation(std::move(documentation))
       , laws(std::move(laws))
     {}
+
+    /** The name of the law selected when the parameter file names none. */
+    const std::string &
+    default_name() const
+    {
+      return default_law;
+    }
 
     /** All laws, the shipped ones first. */
     const std::vector<LawEntry<Base>> &

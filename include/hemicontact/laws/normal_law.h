@@ -77,11 +77,6 @@ namespace hemicontact
   /** One entry of the registry of normal laws (subsection "normal law"). */
   using NormalLawEntry = LawEntry<NormalLaw>;
 
-  /** Read entry @p key of subsection @p law of the current subsection. */
-  double
-  get_law_double(ParameterHandler &prm, const std::string &law,
-                 const std::string &key);
-
   /**
    * All registered normal laws: the shipped ones (one line each in
    * source/laws/normal_law.cc) and those added by register_normal_law().

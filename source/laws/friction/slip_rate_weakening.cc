@@ -1,6 +1,6 @@
 #include <hemicontact/laws/friction/slip_rate_weakening.h>
 #include <hemicontact/base/exceptions.h>
-#include <hemicontact/laws/normal_law.h>
+#include <hemicontact/laws/law_parameters.h>
 
 #include <cmath>
 

@@ -1,5 +1,6 @@
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/laws/normal/exponential_law.h>
+#include <hemicontact/laws/law_parameters.h>
 
 #include <cmath>
 

@@ -1,5 +1,6 @@
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/laws/normal/linear_damping_law.h>
+#include <hemicontact/laws/law_parameters.h>
 
 namespace hemicontact
 {

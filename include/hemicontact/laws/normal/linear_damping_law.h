@@ -52,48 +52,4 @@ namespace hemicontact
   private:
     double coefficient;
   };
-
-  /** No normal resistance at all: j = 0. */
-  class NoNormalResistance : public NormalLaw
-  {
-  public:
-    static constexpr const char *law_name = "none";
-    static void
-    declare_parameters(ParameterHandler &)
-    {}
-    explicit NoNormalResistance(ParameterHandler &)
-    {}
-    NoNormalResistance() = default;
-
-    std::string
-    name() const override
-    {
-      return law_name;
-    }
-    double
-    jump() const override
-    {
-      return 0.;
-    }
-    double
-    remainder(const double) const override
-    {
-      return 0.;
-    }
-    double
-    remainder_derivative(const double) const override
-    {
-      return 0.;
-    }
-    double
-    remainder_primitive(const double) const override
-    {
-      return 0.;
-    }
-    double
-    relaxed_monotonicity_constant() const override
-    {
-      return 0.;
-    }
-  };
 } // namespace hemicontact
