@@ -5,7 +5,8 @@
 // value must equal the vector's entry bit for bit at the node of the same
 // position; every cell row must be a cell of the mesh with its vertices in
 // XDMF order; x + u must be the sum of both; the XDMF collection must name
-// the datasets of every step written and drop the steps after a resume.
+// the datasets of every step written and drop the steps after a resume; a
+// missing directory is named.
 #include <deal.II/base/function.h>
 #include <deal.II/base/hdf5.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -13,6 +14,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <hemicontact/base/exceptions.h>
 #include <hemicontact/mesh/discretization.h>
 #include <hemicontact/output/nodal_hdf5_writer.h>
 
@@ -257,6 +259,18 @@ namespace
     writer.keep_steps_up_to(1);
     writer.write(dof_handler, fields, 2, 0.2, "displacement");
     check_xdmf(writer.xdmf_file_name(), {stem + "_00001.h5:/nodes"});
+
+    // a directory that is not there: named on every rank
+    NodalHdf5Writer<dim> nowhere("missing_directory", stem, MPI_COMM_WORLD);
+    try
+      {
+        nowhere.write(dof_handler, fields, 0, 0.);
+        out() << "  missing directory: written\n";
+      }
+    catch (const OutputError &e)
+      {
+        out() << "  missing directory: " << e.what() << "\n";
+      }
 
     // the first nodes and cells, the same on any number of ranks where the
     // numbering of the degrees of freedom is (p4est)

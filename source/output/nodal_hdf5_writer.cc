@@ -10,7 +10,7 @@
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
+#include <filesystem>
 #include <iomanip>
 #include <map>
 #include <sstream>
@@ -267,10 +267,34 @@ namespace hemicontact
       return values;
     };
 
-    // the file, written by all ranks
-    const std::string h5 = file_name(step);
+    // the file, written by all ranks; deal.II's HDF5 classes check the
+    // library's return codes in debug mode only, so the root checks the
+    // directory and its free space before and the file's size after
+    const std::string h5   = file_name(step);
+    const std::string path = directory + "/" + h5;
+    const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+    const std::uintmax_t payload =
+      n_nodes * dim * sizeof(double) *
+        (1 + fields.size() + (displacement_field != nullptr ? 1 : 0)) +
+      n_cells * n_columns * sizeof(unsigned int);
+    const std::string prefix = "cannot write '" + path + "': ";
+    std::string       error;
+    if (root)
+      {
+        std::error_code ec;
+        if (!std::filesystem::is_directory(directory, ec))
+          error = prefix + "'" + directory + "' is not a directory.";
+        else
+          {
+            const std::string shortfall =
+              free_space_shortfall(directory, payload + (1 << 16));
+            if (!shortfall.empty())
+              error = prefix + shortfall + ".";
+          }
+      }
+    throw_if_any(error, mpi_communicator);
     {
-      HDF5::File file(directory + "/" + h5, HDF5::File::FileAccessMode::create,
+      HDF5::File file(path, HDF5::File::FileAccessMode::create,
                       mpi_communicator);
       file.set_attribute("step", step);
       file.set_attribute("time", time);
@@ -288,6 +312,14 @@ namespace hemicontact
                      n_nodes);
         }
     }
+    if (root)
+      {
+        std::error_code ec;
+        const std::uintmax_t size = std::filesystem::file_size(path, ec);
+        if (ec || size < payload)
+          error = prefix + "the file is missing or shorter than its data.";
+      }
+    throw_if_any(error, mpi_communicator);
 
     // its grid in the collection
     std::ostringstream grid;
@@ -323,8 +355,7 @@ namespace hemicontact
       entries.pop_back();
     entries.push_back({step, time, grid.str()});
 
-    std::string error;
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    if (root)
       error = write_atomically(directory + "/" + xdmf_file_name(),
                                xdmf_content());
     try

@@ -56,9 +56,11 @@ namespace hemicontact
      * Write the file of @p step at @p time with the mesh of @p dof_handler
      * and @p fields, and rewrite the XDMF collection with it. Collective.
      * With @p displacement the name of one of @p fields, the displaced
-     * positions x + u are written as well. Throws an OutputError naming the
-     * file if the XDMF file cannot be written. Returns the name of the HDF5
-     * file (without the directory).
+     * positions x + u are written as well. Throws an OutputError on every
+     * rank, naming the file, if the directory is missing, has too little
+     * free space, or a file is not written completely (the collection then
+     * stays as it was). Returns the name of the HDF5 file (without the
+     * directory).
      */
     std::string
     write(const DoFHandler<dim> &dof_handler, const std::vector<Field> &fields,
