@@ -341,6 +341,12 @@ namespace hemicontact
                       "output time, series solution.pvd) or 'hdf5' (one .h5 "
                       "per output time written by all ranks, series "
                       "solution.xdmf). ParaView opens either series.");
+    prm.declare_entry("precision", "float", Patterns::Selection("float|double"),
+                      "'float': the solution files only, whose values are "
+                      "single precision; 'double': at the same output times "
+                      "also nodal_NNNNN.h5 with the nodes, the cells and w, u "
+                      "and the contact traction per node in double "
+                      "precision, series nodal.xdmf (either 'format').");
     prm.declare_entry("compression", "best speed",
                       Patterns::Selection("best speed|default|best "
                                           "compression|none"),
@@ -377,6 +383,9 @@ namespace hemicontact
     vtu_interval   = prm.get_integer("vtu interval");
     format = prm.get("format") == "hdf5" ? SolutionFormat::hdf5 :
                                            SolutionFormat::vtu;
+    precision = prm.get("precision") == "double" ?
+                  OutputPrecision::double_precision :
+                  OutputPrecision::single_precision;
     probe_points   = prm.get("probe points");
     terminal       = prm.get("terminal");
     const std::string level = prm.get("compression");

@@ -143,11 +143,19 @@ namespace hemicontact
     hdf5 ///< one .h5 per output time (parallel HDF5), the .xdmf series
   };
 
+  /** The precision of the nodal fields written. */
+  enum class OutputPrecision
+  {
+    single_precision, ///< the solution files only (float values)
+    double_precision  ///< also nodal_NNNNN.h5 and nodal.xdmf (doubles)
+  };
+
   struct OutputParameters
   {
     std::string  directory;
     unsigned int vtu_interval; ///< every this many steps, 0 = never
     SolutionFormat format;
+    OutputPrecision precision;
     std::string  probe_points; ///< "x,y; x,y" (empty: none)
     std::string  terminal;     ///< "progress", "quiet" or "test"
     /** zlib level of the VTU files (lossless at every level). */
