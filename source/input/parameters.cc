@@ -384,7 +384,8 @@ namespace hemicontact
                       "Write the solution files (VTU or HDF5) and the rows "
                       "of the contact CSV files every this many steps; 0 "
                       "writes none.");
-    prm.declare_alias("output interval", "vtu interval", true);
+    // 'vtu interval' is read as 'output interval'
+    prm.declare_alias("output interval", "vtu interval");
     prm.declare_entry("format", "vtu", selection_pattern(solution_formats),
                       "Solution files: 'vtu' (.vtu per rank and .pvtu per "
                       "output time, series solution.pvd) or 'hdf5' (one .h5 "

@@ -330,6 +330,26 @@ namespace hemicontact
     }
   } // namespace
 
+  namespace
+  {
+    /** The spelling of @p type in the parameter file. */
+    std::string
+    name_of(const StudyType type)
+    {
+      switch (type)
+        {
+          case StudyType::h:
+            return "h";
+          case StudyType::k:
+            return "k";
+          case StudyType::coupled:
+            return "coupled";
+          default:
+            return "single";
+        }
+    }
+  } // namespace
+
   Parameters
   study_parameters(const Parameters &parameters, const unsigned int level)
   {
@@ -396,11 +416,13 @@ namespace hemicontact
     if (verbose)
       {
         if (against_dofs)
-          std::cout << "convergence study '" << type << "', adaptive (orders: "
+          std::cout << "convergence study '" << name_of(type)
+                    << "', adaptive (orders: "
                     << "-log(error ratio)/log(mean dofs ratio) between "
                     << "levels; O(h) is " << 1. / dim << ")\n";
         else
-          std::cout << "convergence study '" << type << "' (orders: log2 of "
+          std::cout << "convergence study '" << name_of(type)
+                    << "' (orders: log2 of "
                     << "the error ratio between levels)\n";
         table.write_text(std::cout, TableHandler::org_mode_table);
       }
