@@ -126,7 +126,7 @@ def run(work, base, name, refinements, adaptivity=None, reuse=False):
     os.makedirs(directory, exist_ok=True)
     text = open(os.path.join(ROOT, "prm", base)).read()
     text += "subsection geometry\n  set global refinements = %d\nend\n" % refinements
-    text += ("subsection output\n  set directory = %s\n  set vtu interval = 10\n"
+    text += ("subsection output\n  set directory = %s\n  set output interval = 10\n"
              "  set terminal = quiet\n  set timing summary = false\nend\n" % directory)
     if adaptivity:
         text += "subsection adaptivity\n"
@@ -164,7 +164,7 @@ def body_errors(directory, reference_grids, result):
 
 
 def vtu_at(directory, time):
-    """The VTU of the step at @p time (vtu interval 10, k = 0.01)."""
+    """The VTU of the step at @p time (output interval 10, k = 0.01)."""
     return os.path.join(directory, "solution_%05d.0.vtu" % round(time / 0.01))
 
 

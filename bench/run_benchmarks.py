@@ -41,7 +41,7 @@ def case(name, base, refinements, end_time=1.0, ranks=1, subdivisions=None,
                 end_time=end_time, ranks=ranks, subdivisions=subdivisions,
                 solver=solver or {}, time_step=time_step, group=group,
                 nonlinear=nonlinear or {}, keep_probes=keep_probes,
-                output=output or {"vtu interval": "0"}, extra=extra)
+                output=output or {"output interval": "0"}, extra=extra)
 
 
 def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None):
@@ -80,11 +80,11 @@ def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None):
         for format in ("vtu", "hdf5"):
             result.append(case(f"{name}-r{r}-write-{format}", base, r,
                                end_time=0.2,
-                               output={"vtu interval": "1",
+                               output={"output interval": "1",
                                        "format": format}))
         # every fifth step written (a VTU write then overlaps whole steps)
         result.append(case(f"{name}-r{r}-write-vtu-every-5", base, r,
-                           end_time=0.2, output={"vtu interval": "5"}))
+                           end_time=0.2, output={"output interval": "5"}))
         # the same steps without output: a write costs the difference
         result.append(case(f"{name}-r{r}-write-none", base, r, end_time=0.2))
     # a manufactured-solution step against a physical step on a mesh of the

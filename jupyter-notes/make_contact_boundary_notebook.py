@@ -50,7 +50,7 @@ figures = out_root / "doc" / "figures"
 figures.mkdir(parents=True, exist_ok=True)
 
 files = sorted(run.glob("contact_*.csv"))
-assert len(files) >= 2, f"fewer than two contact_*.csv in {run}: run the example (vtu interval > 0) first"
+assert len(files) >= 2, f"fewer than two contact_*.csv in {run}: run the example (output interval > 0) first"
 frames = []
 for f in files:
     df = pd.read_csv(f)

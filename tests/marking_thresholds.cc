@@ -9,6 +9,7 @@
 #include <iostream>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace hemicontact;
@@ -57,32 +58,34 @@ main()
   std::vector<float> v;
   for (unsigned int i = 1; i <= 100; ++i)
     v.push_back(i);
-  Counts c = count(v, marking_thresholds(v, "fixed number", 0.2, 0.3));
+  Counts c = count(v, marking_thresholds(v, MarkingStrategy::fixed_number, 0.2, 0.3));
   std::cout << "fixed number 0.2/0.3 of 100 distinct: refine " << c.refine
             << ", coarsen " << c.coarsen << "\n";
   // sum 5050: the top 29 hold 2494 < 2525, the top 30 2565; the bottom 31
   // hold 496 <= 505, the bottom 32 528
-  c = count(v, marking_thresholds(v, "fixed fraction", 0.5, 0.1));
+  c = count(v, marking_thresholds(v, MarkingStrategy::fixed_fraction, 0.5, 0.1));
   std::cout << "fixed fraction 0.5/0.1 of 1..100: refine " << c.refine
             << ", coarsen " << c.coarsen << "\n";
 
   // a tie across the aimed cut moves it to the nearest untied place, the
   // one with fewer marked cells first
   v = {10, 9, 8, 8, 7, 6, 5, 4, 3, 2};
-  c = count(v, marking_thresholds(v, "fixed number", 0.3, 0.));
+  c = count(v, marking_thresholds(v, MarkingStrategy::fixed_number, 0.3, 0.));
   std::cout << "tie at the refinement cut (aim 3): refine " << c.refine
             << "\n";
   v = {10, 9, 8, 7, 6, 5, 4, 3, 2, 2};
-  c = count(v, marking_thresholds(v, "fixed number", 0., 0.1));
+  c = count(v, marking_thresholds(v, MarkingStrategy::fixed_number, 0., 0.1));
   std::cout << "tie at the coarsening cut (aim 1): coarsen " << c.coarsen
             << "\n";
   v = std::vector<float>(10, 1.f);
-  c = count(v, marking_thresholds(v, "fixed number", 0.3, 0.3));
+  c = count(v, marking_thresholds(v, MarkingStrategy::fixed_number, 0.3, 0.3));
   std::cout << "all equal: refine " << c.refine << ", coarsen " << c.coarsen
             << "\n";
 
   // near-ties: pairs equal up to 3e-7 mark alike, and as exact pairs do
-  for (const std::string strategy : {"fixed number", "fixed fraction"})
+  for (const auto &[name, strategy] :
+       {std::make_pair("fixed number", MarkingStrategy::fixed_number),
+        std::make_pair("fixed fraction", MarkingStrategy::fixed_fraction)})
     {
       unsigned int split = 0, differ = 0;
       for (std::uint32_t seed = 1; seed <= 200; ++seed)
@@ -90,8 +93,9 @@ main()
           const std::vector<float> exact     = pairs(500, 0., seed);
           const std::vector<float> perturbed = pairs(500, 3e-7, seed);
           // fixed number: odd counts (201, 199), aimed inside a pair
-          const double r = strategy == "fixed number" ? 0.201 : 0.5;
-          const double k = strategy == "fixed number" ? 0.199 : 0.02;
+          const bool   number = strategy == MarkingStrategy::fixed_number;
+          const double r      = number ? 0.201 : 0.5;
+          const double k      = number ? 0.199 : 0.02;
           const MarkingThresholds te =
             marking_thresholds(exact, strategy, r, k);
           const MarkingThresholds tp =
@@ -105,7 +109,7 @@ main()
               differ += flag(perturbed[i], tp) != flag(exact[i], te);
             }
         }
-      std::cout << strategy << ", 200 sets of 500 near-equal pairs: pairs "
+      std::cout << name << ", 200 sets of 500 near-equal pairs: pairs "
                 << "split " << split << ", cells marked unlike the exact "
                 << "pairs " << differ << "\n";
     }

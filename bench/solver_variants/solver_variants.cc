@@ -55,7 +55,7 @@ main(int argc, char **argv)
   text << in.rdbuf() << "subsection geometry\n  set global refinements = "
        << refinements << "\nend\n"
        << "subsection output\n  set directory = output-solver-variants\n"
-       << "  set terminal = quiet\n  set vtu interval = 0\n"
+       << "  set terminal = quiet\n  set output interval = 0\n"
        << "  set probe points =\nend\n";
   if (variant.rfind("fixed", 0) == 0)
     text << "subsection linear solver\n  set forcing term = fixed\nend\n";

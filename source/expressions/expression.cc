@@ -97,7 +97,7 @@ namespace hemicontact
       {
         NodePtr node     = binary(op, std::move(a), std::move(b));
         node->kind        = Expression::Node::function;
-        node->function_id = Expression::function_id(op);
+        node->fn          = Expression::function_of(op);
         return node;
       }
 
@@ -273,8 +273,9 @@ namespace hemicontact
         const auto  found = std::find(names.begin(), names.end(), name);
         if (found == names.end())
           fail("unknown function '" + name + "'");
-        const int  id           = found - names.begin();
-        const bool two_argument = id >= Expression::first_binary_function;
+        const auto function =
+          static_cast<Expression::Function>(found - names.begin());
+        const bool two_argument = Expression::is_binary(function);
         std::vector<NodePtr> args;
         args.push_back(expression());
         if (two_argument)
@@ -286,7 +287,7 @@ namespace hemicontact
         if (!accept(')'))
           fail("missing ')' after the arguments of '" + name + "'");
         NodePtr node      = make(Expression::Node::function, name, std::move(args));
-        node->function_id = id;
+        node->fn = function;
         return node;
       }
 
@@ -312,9 +313,15 @@ namespace hemicontact
   }
 
   bool
-  Expression::is_condition(const int id)
+  Expression::is_binary(const Function f)
   {
-    return id >= first_condition && id < conditional;
+    return f >= Function::pow && f < Function::conditional;
+  }
+
+  bool
+  Expression::is_condition(const Function f)
+  {
+    return f >= Function::less && f < Function::conditional;
   }
 
   std::string

@@ -37,7 +37,7 @@ namespace hemicontact
       copy->value       = node.value;
       copy->index       = node.index;
       copy->op          = node.op;
-      copy->function_id = node.function_id;
+      copy->fn          = node.fn;
       for (const auto &arg : node.args)
         copy->args.push_back(clone(*arg));
       return copy;
@@ -60,7 +60,7 @@ namespace hemicontact
       auto node         = std::make_unique<Node>();
       node->kind        = Node::function;
       node->op          = name;
-      node->function_id = Expression::function_id(name);
+      node->fn          = Expression::function_of(name);
       node->args.push_back(std::move(a));
       if (b)
         node->args.push_back(std::move(b));
@@ -237,13 +237,15 @@ namespace hemicontact
             break;
         }
 
-      const Node &       a     = *node.args[0];
-      const std::string &name  = node.op;
-      if (name == "pow")
+      using Function = Expression::Function;
+      const Node    &a = *node.args[0];
+      const Function f = node.fn;
+      if (f == Function::pow)
         return power_derivative(a, *node.args[1], index);
-      if (name == "max" || name == "min")
-        return selection_derivative(a, *node.args[1], name == "max", index);
-      if (node.function_id == Expression::conditional)
+      if (f == Function::max || f == Function::min)
+        return selection_derivative(a, *node.args[1], f == Function::max,
+                                    index);
+      if (f == Function::conditional)
         {
           // c ? a' : b' (c is constant between its switches)
           NodePtr da = derivative(*node.args[1], index);
@@ -255,47 +257,60 @@ namespace hemicontact
           result->args[2] = std::move(db);
           return result;
         }
-      if (Expression::is_condition(node.function_id))
+      if (Expression::is_condition(f))
         return constant(0); // piecewise constant: 0 off the switching set
       NodePtr da = derivative(a, index);
-      if (is_constant(da, 0) || name == "step" || name == "sign")
+      if (is_constant(da, 0) || f == Function::step || f == Function::sign)
         return constant(0);
       NodePtr outer; // f'(a)
-      if (name == "sin")
-        outer = function("cos", clone(a));
-      else if (name == "cos")
-        outer = negate(function("sin", clone(a)));
-      else if (name == "tan")
-        outer = add(constant(1), power(function("tan", clone(a)), 2));
-      else if (name == "exp")
-        outer = function("exp", clone(a));
-      else if (name == "log")
-        return divide(std::move(da), clone(a));
-      else if (name == "sqrt")
-        return divide(std::move(da),
-                      multiply(constant(2), function("sqrt", clone(a))));
-      else if (name == "abs")
-        outer = function("sign", clone(a));
-      else if (name == "tanh")
-        outer = subtract(constant(1), power(function("tanh", clone(a)), 2));
-      else if (name == "sinh")
-        outer = function("cosh", clone(a));
-      else if (name == "cosh")
-        outer = function("sinh", clone(a));
-      else if (name == "atan")
-        return divide(std::move(da),
-                      add(constant(1), power(clone(a), 2)));
-      else // pos
-        outer = function("step", clone(a));
+      switch (f)
+        {
+          case Function::sin:
+            outer = function("cos", clone(a));
+            break;
+          case Function::cos:
+            outer = negate(function("sin", clone(a)));
+            break;
+          case Function::tan:
+            outer = add(constant(1), power(function("tan", clone(a)), 2));
+            break;
+          case Function::exp:
+            outer = function("exp", clone(a));
+            break;
+          case Function::log:
+            return divide(std::move(da), clone(a));
+          case Function::sqrt:
+            return divide(std::move(da),
+                          multiply(constant(2), function("sqrt", clone(a))));
+          case Function::abs:
+            outer = function("sign", clone(a));
+            break;
+          case Function::tanh:
+            outer =
+              subtract(constant(1), power(function("tanh", clone(a)), 2));
+            break;
+          case Function::sinh:
+            outer = function("cosh", clone(a));
+            break;
+          case Function::cosh:
+            outer = function("sinh", clone(a));
+            break;
+          case Function::atan:
+            return divide(std::move(da),
+                          add(constant(1), power(clone(a), 2)));
+          default: // pos
+            outer = function("step", clone(a));
+        }
       return multiply(std::move(outer), std::move(da));
     }
   } // namespace
 
-  int
-  Expression::function_id(const std::string &name)
+  Expression::Function
+  Expression::function_of(const std::string &name)
   {
     const auto &names = function_names();
-    return std::find(names.begin(), names.end(), name) - names.begin();
+    return static_cast<Function>(
+      std::find(names.begin(), names.end(), name) - names.begin());
   }
 
   Expression::Expression(std::unique_ptr<Node> root)

@@ -85,7 +85,8 @@ namespace hemicontact
       }
     instruction.spatial = !instruction.uniform && !instruction.timed;
     // the same operation on the same operands is the same subexpression
-    const Key key{static_cast<int>(instruction.op), instruction.function_id,
+    const Key key{static_cast<int>(instruction.op),
+                  static_cast<int>(instruction.function),
                   instruction.a, instruction.b, instruction.c, instruction.n,
                   bits(instruction.value)};
     const auto found = known.find(key);
@@ -150,13 +151,13 @@ namespace hemicontact
                   break;
                 default: // '^' with a general exponent
                   instruction.op          = Op::function;
-                  instruction.function_id = Expression::function_id("pow");
+                  instruction.function = Expression::Function::pow;
               }
             return append(instruction);
           }
         default:
           instruction.op          = Op::function;
-          instruction.function_id = node.function_id;
+          instruction.function    = node.fn;
           instruction.a           = compile(*node.args[0]);
           instruction.n_operands  = node.args.size();
           if (node.args.size() > 1)
@@ -291,13 +292,13 @@ namespace hemicontact
                 }
               break;
             default:
-              if (c.function_id == Expression::conditional)
+              if (c.function == Expression::Function::conditional)
                 for (unsigned int p = 0; p < n; ++p)
                   out[p] = a[p] != 0 ? b[p] : d[p];
               else
                 for (unsigned int p = 0; p < n; ++p)
                   out[p] =
-                    Expression::apply_function(c.function_id, a[p], b[p]);
+                    Expression::apply_function(c.function, a[p], b[p]);
           }
         if (c.uniform)
           std::fill(out + 1, out + n_points, out[0]);

@@ -3,6 +3,7 @@
 
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/input/selection.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,6 +17,54 @@ namespace hemicontact
 {
   namespace
   {
+    /** How a Lame pair is given ('parametrisation'). */
+    enum class LameParametrisation
+    {
+      lame,
+      young
+    };
+
+    const SelectionNames<MeshType> mesh_types = {{"rectangle",
+                                                  MeshType::rectangle},
+                                                 {"gmsh", MeshType::gmsh}};
+    const SelectionNames<CellType> cell_types = {{"hypercube",
+                                                  CellType::hypercube},
+                                                 {"simplex", CellType::simplex}};
+    const SelectionNames<LameParametrisation> parametrisations = {
+      {"lame", LameParametrisation::lame},
+      {"young", LameParametrisation::young}};
+    const SelectionNames<SolutionFormat> solution_formats = {
+      {"vtu", SolutionFormat::vtu},
+      {"hdf5", SolutionFormat::hdf5}};
+    const SelectionNames<DataOutBase::VtkFlags::ZlibCompressionLevel>
+      compression_levels = {
+        {"best speed", DataOutBase::VtkFlags::best_speed},
+        {"default", DataOutBase::VtkFlags::default_compression},
+        {"best compression", DataOutBase::VtkFlags::best_compression},
+        {"none", DataOutBase::VtkFlags::no_compression}};
+    const SelectionNames<OutputPrecision> output_precisions = {
+      {"float", OutputPrecision::single_precision},
+      {"double", OutputPrecision::double_precision}};
+    const SelectionNames<TerminalOutput> terminal_outputs = {
+      {"progress", TerminalOutput::progress},
+      {"quiet", TerminalOutput::quiet},
+      {"test", TerminalOutput::test}};
+    const SelectionNames<StudyType> study_types = {{"single", StudyType::single},
+                                                   {"h", StudyType::h},
+                                                   {"k", StudyType::k},
+                                                   {"coupled",
+                                                    StudyType::coupled}};
+    const SelectionNames<RefinementIndicator> indicators = {
+      {"kelly", RefinementIndicator::kelly},
+      {"kelly contact", RefinementIndicator::kelly_contact},
+      {"residual", RefinementIndicator::residual}};
+    const SelectionNames<MarkingStrategy> strategies = {
+      {"fixed fraction", MarkingStrategy::fixed_fraction},
+      {"fixed number", MarkingStrategy::fixed_number}};
+    const SelectionNames<StateTransfer> state_transfers = {
+      {"interpolation", StateTransfer::interpolation},
+      {"projection", StateTransfer::projection}};
+
     std::vector<unsigned int>
     get_id_list(ParameterHandler &prm, const std::string &key)
     {
@@ -31,13 +80,13 @@ namespace hemicontact
   GeometryParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("geometry");
-    prm.declare_entry("mesh", "rectangle", Patterns::Selection("rectangle|gmsh"),
+    prm.declare_entry("mesh", "rectangle", selection_pattern(mesh_types),
                       "'rectangle' builds a rectangle (2D) or box (3D) from the "
                       "corners below, with boundary ids 0 (x = x0), 1 (x = x1), "
                       "2 (y = y0), 3 (y = y1), 4 (z = z0), 5 (z = z1). 'gmsh' "
                       "reads 'mesh file' (physical tags become boundary ids).");
     prm.declare_entry("cell type", "hypercube",
-                      Patterns::Selection("hypercube|simplex"),
+                      selection_pattern(cell_types),
                       "'hypercube': quadrilaterals/hexahedra, FE_Q(1)^d on a "
                       "p4est distributed mesh. 'simplex': triangles/tetrahedra, "
                       "FE_SimplexP(1)^d on a fully distributed mesh (uniform "
@@ -70,8 +119,8 @@ namespace hemicontact
   GeometryParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("geometry");
-    mesh_type  = prm.get("mesh");
-    cell_type  = prm.get("cell type");
+    mesh_type  = get_selection(prm, "mesh", mesh_types);
+    cell_type  = get_selection(prm, "cell type", cell_types);
     lower_left = Utilities::string_to_double(
       Utilities::split_string_list(prm.get("lower left corner")));
     upper_right = Utilities::string_to_double(
@@ -82,7 +131,7 @@ namespace hemicontact
     mesh_file          = prm.get("mesh file");
     global_refinements = prm.get_integer("global refinements");
     prm.leave_subsection();
-    if (mesh_type == "gmsh")
+    if (mesh_type == MeshType::gmsh)
       require(!mesh_file.empty(),
               "geometry: 'mesh = gmsh' needs a 'mesh file', but none is set.");
   }
@@ -139,7 +188,7 @@ namespace hemicontact
   LamePair::declare(ParameterHandler &prm)
   {
     prm.declare_entry("parametrisation", "lame",
-                      Patterns::Selection("lame|young"),
+                      selection_pattern(parametrisations),
                       "'lame': use 'mu' and 'lambda'; 'young': use 'young "
                       "modulus' and 'poisson ratio'.");
     prm.declare_entry("mu", "1", Patterns::Double(), "Lame parameter mu.");
@@ -154,7 +203,8 @@ namespace hemicontact
   void
   LamePair::parse(ParameterHandler &prm, const std::string &name)
   {
-    if (prm.get("parametrisation") == "lame")
+    if (get_selection(prm, "parametrisation", parametrisations) ==
+        LameParametrisation::lame)
       {
         mu     = prm.get_double("mu");
         lambda = prm.get_double("lambda");
@@ -333,23 +383,25 @@ namespace hemicontact
     prm.enter_subsection("output");
     prm.declare_entry("directory", "output", Patterns::Anything(),
                       "Directory for all output (created if missing).");
-    prm.declare_entry("vtu interval", "10", Patterns::Integer(0),
-                      "Write the solution files every this many steps; 0 "
+    prm.declare_entry("output interval", "10", Patterns::Integer(0),
+                      "Write the solution files (VTU or HDF5) and the rows "
+                      "of the contact CSV files every this many steps; 0 "
                       "writes none.");
-    prm.declare_entry("format", "vtu", Patterns::Selection("vtu|hdf5"),
+    // 'vtu interval' is read as 'output interval'
+    prm.declare_alias("output interval", "vtu interval");
+    prm.declare_entry("format", "vtu", selection_pattern(solution_formats),
                       "Solution files: 'vtu' (.vtu per rank and .pvtu per "
                       "output time, series solution.pvd) or 'hdf5' (one .h5 "
                       "per output time written by all ranks, series "
                       "solution.xdmf). ParaView opens either series.");
-    prm.declare_entry("precision", "float", Patterns::Selection("float|double"),
+    prm.declare_entry("precision", "float", selection_pattern(output_precisions),
                       "'float': the solution files only, whose values are "
                       "single precision; 'double': at the same output times "
                       "also nodal_NNNNN.h5 with the nodes, the cells and w, u "
                       "and the contact traction per node in double "
                       "precision, series nodal.xdmf (either 'format').");
     prm.declare_entry("compression", "best speed",
-                      Patterns::Selection("best speed|default|best "
-                                          "compression|none"),
+                      selection_pattern(compression_levels),
                       "zlib compression of VTU files: 'best speed' "
                       "(fast, files somewhat larger), 'default', 'best "
                       "compression' (smallest files, slowest) or 'none'. "
@@ -359,7 +411,7 @@ namespace hemicontact
                       "step, separated by ';', coordinates by ',' (e.g. "
                       "'1, 0.5; 2, 1').");
     prm.declare_entry("terminal", "progress",
-                      Patterns::Selection("progress|quiet|test"),
+                      selection_pattern(terminal_outputs),
                       "'progress': one line per step; 'quiet': start and end "
                       "only; 'test': rounded, machine-independent lines for "
                       "the test suite.");
@@ -380,20 +432,12 @@ namespace hemicontact
   {
     prm.enter_subsection("output");
     directory      = prm.get("directory");
-    vtu_interval   = prm.get_integer("vtu interval");
-    format = prm.get("format") == "hdf5" ? SolutionFormat::hdf5 :
-                                           SolutionFormat::vtu;
-    precision = prm.get("precision") == "double" ?
-                  OutputPrecision::double_precision :
-                  OutputPrecision::single_precision;
+    output_interval = prm.get_integer("output interval");
+    format         = get_selection(prm, "format", solution_formats);
+    precision      = get_selection(prm, "precision", output_precisions);
     probe_points   = prm.get("probe points");
-    terminal       = prm.get("terminal");
-    const std::string level = prm.get("compression");
-    compression =
-      level == "none"             ? DataOutBase::VtkFlags::no_compression :
-      level == "default"          ? DataOutBase::VtkFlags::default_compression :
-      level == "best compression" ? DataOutBase::VtkFlags::best_compression :
-                                    DataOutBase::VtkFlags::best_speed;
+    terminal       = get_selection(prm, "terminal", terminal_outputs);
+    compression    = get_selection(prm, "compression", compression_levels);
     timing_summary = prm.get_bool("timing summary");
     performance_summary = prm.get_bool("performance summary");
     prm.leave_subsection();
@@ -444,7 +488,7 @@ namespace hemicontact
   {
     prm.enter_subsection("convergence study");
     prm.declare_entry("type", "single",
-                      Patterns::Selection("single|h|k|coupled"),
+                      selection_pattern(study_types),
                       "With a manufactured solution: 'single' runs once; 'h' "
                       "refines the mesh once per level at a fixed time step; "
                       "'k' halves the time step per level on a fixed mesh; "
@@ -460,7 +504,7 @@ namespace hemicontact
   ConvergenceStudyParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("convergence study");
-    type     = prm.get("type");
+    type     = get_selection(prm, "type", study_types);
     n_levels = prm.get_integer("levels");
     prm.leave_subsection();
   }
@@ -474,7 +518,7 @@ namespace hemicontact
                       "(0: never). Needs 'geometry/cell type = hypercube'.");
     prm.declare_entry(
       "indicator", "kelly",
-      Patterns::Selection("kelly|kelly contact|residual"),
+      selection_pattern(indicators),
       "Cell indicator: 'kelly' (jumps of the normal derivative of w_n), "
       "'kelly contact' (plus the jumps of the nodal contact traction on "
       "Gamma_3) or 'residual' (the step's residual in cells, on faces and "
@@ -489,7 +533,7 @@ namespace hemicontact
       "do not stay in the solution; 0: never. Needs 'interval' > 0; not "
       "with checkpoints or manufactured solutions.");
     prm.declare_entry("strategy", "fixed fraction",
-                      Patterns::Selection("fixed fraction|fixed number"),
+                      selection_pattern(strategies),
                       "'fixed fraction': refine the cells that hold 'refine "
                       "fraction' of the summed indicator and coarsen those "
                       "that hold 'coarsen fraction' of it; 'fixed number': "
@@ -509,7 +553,7 @@ namespace hemicontact
                       "No cell is refined beyond this refinement level.");
     prm.declare_entry(
       "state transfer", "interpolation",
-      Patterns::Selection("interpolation|projection"),
+      selection_pattern(state_transfers),
       "How w_n and u_n move to the new mesh: 'interpolation' (deal.II's "
       "SolutionTransfer) or 'projection' (M- and a_B-projections that keep "
       "what the next step sees of the state exactly, at two linear solves "
@@ -522,13 +566,13 @@ namespace hemicontact
   {
     prm.enter_subsection("adaptivity");
     interval         = prm.get_integer("interval");
-    indicator        = prm.get("indicator");
+    indicator        = get_selection(prm, "indicator", indicators);
     contact_weight   = prm.get_double("contact weight");
     pre_refinement_steps = prm.get_integer("pre-refinement steps");
-    strategy         = prm.get("strategy");
+    strategy         = get_selection(prm, "strategy", strategies);
     refine_fraction  = prm.get_double("refine fraction");
     coarsen_fraction = prm.get_double("coarsen fraction");
-    state_transfer   = prm.get("state transfer");
+    state_transfer   = get_selection(prm, "state transfer", state_transfers);
     max_cells        = prm.get_integer("max cells");
     min_level        = prm.get_integer("min level");
     max_level        = prm.get_integer("max level");
@@ -612,41 +656,96 @@ namespace hemicontact
     manufactured.parse(prm);
     study.parse(prm);
 
+    require_consistent(*this);
+  }
+
+  void
+  require_consistent(const Parameters &parameters)
+  {
+    const unsigned int          dimension    = parameters.dimension;
+    const GeometryParameters   &geometry     = parameters.geometry;
+    const AdaptivityParameters &adaptivity   = parameters.adaptivity;
+    const CheckpointParameters &checkpoint   = parameters.checkpoint;
+    const bool                  manufactured = parameters.manufactured.enabled;
+
     {
       std::ostringstream message;
       message << "nonlinear solver: 'tolerance' = "
-              << nonlinear_solver.tolerance
+              << parameters.nonlinear_solver.tolerance
               << " is below 'linear solver/relative tolerance' = "
-              << linear_solver.relative_tolerance
+              << parameters.linear_solver.relative_tolerance
               << ", the accuracy of every linear solve; Newton could not "
                  "reach it. Raise the Newton tolerance or lower the linear "
                  "solver's relative tolerance below it.";
-      require(nonlinear_solver.tolerance >= linear_solver.relative_tolerance,
+      require(parameters.nonlinear_solver.tolerance >=
+                parameters.linear_solver.relative_tolerance,
               message.str());
     }
 
-    require(adaptivity.interval == 0 || geometry.cell_type == "hypercube",
+    require(adaptivity.interval == 0 ||
+              geometry.cell_type == CellType::hypercube,
             "adaptivity: adaptive refinement needs 'geometry/cell type = "
             "hypercube' (p4est meshes); set 'adaptivity/interval = 0' for "
             "simplex meshes.");
     require(adaptivity.pre_refinement_steps == 0 ||
-              (adaptivity.interval > 0 && !manufactured.enabled &&
+              (adaptivity.interval > 0 && !manufactured &&
                checkpoint.interval == 0 && checkpoint.wall_interval == 0 &&
                checkpoint.stop_after == 0 && !checkpoint.resume),
             "adaptivity: 'pre-refinement steps' > 0 needs 'interval' > 0 and "
             "works neither with checkpoints nor with manufactured solutions.");
-    require(geometry.mesh_type != "rectangle" ||
+    // the number of steps of the run (TimeParameters::parse() made sure
+    // that the time step divides the end time)
+    const unsigned int n_steps = std::max<unsigned int>(
+      1, static_cast<unsigned int>(std::llround(parameters.time.end_time /
+                                                parameters.time.time_step)));
+    require(adaptivity.pre_refinement_steps <= n_steps,
+            "adaptivity: 'pre-refinement steps' (" +
+              std::to_string(adaptivity.pre_refinement_steps) +
+              ") exceeds the number of time steps (" +
+              std::to_string(n_steps) + ").");
+
+    require(geometry.mesh_type != MeshType::rectangle ||
               (geometry.lower_left.size() >= dimension &&
                geometry.upper_right.size() >= dimension &&
                geometry.subdivisions.size() >= dimension),
             "geometry: the corners and subdivisions need at least " +
               std::to_string(dimension) + " entries for dimension " +
               std::to_string(dimension) + ".");
-    if (geometry.mesh_type == "rectangle")
+    if (geometry.mesh_type == MeshType::rectangle)
       for (unsigned int d = 0; d < dimension; ++d)
         require(geometry.upper_right[d] > geometry.lower_left[d],
                 "geometry: 'upper right corner' must exceed 'lower left "
                 "corner' in every coordinate (coordinate " +
                   std::to_string(d) + ").");
+
+    // a convergence study runs its levels from the start, without
+    // checkpoints
+    if (manufactured)
+      {
+        std::vector<std::string> set;
+        if (checkpoint.resume)
+          set.push_back("'checkpoint/resume' (hemicontact --resume)");
+        if (checkpoint.interval > 0)
+          set.push_back("'checkpoint/interval' = " +
+                        std::to_string(checkpoint.interval));
+        if (checkpoint.wall_interval > 0)
+          {
+            std::ostringstream value;
+            value << checkpoint.wall_interval;
+            set.push_back("'checkpoint/wall interval' = " + value.str());
+          }
+        if (checkpoint.stop_after > 0)
+          set.push_back("'checkpoint/stop after' = " +
+                        std::to_string(checkpoint.stop_after));
+        std::string list;
+        for (const std::string &s : set)
+          list += (list.empty() ? "" : ", ") + s;
+        require(set.empty(),
+                "convergence study: a convergence study ('manufactured "
+                "solution/enabled = true') neither writes checkpoints nor "
+                "resumes from them, but the parameter file sets " +
+                  list + "; remove " + (set.size() > 1 ? "them" : "it") +
+                  " (a study runs from the start).");
+      }
   }
 } // namespace hemicontact

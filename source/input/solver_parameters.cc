@@ -3,11 +3,25 @@
 // solver's tuning constants are not parameters: see solver_tuning.h.
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/input/selection.h>
 
 #include <string>
 
 namespace hemicontact
 {
+  namespace
+  {
+    const SelectionNames<InitialGuess> initial_guesses = {
+      {"extrapolated", InitialGuess::extrapolated},
+      {"previous", InitialGuess::previous}};
+    const SelectionNames<LinearSolverType> linear_solver_types = {
+      {"cg amg", LinearSolverType::cg_amg},
+      {"direct", LinearSolverType::direct}};
+    const SelectionNames<ForcingTerm> forcing_terms = {
+      {"eisenstat-walker", ForcingTerm::eisenstat_walker},
+      {"fixed", ForcingTerm::fixed}};
+  } // namespace
+
   void
   NonlinearSolverParameters::declare(ParameterHandler &prm)
   {
@@ -29,7 +43,7 @@ namespace hemicontact
                       "Expert: damp each Newton update by backtracking on the step "
                       "energy J_n (needed for nonconvex laws).");
     prm.declare_entry("initial guess", "extrapolated",
-                      Patterns::Selection("extrapolated|previous"),
+                      selection_pattern(initial_guesses),
                       "Expert: where Newton starts, 'extrapolated' w_{n-1} + "
                       "k_n/k_{n-1} (w_{n-1} - w_{n-2}), or 'previous' "
                       "w_{n-1}. Changes the cost, not the solution.");
@@ -48,9 +62,7 @@ namespace hemicontact
     max_iterations         = prm.get_integer("max iterations");
     time_step_halvings     = prm.get_integer("time step halvings");
     line_search            = prm.get_bool("line search");
-    initial_guess          = prm.get("initial guess") == "previous" ?
-                               InitialGuess::previous :
-                               InitialGuess::extrapolated;
+    initial_guess = get_selection(prm, "initial guess", initial_guesses);
     strict_convexity_check = prm.get_bool("strict convexity check");
     prm.leave_subsection();
   }
@@ -59,13 +71,13 @@ namespace hemicontact
   LinearSolverParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("linear solver");
-    prm.declare_entry("type", "cg amg", Patterns::Selection("cg amg|direct"),
+    prm.declare_entry("type", "cg amg", selection_pattern(linear_solver_types),
                       "'cg amg': conjugate gradients with an AMG-based "
                       "preconditioner (any size, any number of ranks); "
                       "'direct': a sparse direct solve of each Newton system "
                       "(Amesos KLU), a reference for small problems.");
     prm.declare_entry("forcing term", "eisenstat-walker",
-                      Patterns::Selection("eisenstat-walker|fixed"),
+                      selection_pattern(forcing_terms),
                       "Expert: how far each Krylov solve goes. "
                       "'eisenstat-walker' follows the decrease of the Newton "
                       "residual; 'fixed' always solves to 'relative "
@@ -84,11 +96,8 @@ namespace hemicontact
   LinearSolverParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("linear solver");
-    type = prm.get("type") == "direct" ? LinearSolverType::direct :
-                                         LinearSolverType::cg_amg;
-    forcing_term       = prm.get("forcing term") == "fixed" ?
-                           ForcingTerm::fixed :
-                           ForcingTerm::eisenstat_walker;
+    type               = get_selection(prm, "type", linear_solver_types);
+    forcing_term = get_selection(prm, "forcing term", forcing_terms);
     relative_tolerance = prm.get_double("relative tolerance");
     max_iterations     = prm.get_integer("max iterations");
     prm.leave_subsection();

@@ -234,12 +234,13 @@ namespace hemicontact
     void
     check_cell_types(const Triangulation<dim> &mesh,
                      const std::string &       name,
-                     const std::string &       cell_type)
+                     const CellType            cell_type)
     {
       std::map<ReferenceCell, unsigned int> count;
       for (const auto &cell : mesh.active_cell_iterators())
         ++count[cell->reference_cell()];
-      const ReferenceCell wanted = cell_type == "simplex" ?
+      const bool          simplex = cell_type == CellType::simplex;
+      const ReferenceCell wanted  = simplex ?
                                      ReferenceCells::get_simplex<dim>() :
                                      ReferenceCells::get_hypercube<dim>();
       if (count.size() == 1 && count.count(wanted) == 1)
@@ -248,18 +249,18 @@ namespace hemicontact
       for (const auto &[type, n] : count)
         found += (found.empty() ? "" : " and ") + std::to_string(n) + " " +
                  (n == 1 ? cell_name(type) : cells_name(type));
-      const ReferenceCell other = cell_type == "simplex" ?
+      const ReferenceCell other = simplex ?
                                     ReferenceCells::get_hypercube<dim>() :
                                     ReferenceCells::get_simplex<dim>();
       const bool fits_other =
         count.size() == 1 && count.count(other) == 1;
       throw InputError(
         "geometry: the mesh file '" + name + "' holds " + found +
-        " but 'geometry/cell type' = " + cell_type + " reads " +
+        " but 'geometry/cell type' = " +
+        (simplex ? "simplex" : "hypercube") + " reads " +
         cells_name(wanted) + " only. " +
         (fits_other ? "Set 'cell type = " +
-                        std::string(cell_type == "simplex" ? "hypercube" :
-                                                             "simplex") +
+                        std::string(simplex ? "hypercube" : "simplex") +
                         "' in subsection geometry." :
                       "A mesh has one cell type: mesh it with " +
                         cells_name(wanted) + " only."));
@@ -383,7 +384,7 @@ namespace hemicontact
   Discretization<dim>::Discretization(const GeometryParameters &geometry,
                                       MPI_Comm                  comm)
     : mpi_communicator(comm)
-    , simplex(geometry.cell_type == "simplex")
+    , simplex(geometry.cell_type == CellType::simplex)
   {
     if (simplex)
       {
@@ -437,7 +438,7 @@ namespace hemicontact
           "geometry: the mesh needs more memory than there is ('global "
           "refinements' = " +
           std::to_string(geometry.global_refinements) +
-          (geometry.mesh_type == "gmsh" ?
+          (geometry.mesh_type == MeshType::gmsh ?
              " of the mesh file '" + geometry.mesh_file + "'" :
              std::string(" of the rectangle")) +
           "); lower 'geometry/global refinements'.");
@@ -451,7 +452,7 @@ namespace hemicontact
                                   const bool                refine) const
   {
     unsigned int refinements = geometry.global_refinements;
-    if (geometry.mesh_type == "rectangle")
+    if (geometry.mesh_type == MeshType::rectangle)
       {
         if (refine)
           check_refinement_memory<dim>(

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <functional>
 #include <limits>
-#include <stdexcept>
 
 namespace hemicontact
 {
@@ -82,7 +81,8 @@ namespace hemicontact
   }
 
   MarkingThresholds
-  marking_thresholds(std::vector<float> indicators, const std::string &strategy,
+  marking_thresholds(std::vector<float> indicators,
+                     const MarkingStrategy strategy,
                      const double refine_fraction,
                      const double coarsen_fraction)
   {
@@ -96,12 +96,12 @@ namespace hemicontact
     // the aimed number of refined cells (from the top) and of coarsened ones
     // (from the bottom)
     std::size_t n_refine = 0, n_coarsen = 0;
-    if (strategy == "fixed number")
+    if (strategy == MarkingStrategy::fixed_number)
       {
         n_refine  = static_cast<std::size_t>(refine_fraction * N);
         n_coarsen = static_cast<std::size_t>(coarsen_fraction * N);
       }
-    else if (strategy == "fixed fraction")
+    else
       {
         double total = 0;
         for (const float x : v)
@@ -119,9 +119,6 @@ namespace hemicontact
                 sum += v[N - 1 - n_coarsen];
             }
       }
-    else
-      throw std::invalid_argument("unknown marking strategy '" + strategy +
-                                  "'");
     n_refine  = std::min(n_refine, N);
     n_coarsen = std::min(n_coarsen, N - n_refine);
 

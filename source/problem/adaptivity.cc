@@ -19,7 +19,7 @@ namespace hemicontact
   ContactProblem<dim>::refinement_indicators() const
   {
     const AdaptivityParameters &settings = parameters.adaptivity;
-    if (settings.indicator == "residual")
+    if (settings.indicator == RefinementIndicator::residual)
       return residual_indicators();
     TrilinosWrappers::MPI::Vector w(locally_owned_dofs, locally_relevant_dofs,
                                    mpi_communicator);
@@ -29,7 +29,7 @@ namespace hemicontact
       *discretization.mapping, dof_handler, discretization.face_quadrature(2),
       {}, w, indicators, ComponentMask(), nullptr, numbers::invalid_unsigned_int,
       discretization.triangulation->locally_owned_subdomain());
-    if (settings.indicator != "kelly contact")
+    if (settings.indicator != RefinementIndicator::kelly_contact)
       return indicators;
 
     // the jumps of the nodal contact traction along Gamma_3, face by face
@@ -104,7 +104,7 @@ namespace hemicontact
         std::numeric_limits<types::global_cell_index>::max();
     double refine_fraction  = settings.refine_fraction;
     double coarsen_fraction = settings.coarsen_fraction;
-    if (settings.strategy == "fixed number")
+    if (settings.strategy == MarkingStrategy::fixed_number)
       std::tie(refine_fraction, coarsen_fraction) =
         GridRefinement::adjust_refine_and_coarsen_number_fraction<dim>(
           n_cells, max_cells, refine_fraction, coarsen_fraction);
@@ -129,7 +129,7 @@ namespace hemicontact
     // step is w_n, branches are recomputed in its first Newton iteration);
     // 'projection' moves u_{n+1} = u_n + k w_n instead of u_n and keeps the
     // functionals of coarsened cells (state_projection.cc)
-    const bool project = settings.state_transfer == "projection";
+    const bool project = settings.state_transfer == StateTransfer::projection;
     TrilinosWrappers::MPI::Vector w(locally_owned_dofs, locally_relevant_dofs,
                                    mpi_communicator);
     TrilinosWrappers::MPI::Vector u(w);

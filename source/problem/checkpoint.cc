@@ -357,8 +357,9 @@ namespace hemicontact
     std::string
     mesh_signature_of(const GeometryParameters &geometry)
     {
-      return geometry.mesh_type == "gmsh" ? file_signature(geometry.mesh_file) :
-                                            "";
+      return geometry.mesh_type == MeshType::gmsh ?
+               file_signature(geometry.mesh_file) :
+               "";
     }
 
     /** The size and CRC-32 of a file_signature() (without the name). */

@@ -581,7 +581,7 @@ namespace hemicontact
   ContactProblem<dim>::print_step(const StepStatistics &s) const
   {
     std::ostringstream line;
-    if (parameters.output.terminal == "test")
+    if (parameters.output.terminal == TerminalOutput::test)
       {
         line << "step " << s.step << ": newton " << s.newton_iterations
              << ", normal sep/stick/damped " << s.n_separating << "/"
@@ -627,7 +627,7 @@ namespace hemicontact
              << s.residual << "  energy " << energy.total_energy()
              << "  defect " << energy.relative_defect();
       }
-    if (parameters.output.terminal != "quiet")
+    if (parameters.output.terminal != TerminalOutput::quiet)
       pcout << line.str() << std::endl;
   }
 

@@ -195,11 +195,6 @@ namespace hemicontact
     require_usable_output_directory(parameters.output.directory,
                                     mpi_communicator);
     const CheckpointParameters &checkpoints = parameters.checkpoint;
-    require(parameters.adaptivity.pre_refinement_steps <= n_steps,
-            "adaptivity: 'pre-refinement steps' (" +
-              std::to_string(parameters.adaptivity.pre_refinement_steps) +
-              ") exceeds the number of time steps (" +
-              std::to_string(n_steps) + ").");
     if (checkpoints.resume)
       setup_from_checkpoint();
     else
@@ -224,7 +219,7 @@ namespace hemicontact
           << ", normal law '" << law->name() << "'";
     if (friction->name() != default_friction_law_name())
       pcout << ", friction law '" << friction->name() << "'";
-    if (parameters.output.terminal != "test")
+    if (parameters.output.terminal != TerminalOutput::test)
       pcout << ", " << Utilities::MPI::n_mpi_processes(mpi_communicator)
             << " MPI rank(s)";
     pcout << std::endl;
@@ -245,7 +240,7 @@ namespace hemicontact
                   "NOT guaranteed convex")
             << std::endl;
 
-    const unsigned int interval = parameters.output.vtu_interval;
+    const unsigned int interval = parameters.output.output_interval;
     Timer              run_timer; // the time loop with every output
     if (checkpoints.resume)
       pcout << "resumed from the checkpoint of step " << step_number
@@ -387,7 +382,7 @@ namespace hemicontact
           << (energy.relative_defect() < 1e-7 ? "yes" : "no") << std::endl;
     if (parameters.output.performance_summary)
       write_performance_summary(totals);
-    if (parameters.output.timing_summary && parameters.output.terminal != "test")
+    if (parameters.output.timing_summary && parameters.output.terminal != TerminalOutput::test)
       timer.print_wall_time_statistics(mpi_communicator);
   }
 

@@ -30,7 +30,7 @@ namespace hemicontact
     : mpi_communicator(comm)
     , parameters(parameters)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0 &&
-                         parameters.output.terminal != "quiet")
+                         parameters.output.terminal != TerminalOutput::quiet)
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , material(parameters.material)
     , law(std::move(laws.normal))

@@ -330,12 +330,32 @@ namespace hemicontact
     }
   } // namespace
 
+  namespace
+  {
+    /** The spelling of @p type in the parameter file. */
+    std::string
+    name_of(const StudyType type)
+    {
+      switch (type)
+        {
+          case StudyType::h:
+            return "h";
+          case StudyType::k:
+            return "k";
+          case StudyType::coupled:
+            return "coupled";
+          default:
+            return "single";
+        }
+    }
+  } // namespace
+
   Parameters
   study_parameters(const Parameters &parameters, const unsigned int level)
   {
-    Parameters         p    = parameters;
-    const std::string &type = parameters.study.type;
-    if (type == "h" || type == "coupled")
+    Parameters      p    = parameters;
+    const StudyType type = parameters.study.type;
+    if (type == StudyType::h || type == StudyType::coupled)
       {
         p.geometry.global_refinements += level;
         if (p.adaptivity.interval > 0)
@@ -348,60 +368,26 @@ namespace hemicontact
               double(std::numeric_limits<unsigned int>::max())));
           }
       }
-    if (type == "k" || type == "coupled")
+    if (type == StudyType::k || type == StudyType::coupled)
       p.time.time_step /= std::pow(2., level);
     return p;
   }
-
-  namespace
-  {
-    /**
-     * Refuse the checkpoint parameters, which a convergence study does not
-     * use (its levels are separate runs without checkpoints).
-     */
-    void
-    refuse_checkpoints(const CheckpointParameters &checkpoint)
-    {
-      std::vector<std::string> set;
-      if (checkpoint.resume)
-        set.push_back("'checkpoint/resume' (hemicontact --resume)");
-      if (checkpoint.interval > 0)
-        set.push_back("'checkpoint/interval' = " +
-                      std::to_string(checkpoint.interval));
-      if (checkpoint.wall_interval > 0)
-        {
-          std::ostringstream value;
-          value << checkpoint.wall_interval;
-          set.push_back("'checkpoint/wall interval' = " + value.str());
-        }
-      if (checkpoint.stop_after > 0)
-        set.push_back("'checkpoint/stop after' = " +
-                      std::to_string(checkpoint.stop_after));
-      std::string list;
-      for (const std::string &s : set)
-        list += (list.empty() ? "" : ", ") + s;
-      require(set.empty(),
-              "convergence study: a convergence study ('manufactured "
-              "solution/enabled = true') neither writes checkpoints nor "
-              "resumes from them, but the parameter file sets " +
-                list + "; remove " + (set.size() > 1 ? "them" : "it") +
-                " (a study runs from the start).");
-    }
-  } // namespace
 
   template <int dim>
   std::vector<LevelResult>
   run_convergence_study(const Parameters &parameters, ParameterHandler &prm,
                         MPI_Comm comm)
   {
-    refuse_checkpoints(parameters.checkpoint);
     const bool root    = Utilities::MPI::this_mpi_process(comm) == 0;
-    const bool verbose = root && parameters.output.terminal != "quiet";
-    const std::string &type     = parameters.study.type;
-    const unsigned int n_levels = type == "single" ? 1 : parameters.study.n_levels;
+    const bool verbose =
+      root && parameters.output.terminal != TerminalOutput::quiet;
+    const StudyType    type = parameters.study.type;
+    const unsigned int n_levels =
+      type == StudyType::single ? 1 : parameters.study.n_levels;
     const bool         adaptive = parameters.adaptivity.interval > 0;
     // a 'k' study keeps its orders per halving of k
-    const bool against_dofs = adaptive && (type == "h" || type == "coupled");
+    const bool against_dofs =
+      adaptive && (type == StudyType::h || type == StudyType::coupled);
 
     // convergence.csv is replaced (atomically) after each level: an
     // earlier study's file stays until this one has a row of its own
@@ -413,7 +399,7 @@ namespace hemicontact
     for (unsigned int level = 0; level < n_levels; ++level)
       {
         Parameters p      = study_parameters(parameters, level);
-        p.output.terminal = "quiet";
+        p.output.terminal = TerminalOutput::quiet;
         results.push_back(run_level<dim>(p, prm, comm, level == 0));
         add_table_row(table, level, results.back(), adaptive);
         csv += csv_row(level, results.back());
@@ -430,11 +416,13 @@ namespace hemicontact
     if (verbose)
       {
         if (against_dofs)
-          std::cout << "convergence study '" << type << "', adaptive (orders: "
+          std::cout << "convergence study '" << name_of(type)
+                    << "', adaptive (orders: "
                     << "-log(error ratio)/log(mean dofs ratio) between "
                     << "levels; O(h) is " << 1. / dim << ")\n";
         else
-          std::cout << "convergence study '" << type << "' (orders: log2 of "
+          std::cout << "convergence study '" << name_of(type)
+                    << "' (orders: log2 of "
                     << "the error ratio between levels)\n";
         table.write_text(std::cout, TableHandler::org_mode_table);
       }

@@ -308,15 +308,22 @@ namespace hemicontact
   ManufacturedSolution<dim>::make_problem_data() const
   {
     ProblemData<dim> data;
+    /** The fields of the manufactured solution given to the problem. */
+    enum class Kind
+    {
+      body_force,           ///< f0(x, t)
+      initial_displacement, ///< u(x, t)
+      initial_velocity      ///< w(x, t) = du/dt
+    };
     // f0 and the initial fields as deal.II Functions (time from get_time())
     class Field : public Function<dim>
     {
     public:
-      Field(const ManufacturedSolution<dim> &m, const int which)
+      Field(const ManufacturedSolution<dim> &m, const Kind kind)
         : Function<dim>(dim)
         , m(m)
-        , which(which)
-        , cache(which == 0 ? m.make_force_cache() : nullptr)
+        , kind(kind)
+        , cache(kind == Kind::body_force ? m.make_force_cache() : nullptr)
       {}
       void
       vector_value(const Point<dim> &p, Vector<double> &values) const override
@@ -333,7 +340,7 @@ namespace hemicontact
         // assembled at every step on the same cells: what depends only on
         // x is remembered
         const double t = this->get_time();
-        if (which == 0)
+        if (kind == Kind::body_force)
           {
             const std::vector<Tensor<1, dim>> f =
               m.body_force(points, t, cache.get());
@@ -345,7 +352,8 @@ namespace hemicontact
         const std::vector<Values> v = m.evaluate_fields(points, t);
         for (unsigned int p = 0; p < points.size(); ++p)
           for (int c = 0; c < dim; ++c)
-            values[p](c) = which == 1 ? v[p].u[c] : v[p].w[c];
+            values[p](c) = kind == Kind::initial_displacement ? v[p].u[c] :
+                                                               v[p].w[c];
       }
       double
       value(const Point<dim> &p, const unsigned int c) const override
@@ -357,13 +365,15 @@ namespace hemicontact
 
     private:
       const ManufacturedSolution<dim> &    m;
-      const int                            which;
+      const Kind                           kind;
       const std::unique_ptr<SpatialCache> cache;
     };
 
-    data.body_force           = std::make_unique<Field>(*this, 0);
-    data.initial_displacement = std::make_unique<Field>(*this, 1);
-    data.initial_velocity     = std::make_unique<Field>(*this, 2);
+    data.body_force = std::make_unique<Field>(*this, Kind::body_force);
+    data.initial_displacement =
+      std::make_unique<Field>(*this, Kind::initial_displacement);
+    data.initial_velocity =
+      std::make_unique<Field>(*this, Kind::initial_velocity);
     data.surface_traction     = std::make_unique<Functions::ZeroFunction<dim>>(dim);
     data.contact_traction     = std::make_unique<Functions::ZeroFunction<dim>>(dim);
     data.friction_bound = friction_bound;

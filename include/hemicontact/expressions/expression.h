@@ -49,6 +49,42 @@ namespace hemicontact
     Number
     evaluate(const std::vector<Number> &values) const;
 
+    /**
+     * The functions and the comparison, logical and conditional operators
+     * of the grammar, in the order of function_names(). From pow on they
+     * take two arguments; from less on they are written between their
+     * operands; conditional (c ? a : b) takes three.
+     */
+    enum class Function
+    {
+      sin,
+      cos,
+      tan,
+      exp,
+      log,
+      sqrt,
+      abs,
+      tanh,
+      sinh,
+      cosh,
+      atan,
+      pos,   ///< max(a, 0)
+      step,  ///< 1 if a > 0, else 0
+      sign,  ///< -1 if a < 0, else 1
+      pow,   ///< the first function of two arguments
+      max,
+      min,
+      less,  ///< the first comparison or logical operator
+      greater,
+      less_equal,
+      greater_equal,
+      equal,
+      not_equal,
+      logical_and,
+      logical_or,
+      conditional ///< c ? a : b
+    };
+
     struct Node
     {
       enum Kind
@@ -62,7 +98,7 @@ namespace hemicontact
       double                             value = 0;
       unsigned int                       index = 0; ///< variable index
       std::string                        op;        ///< operator/function
-      int function_id = -1; ///< index into function_names()
+      Function fn = Function::sin; ///< of a function node
       std::vector<std::unique_ptr<Node>> args;
     };
 
@@ -77,34 +113,30 @@ namespace hemicontact
     bool
     uses_variable(const unsigned int index) const;
 
-    /** The functions the grammar knows, in the order of Node::function_id;
-     *  from first_binary_function on they take two arguments. */
+    /** The spellings of the functions and operators, in the order of
+     *  Function. */
     static const std::vector<std::string> &
     function_names();
 
-    /** The function_id of pow, the first function of two arguments. */
-    static constexpr int first_binary_function = 14;
-
-    /** The function_id of '<', the first comparison or logical operator
-     *  (written between its operands, not as a call). */
-    static constexpr int first_condition = 17;
-
-    /** The function_id of c ? a : b, whose node has three arguments. */
-    static constexpr int conditional = 25;
-
-    /** Whether the function number @p id is a comparison or a logical
-     *  operator (a value 1 or 0, piecewise constant). */
+    /** Whether @p f takes two arguments (pow, max, min and the comparison
+     *  and logical operators). */
     static bool
-    is_condition(const int id);
+    is_binary(const Function f);
 
-    /** f(a) (or f(a, b)) for the function number @p id of function_names(). */
+    /** Whether @p f is a comparison or a logical operator (a value 1 or 0,
+     *  piecewise constant). */
+    static bool
+    is_condition(const Function f);
+
+    /** f(a) (or f(a, b)) for the function or operator @p f (not the
+     *  conditional). */
     template <typename Number>
     static Number
-    apply_function(const int id, const Number &a, const Number &b);
+    apply_function(const Function f, const Number &a, const Number &b);
 
-    /** The function_id of @p name (one of function_names()). */
-    static int
-    function_id(const std::string &name);
+    /** The function or operator spelt @p name (one of function_names()). */
+    static Function
+    function_of(const std::string &name);
 
   private:
     explicit Expression(std::unique_ptr<Node> root);
@@ -177,21 +209,22 @@ namespace hemicontact
           }
         default:
           {
-            if (node.function_id == conditional)
+            if (node.fn == Function::conditional)
               return eval(*node.args[0], values) != Number(0.) ?
                        eval(*node.args[1], values) :
                        eval(*node.args[2], values);
             const Number a = eval(*node.args[0], values);
             const Number b =
               node.args.size() > 1 ? eval(*node.args[1], values) : Number(0.);
-            return apply_function(node.function_id, a, b);
+            return apply_function(node.fn, a, b);
           }
       }
   }
 
   template <typename Number>
   Number
-  Expression::apply_function(const int id, const Number &a, const Number &b)
+  Expression::apply_function(const Function f, const Number &a,
+                             const Number &b)
   {
     using std::atan;
     using std::cos;
@@ -204,58 +237,61 @@ namespace hemicontact
     using std::sqrt;
     using std::tan;
     using std::tanh;
-    switch (id)
+    switch (f)
       {
-        case 0:
+        case Function::sin:
           return sin(a);
-        case 1:
+        case Function::cos:
           return cos(a);
-        case 2:
+        case Function::tan:
           return tan(a);
-        case 3:
+        case Function::exp:
           return exp(a);
-        case 4:
+        case Function::log:
           return log(a);
-        case 5:
+        case Function::sqrt:
           return sqrt(a);
-        case 6:
+        case Function::abs:
           return a < 0 ? Number(-a) : a;
-        case 7:
+        case Function::tanh:
           return tanh(a);
-        case 8:
+        case Function::sinh:
           return sinh(a);
-        case 9:
+        case Function::cosh:
           return cosh(a);
-        case 10:
+        case Function::atan:
           return atan(a);
-        case 11:
+        case Function::pos:
           return a > 0 ? a : Number(0.);
-        case 12:
+        case Function::step:
           return Number(a > 0 ? 1. : 0.);
-        case 13:
+        case Function::sign:
           return Number(a < 0 ? -1. : 1.);
-        case 14:
+        case Function::pow:
           return pow(a, b);
-        case 15:
+        case Function::max:
           return a > b ? a : b;
-        case 16:
+        case Function::min:
           return a < b ? a : b;
-        case 17:
+        case Function::less:
           return Number(a < b ? 1. : 0.);
-        case 18:
+        case Function::greater:
           return Number(a > b ? 1. : 0.);
-        case 19:
+        case Function::less_equal:
           return Number(a <= b ? 1. : 0.);
-        case 20:
+        case Function::greater_equal:
           return Number(a >= b ? 1. : 0.);
-        case 21:
+        case Function::equal:
           return Number(a == b ? 1. : 0.);
-        case 22:
+        case Function::not_equal:
           return Number(a != b ? 1. : 0.);
-        case 23:
+        case Function::logical_and:
           return Number(a != Number(0.) && b != Number(0.) ? 1. : 0.);
-        default: // 24: ||
+        case Function::logical_or:
           return Number(a != Number(0.) || b != Number(0.) ? 1. : 0.);
+        case Function::conditional: // three arguments: see eval()
+          break;
       }
+    return Number(0.);
   }
 } // namespace hemicontact

@@ -107,13 +107,13 @@ namespace hemicontact
       multiply,
       divide,
       integer_power, ///< a^n, n = 2..8, by multiplication as Expression
-      function       ///< Expression::function_names()[function_id]
+      function       ///< Expression::Function
     };
 
     struct Instruction
     {
       Op           op;
-      int          function_id = -1;
+      Expression::Function function = Expression::Function::sin;
       unsigned int a = 0, b = 0, c = 0; ///< operand instructions
       unsigned int n = 0;        ///< variable index or integer exponent
       double       value = 0;    ///< constant

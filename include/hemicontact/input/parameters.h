@@ -12,11 +12,25 @@ namespace hemicontact
 {
   using namespace dealii;
 
+  /** Where the coarse mesh comes from ('geometry/mesh'). */
+  enum class MeshType
+  {
+    rectangle, ///< a rectangle (2D) or box (3D) from the corners
+    gmsh       ///< a Gmsh file
+  };
+
+  /** The element type ('geometry/cell type'). */
+  enum class CellType
+  {
+    hypercube, ///< quadrilaterals/hexahedra, FE_Q, p4est mesh
+    simplex    ///< triangles/tetrahedra, FE_SimplexP, fully distributed mesh
+  };
+
   /** Mesh: built-in rectangle/box or a Gmsh file, and the element type. */
   struct GeometryParameters
   {
-    std::string         mesh_type;  ///< "rectangle" or "gmsh"
-    std::string         cell_type;  ///< "hypercube" (FE_Q, p4est) or "simplex"
+    MeshType            mesh_type;
+    CellType            cell_type;
     std::vector<double> lower_left; ///< corner of the rectangle/box
     std::vector<double> upper_right;
     std::vector<unsigned int> subdivisions;
@@ -72,7 +86,7 @@ namespace hemicontact
     void        parse(ParameterHandler &prm);
   };
 
-  /** Data of the problem as muparser expressions in x, y, z, t. */
+  /** Data of the problem as expressions in x, y, z, t. */
   struct DataParameters
   {
     std::string constants;
@@ -135,7 +149,6 @@ namespace hemicontact
     void        parse(ParameterHandler &prm);
   };
 
-  /** What is written, where and how often. */
   /** The format of the solution files. */
   enum class SolutionFormat
   {
@@ -150,14 +163,24 @@ namespace hemicontact
     double_precision  ///< also nodal_NNNNN.h5 and nodal.xdmf (doubles)
   };
 
+  /** What a run prints on the terminal. */
+  enum class TerminalOutput
+  {
+    progress, ///< one line per step
+    quiet,    ///< start and end only
+    test      ///< rounded, machine-independent lines for the test suite
+  };
+
+  /** What is written, where and how often. */
   struct OutputParameters
   {
     std::string  directory;
-    unsigned int vtu_interval; ///< every this many steps, 0 = never
+    /** Solution files and contact tables every this many steps, 0 = never. */
+    unsigned int   output_interval;
     SolutionFormat format;
     OutputPrecision precision;
-    std::string  probe_points; ///< "x,y; x,y" (empty: none)
-    std::string  terminal;     ///< "progress", "quiet" or "test"
+    std::string    probe_points; ///< "x,y; x,y" (empty: none)
+    TerminalOutput terminal;
     /** zlib level of the VTU files (lossless at every level). */
     DataOutBase::VtkFlags::ZlibCompressionLevel compression;
     bool         timing_summary;
@@ -184,26 +207,48 @@ namespace hemicontact
     void        parse(ParameterHandler &prm);
   };
 
+  /** The cell indicator of adaptive refinement ('adaptivity/indicator'). */
+  enum class RefinementIndicator
+  {
+    kelly,         ///< jumps of the normal derivative of w_n
+    kelly_contact, ///< plus the jumps of the contact traction on Gamma_3
+    residual       ///< the step's residual in cells, on faces and on Gamma_3
+  };
+
+  /** Which cells adaptive refinement marks ('adaptivity/strategy'). */
+  enum class MarkingStrategy
+  {
+    fixed_fraction, ///< the cells holding a fraction of the summed indicator
+    fixed_number    ///< a fraction of the cells
+  };
+
+  /** How the state moves to an adapted mesh ('adaptivity/state transfer'). */
+  enum class StateTransfer
+  {
+    interpolation, ///< deal.II's SolutionTransfer
+    projection     ///< M- and a_B-projections
+  };
+
   /** Adaptive mesh refinement during the time loop (hypercube meshes). */
   struct AdaptivityParameters
   {
     unsigned int interval;         ///< adapt after every this many steps, 0 = never
-    std::string  indicator;        ///< "kelly", "kelly contact", "residual"
+    RefinementIndicator indicator;
     double       contact_weight;   ///< weight of the Gamma_3 traction jumps
     unsigned int pre_refinement_steps; ///< restart from t = 0 after these, 0 = never
-    std::string  strategy;         ///< "fixed fraction" or "fixed number"
+    MarkingStrategy strategy;
     double       refine_fraction;
     double       coarsen_fraction;
     unsigned int max_cells;        ///< 0 = no limit
     unsigned int min_level;
     unsigned int max_level;
-    std::string  state_transfer;   ///< "interpolation" or "projection"
+    StateTransfer state_transfer;
 
     static void declare(ParameterHandler &prm);
     void        parse(ParameterHandler &prm);
   };
 
-  /** Checkpoints of the time loop and resuming from them (p4est meshes). */
+  /** Checkpoints of the time loop and resuming from them. */
   struct CheckpointParameters
   {
     unsigned int interval;      ///< every this many steps, 0 = never
@@ -215,10 +260,19 @@ namespace hemicontact
     void        parse(ParameterHandler &prm);
   };
 
+  /** What a convergence study refines from level to level. */
+  enum class StudyType
+  {
+    single, ///< one run
+    h,      ///< the mesh
+    k,      ///< the time step
+    coupled ///< both, k = c h
+  };
+
   /** A convergence study over refinement levels (manufactured solutions). */
   struct ConvergenceStudyParameters
   {
-    std::string  type;     ///< "single", "h", "k" or "coupled"
+    StudyType    type;
     unsigned int n_levels; ///< number of levels
 
     static void declare(ParameterHandler &prm);
@@ -254,6 +308,14 @@ namespace hemicontact
     static void declare(ParameterHandler &prm);
     void        parse(ParameterHandler &prm);
   };
+
+  /**
+   * Throw an InputError if the entries of different subsections of
+   * @p parameters contradict each other (each subsection's own checks are
+   * in its parse()).
+   */
+  void
+  require_consistent(const Parameters &parameters);
 
   /** Declare every parameter of the program (including the laws). */
   void

@@ -1,7 +1,8 @@
 #pragma once
 
+#include <hemicontact/input/parameters.h>
+
 #include <cstddef>
-#include <string>
 #include <vector>
 
 namespace hemicontact
@@ -53,7 +54,8 @@ namespace hemicontact
    * fall on the same side of it.
    */
   MarkingThresholds
-  marking_thresholds(std::vector<float> indicators, const std::string &strategy,
+  marking_thresholds(std::vector<float> indicators,
+                     const MarkingStrategy strategy,
                      const double refine_fraction,
                      const double coarsen_fraction);
 } // namespace hemicontact
