@@ -6,25 +6,31 @@
 
 namespace hemicontact
 {
-  template <int dim>
-  void
-  ContactProblem<dim>::count_branches(StepStatistics &stats) const
+  namespace
   {
-    unsigned int counts[5] = {0, 0, 0, 0, 0};
-    for (const ContactNode<dim> &node : contact_nodes)
-      if (node.locally_owned)
-        {
-          ++counts[static_cast<unsigned int>(node.normal_branch)];
-          ++counts[3 + static_cast<unsigned int>(node.tangential_branch)];
-        }
-    for (unsigned int &c : counts)
-      c = Utilities::MPI::sum(c, mpi_communicator);
-    stats.n_separating   = counts[0];
-    stats.n_normal_stick = counts[1];
-    stats.n_damped       = counts[2];
-    stats.n_stick        = counts[3];
-    stats.n_slip         = counts[4];
-  }
+    /** The branches of the owned nodes of @p contact_nodes, summed over the
+     *  ranks, into @p stats. */
+    template <int dim>
+    void
+    count_branches(const std::vector<ContactNode<dim>> &contact_nodes,
+                   MPI_Comm mpi_communicator, StepStatistics &stats)
+    {
+      unsigned int counts[5] = {0, 0, 0, 0, 0};
+      for (const ContactNode<dim> &node : contact_nodes)
+        if (node.locally_owned)
+          {
+            ++counts[static_cast<unsigned int>(node.normal_branch)];
+            ++counts[3 + static_cast<unsigned int>(node.tangential_branch)];
+          }
+      for (unsigned int &c : counts)
+        c = Utilities::MPI::sum(c, mpi_communicator);
+      stats.n_separating   = counts[0];
+      stats.n_normal_stick = counts[1];
+      stats.n_damped       = counts[2];
+      stats.n_stick        = counts[3];
+      stats.n_slip         = counts[4];
+    }
+  } // namespace
 
   template <int dim>
   StepStatistics
@@ -55,12 +61,10 @@ namespace hemicontact
     stats.linear_iterations      = report.linear_iterations;
     stats.line_search_reductions = report.line_search_reductions;
     stats.residual               = report.relative_residual;
-    count_branches(stats);
+    count_branches(contact_nodes, mpi_communicator, stats);
     return stats;
   }
 
-  template void ContactProblem<2>::count_branches(StepStatistics &) const;
-  template void ContactProblem<3>::count_branches(StepStatistics &) const;
   template StepStatistics ContactProblem<2>::solve_step();
   template StepStatistics ContactProblem<3>::solve_step();
 } // namespace hemicontact
