@@ -33,6 +33,44 @@ namespace hemicontact
             std::cerr << "hemicontact: warning: " << warning << std::endl;
         }
     }
+
+    /**
+     * The points of 'output/probe points' (@p text_of_points: "x,y; x,y");
+     * an InputError for an entry that is not @p dim finite numbers.
+     */
+    template <int dim>
+    std::vector<Point<dim>>
+    parse_probe_points(const std::string &text_of_points)
+    {
+      std::vector<Point<dim>> points;
+      for (const std::string &text :
+           Utilities::split_string_list(text_of_points, ';'))
+        {
+          std::vector<double> coordinates;
+          try
+            {
+              coordinates = Utilities::string_to_double(
+                Utilities::split_string_list(text, ','));
+            }
+          catch (...)
+            {
+              throw InputError("output: 'probe points' entry '" + text +
+                               "' is not a list of numbers.");
+            }
+          require(coordinates.size() == dim,
+                  "output: 'probe points' entry '" + text + "' needs " +
+                    std::to_string(dim) + " coordinates.");
+          require(std::all_of(coordinates.begin(), coordinates.end(),
+                              [](const double c) { return std::isfinite(c); }),
+                  "output: 'probe points' entry '" + text +
+                    "' has a coordinate that is not a finite number.");
+          Point<dim> p;
+          for (unsigned int d = 0; d < dim; ++d)
+            p[d] = coordinates[d];
+          points.push_back(p);
+        }
+      return points;
+    }
   } // namespace
 
   template <int dim>
@@ -51,33 +89,7 @@ namespace hemicontact
   RunOutput<dim>::open(const ContactProblem<dim> &problem)
   {
     // the probe points, checked before the output is touched
-    probe_points.clear();
-    for (const std::string &text :
-         Utilities::split_string_list(parameters.output.probe_points, ';'))
-      {
-        std::vector<double> coordinates;
-        try
-          {
-            coordinates =
-              Utilities::string_to_double(Utilities::split_string_list(text, ','));
-          }
-        catch (...)
-          {
-            throw InputError("output: 'probe points' entry '" + text +
-                             "' is not a list of numbers.");
-          }
-        require(coordinates.size() == dim,
-                "output: 'probe points' entry '" + text + "' needs " +
-                  std::to_string(dim) + " coordinates.");
-        require(std::all_of(coordinates.begin(), coordinates.end(),
-                            [](const double c) { return std::isfinite(c); }),
-                "output: 'probe points' entry '" + text +
-                  "' has a coordinate that is not a finite number.");
-        Point<dim> p;
-        for (unsigned int d = 0; d < dim; ++d)
-          p[d] = coordinates[d];
-        probe_points.push_back(p);
-      }
+    probe_points = parse_probe_points<dim>(parameters.output.probe_points);
     if (!probe_points.empty())
       {
         mesh_changed(problem);

@@ -131,9 +131,11 @@ namespace hemicontact
 
   private:
     void
-    write_step_row(const StepStatistics &stats, const ContactProblem<dim> &problem);
+    write_step_row(const StepStatistics &     stats,
+                   const ContactProblem<dim> &problem);
     void
-    print_step(const StepStatistics &stats, const ContactProblem<dim> &problem) const;
+    print_step(const StepStatistics &     stats,
+               const ContactProblem<dim> &problem) const;
     /** Start the write of the series file of the current step. */
     void
     start_solution_write(const ContactProblem<dim> &problem);

@@ -208,7 +208,7 @@ namespace hemicontact
       const StepPreconditioner<dim> &      preconditioner;
       const EnergyBalance &                energy;
       const ConvexityCheck &               convexity;
-      double                               time;
+      double                               time; ///< t_n = n k
       double                               time_step;
       /** Length of the last converged step (0: none yet). */
       double       last_step_length;
@@ -219,14 +219,29 @@ namespace hemicontact
     State
     state() const
     {
-      return {discretization, dof_handler,     locally_owned_dofs,
-              locally_relevant_dofs, material, *law,
-              *friction,      step_matrix,     base_constraints,
-              velocity,       old_velocity,    displacement,
-              step_rhs,       contact_traction, contact_nodes,
-              preconditioner, energy,          convexity,
-              step_number * time_step, time_step, last_step_length,
-              step_number,    n_steps};
+      return {discretization,
+              dof_handler,
+              locally_owned_dofs,
+              locally_relevant_dofs,
+              material,
+              *law,
+              *friction,
+              step_matrix,
+              base_constraints,
+              velocity,
+              old_velocity,
+              displacement,
+              step_rhs,
+              contact_traction,
+              contact_nodes,
+              preconditioner,
+              energy,
+              convexity,
+              step_number * time_step,
+              time_step,
+              last_step_length,
+              step_number,
+              n_steps};
     }
     /** @} */
 
