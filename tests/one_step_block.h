@@ -97,6 +97,6 @@ one_step(const std::string &parameter_text, const std::string &exact_w,
                                    problem.get_dof_handler(), *exact, w);
   w -= problem.get_velocity();
   result.error           = w.linfty_norm() / V;
-  result.convexity_bound = problem.get_convexity_bound();
+  result.convexity_bound = problem.state().convexity.bound;
   return result;
 }

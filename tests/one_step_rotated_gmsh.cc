@@ -122,7 +122,7 @@ namespace
     const double error = w.linfty_norm() / V;
 
     double normal_error = 0;
-    for (const auto &node : problem.get_contact_nodes())
+    for (const auto &node : problem.state().contact_nodes)
       normal_error = std::max(normal_error,
                               (node.normal - Tensor<1, 2>({s, -c})).norm());
 

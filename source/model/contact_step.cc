@@ -20,12 +20,12 @@ namespace hemicontact
     , residual_ghosted(w_ghosted)
   {}
 
-  template <int dim>
   TrilinosWrappers::MPI::Vector
-  ContactStep<dim>::without_constrained(const VectorType &v) const
+  without_constrained(const TrilinosWrappers::MPI::Vector &v,
+                      const AffineConstraints<double> &    constraints)
   {
-    VectorType result(v);
-    system.base_constraints.set_zero(result);
+    TrilinosWrappers::MPI::Vector result(v);
+    constraints.set_zero(result);
     return result;
   }
 
@@ -36,7 +36,8 @@ namespace hemicontact
     TimerOutput::Scope t(system.timer, "active set update");
     // K0 and b are condensed with the base constraints, so R vanishes on
     // constrained rows once constrained entries of w are zero
-    system.step_matrix.vmult(residual, without_constrained(w));
+    system.step_matrix.vmult(residual,
+                             without_constrained(w, system.base_constraints));
     residual -= system.step_rhs;
   }
 
@@ -182,7 +183,8 @@ namespace hemicontact
   void
   ContactStep<dim>::apply_quadratic(const VectorType &d, VectorType &k_d) const
   {
-    system.step_matrix.vmult(k_d, without_constrained(d));
+    system.step_matrix.vmult(k_d,
+                             without_constrained(d, system.base_constraints));
   }
 
   template <int dim>

@@ -75,7 +75,6 @@ namespace hemicontact
   void
   ContactProblem<dim>::adapt_mesh(StepStatistics &stats)
   {
-    finish_solution_output(); // its job reads the mesh about to change
     TimerOutput::Scope          t(timer, "adaptivity");
     const AdaptivityParameters &settings = parameters.adaptivity;
     auto *tria = dynamic_cast<parallel::distributed::Triangulation<dim> *>(
@@ -164,9 +163,6 @@ namespace hemicontact
     if (project)
       displacement.add(-time_step, velocity); // u_n = u_{n+1} - k w_n
     old_velocity = velocity;
-    if (!probe_points.empty())
-      probe_cache.reinit(probe_points, *discretization.triangulation,
-                         *discretization.mapping);
 
     std::tie(stats.kinetic_after_adaptation, stats.elastic_after_adaptation) =
       stored_energy();

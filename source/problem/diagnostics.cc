@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/model/contact_step.h>
 #include <hemicontact/solver/generalized_eigenvalue.h>
 #include <hemicontact/base/exceptions.h>
 
@@ -34,24 +35,15 @@ namespace hemicontact
   } // namespace
 
   template <int dim>
-  TrilinosWrappers::MPI::Vector
-  ContactProblem<dim>::without_constrained(
-    const TrilinosWrappers::MPI::Vector &v) const
-  {
-    TrilinosWrappers::MPI::Vector result(v);
-    base_constraints.set_zero(result);
-    return result;
-  }
-
-  template <int dim>
   std::pair<double, double>
   ContactProblem<dim>::stored_energy() const
   {
     // rho/2 |w_n|^2 and 1/2 a_B(u_{n+1}, u_{n+1}) with u_{n+1} = u_n + k w_n
-    const TrilinosWrappers::MPI::Vector w = without_constrained(velocity);
+    const TrilinosWrappers::MPI::Vector w =
+      without_constrained(velocity, base_constraints);
     TrilinosWrappers::MPI::Vector       u_next(displacement);
     u_next.add(time_step, velocity);
-    u_next = without_constrained(u_next);
+    u_next = without_constrained(u_next, base_constraints);
     TrilinosWrappers::MPI::Vector tmp(locally_owned_dofs, mpi_communicator);
     mass_matrix.vmult(tmp, w);
     const double kinetic = 0.5 * (w * tmp);
@@ -65,7 +57,8 @@ namespace hemicontact
   {
     TimerOutput::Scope t(timer, "energy balance");
     const double                        k = time_step;
-    const TrilinosWrappers::MPI::Vector w = without_constrained(velocity);
+    const TrilinosWrappers::MPI::Vector w =
+      without_constrained(velocity, base_constraints);
     TrilinosWrappers::MPI::Vector       tmp(locally_owned_dofs, mpi_communicator);
     std::tie(energy.kinetic, energy.elastic) = stored_energy();
     const double w_M_w                       = 2 * energy.kinetic;
@@ -80,7 +73,7 @@ namespace hemicontact
 
     TrilinosWrappers::MPI::Vector dw(velocity);
     dw -= old_velocity;
-    dw = without_constrained(dw);
+    dw = without_constrained(dw, base_constraints);
     mass_matrix.vmult(tmp, dw);
     const double dw_M_dw = dw * tmp;
     elastic_matrix.vmult(tmp, w);
@@ -117,29 +110,30 @@ namespace hemicontact
     // (alpha_tau = 0) the bound is stated for alpha_nu: the smallest
     // eigenvalue of K0 against sum m_i nu nu, to be compared with alpha_nu.
     // N grows with every alpha_tau,i, so the check covers every later step
-    // whose alpha_tau,i stay below checked_alpha_tau (the values checked,
-    // times the room the bound leaves, at most the headroom).
+    // whose alpha_tau,i stay below convexity.checked_alpha_tau (the values
+    // checked, times the room the bound leaves, at most the headroom).
     const double alpha = law->relaxed_monotonicity_constant();
-    checked_alpha_tau.assign(contact_nodes.size(), 0.);
-    largest_alpha_tau = 0;
+    convexity.checked_alpha_tau.assign(contact_nodes.size(), 0.);
+    convexity.largest_alpha_tau = 0;
     for (std::size_t i = 0; i < contact_nodes.size(); ++i)
       {
-        checked_alpha_tau[i] =
+        convexity.checked_alpha_tau[i] =
           friction->relaxed_monotonicity_constant(contact_nodes[i].friction_bound);
         if (contact_nodes[i].locally_owned)
-          largest_alpha_tau = std::max(largest_alpha_tau, checked_alpha_tau[i]);
+          convexity.largest_alpha_tau =
+            std::max(convexity.largest_alpha_tau, convexity.checked_alpha_tau[i]);
       }
-    largest_alpha_tau =
-      Utilities::MPI::max(largest_alpha_tau, mpi_communicator);
-    convexity_with_friction = largest_alpha_tau > 0;
-    if (alpha == 0 && !convexity_with_friction)
+    convexity.largest_alpha_tau =
+      Utilities::MPI::max(convexity.largest_alpha_tau, mpi_communicator);
+    convexity.with_friction = convexity.largest_alpha_tau > 0;
+    if (alpha == 0 && !convexity.with_friction)
       {
-        convexity_bound = std::numeric_limits<double>::infinity();
+        convexity.bound = std::numeric_limits<double>::infinity();
         return;
       }
     TimerOutput::Scope t(timer, "convexity check");
 
-    const double alpha_nu = convexity_with_friction ? alpha : 1.;
+    const double alpha_nu = convexity.with_friction ? alpha : 1.;
     const auto   apply_n  = [&](const TrilinosWrappers::MPI::Vector &in,
                              TrilinosWrappers::MPI::Vector &      out) {
       out = 0;
@@ -151,8 +145,8 @@ namespace hemicontact
               v[c] = in[node.dofs[c]];
             const double vn = v * node.normal;
             Tensor<1, dim> nv = alpha_nu * vn * node.normal;
-            if (convexity_with_friction)
-              nv += checked_alpha_tau[i] * (v - vn * node.normal);
+            if (convexity.with_friction)
+              nv += convexity.checked_alpha_tau[i] * (v - vn * node.normal);
             for (unsigned int c = 0; c < dim; ++c)
               out[node.dofs[c]] = node.mass * nv[c];
           }
@@ -179,7 +173,7 @@ namespace hemicontact
       if (node.locally_owned)
         {
           Tensor<1, dim> start = node.normal;
-          if (convexity_with_friction)
+          if (convexity.with_friction)
             for (const Tensor<1, dim> &t : nodal::tangent_basis(node.normal))
               start += t;
           for (unsigned int c = 0; c < dim; ++c)
@@ -192,7 +186,7 @@ namespace hemicontact
                                      convexity_residual_tolerance,
                                      convexity_max_iterations);
     // value 0: N vanishes on the free dofs, and every alpha is admissible
-    convexity_bound = estimate.value > 0 ?
+    convexity.bound = estimate.value > 0 ?
                         1. / estimate.value :
                         std::numeric_limits<double>::infinity();
     if (estimate.value > 0 && !estimate.converged &&
@@ -207,26 +201,26 @@ namespace hemicontact
                 << std::endl;
 
     const bool convex =
-      convexity_with_friction ? convexity_bound > 1 : alpha < convexity_bound;
-    if (convexity_with_friction && convex)
-      for (double &checked : checked_alpha_tau)
-        checked *= std::min(convexity_bound, convexity_recheck_headroom);
+      convexity.with_friction ? convexity.bound > 1 : alpha < convexity.bound;
+    if (convexity.with_friction && convex)
+      for (double &checked : convexity.checked_alpha_tau)
+        checked *= std::min(convexity.bound, convexity_recheck_headroom);
     // during the run, a step that stays non-convex is not named again
-    const bool report = context.empty() || steps_convex;
-    steps_convex      = convex;
+    const bool report = context.empty() || convexity.steps_convex;
+    convexity.steps_convex = convex;
     if (!convex && report)
       {
         std::ostringstream message;
-        if (convexity_with_friction)
+        if (convexity.with_friction)
           message << "the step energy J_n is not convex for this time step: "
                      "the laws' relaxed-monotonicity constants alpha_nu = "
                   << alpha << " (normal law) and alpha_tau up to "
-                  << largest_alpha_tau << " (friction law '"
+                  << convexity.largest_alpha_tau << " (friction law '"
                   << friction->name()
                   << "') are too large for (rho/k M + A): its smallest "
                      "eigenvalue against sum m_i (alpha_nu nu nu + alpha_tau "
                      "(I - nu nu)) is estimated at "
-                  << convexity_bound
+                  << convexity.bound
                   << ", below 1 (the convexity condition of the step "
                      "problem, doc/theory.md section 7). Newton may fail or "
                      "the step may have several solutions; reduce the time "
@@ -239,7 +233,7 @@ namespace hemicontact
                      "normal law's relaxed-monotonicity constant alpha = "
                   << alpha
                   << " is not below the estimated smallest eigenvalue "
-                  << convexity_bound
+                  << convexity.bound
                   << " of (rho/k M + A) against the normal boundary mass "
                      "(the convexity condition of the step problem, cf. Han & Han 2019, (4.26)). Newton may fail "
                      "or the step may have several solutions; reduce the time "
@@ -262,11 +256,11 @@ namespace hemicontact
   ContactProblem<dim>::recheck_convexity_if_bounds_grew(const double t)
   {
     // a bound from u_nu or t may raise alpha_tau above what was checked
-    int grew = checked_alpha_tau.size() != contact_nodes.size();
+    int grew = convexity.checked_alpha_tau.size() != contact_nodes.size();
     for (std::size_t i = 0; i < contact_nodes.size() && !grew; ++i)
       grew = contact_nodes[i].locally_owned &&
              friction->relaxed_monotonicity_constant(
-               contact_nodes[i].friction_bound) > checked_alpha_tau[i];
+               contact_nodes[i].friction_bound) > convexity.checked_alpha_tau[i];
     if (Utilities::MPI::max(grew, mpi_communicator) == 0)
       return;
     std::ostringstream context;
@@ -277,9 +271,6 @@ namespace hemicontact
   }
 
 #define HEMICONTACT_INSTANTIATE(dim)                                           \
-  template TrilinosWrappers::MPI::Vector                                       \
-  ContactProblem<dim>::without_constrained(                                    \
-    const TrilinosWrappers::MPI::Vector &) const;                              \
   template void ContactProblem<dim>::update_energy_balance(const bool);       \
   template std::pair<double, double> ContactProblem<dim>::stored_energy()     \
     const;       \

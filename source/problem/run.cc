@@ -1,12 +1,14 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
+#include <hemicontact/output/checkpointer.h>
+#include <hemicontact/output/run_output.h>
 #include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/base/exceptions.h>
 
 #include <algorithm>
 #include <tuple>
-#include <csignal>
+#include <iostream>
 #include <iomanip>
 #include <sstream>
 
@@ -21,13 +23,34 @@ namespace hemicontact
      */
     constexpr double unstable_energy_growth = 100;
 
-    /** Set by SIGTERM or SIGINT; the time loop checks it after every step. */
-    volatile std::sig_atomic_t termination_requested = 0;
 
-    extern "C" void
-    request_termination(int)
+    /**
+     * Refuse (SolverFailure) a stored energy E_n above
+     * unstable_energy_growth times the energy put in, at time @p t, unless
+     * 'time/allow unstable time step' is set: then a warning, once
+     * (@p reported).
+     */
+    void
+    check_energy_growth(const EnergyBalance &energy, const double t,
+                        const Parameters &parameters, MPI_Comm comm,
+                        bool &reported)
     {
-      termination_requested = 1;
+      if (!(energy.growth() > unstable_energy_growth) || reported)
+        return;
+      std::ostringstream message;
+      message << std::setprecision(4) << "the stored energy E_n = "
+              << energy.total_energy() << " at t = " << t << " is "
+              << energy.growth()
+              << " times the energy put into the body (initial "
+                 "energy and work of the loads, "
+              << energy.supplied_energy()
+              << "): the time scheme is unstable (doc/theory.md, "
+                 "section 8); reduce the time step.";
+      if (!parameters.time.allow_unstable_time_step)
+        throw SolverFailure(message.str());
+      reported = true;
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        std::cerr << "hemicontact: warning: " << message.str() << std::endl;
     }
   } // namespace
 
@@ -37,7 +60,7 @@ namespace hemicontact
   {
     Timer wall;
     ++step_number;
-    const double time = get_time();
+    const double time = step_number * time_step;
 
     StepStatistics stats;
     try
@@ -147,12 +170,17 @@ namespace hemicontact
 
   template <int dim>
   bool
-  ContactProblem<dim>::adapt_mesh_if_due(StepStatistics &stats)
+  ContactProblem<dim>::adapt_mesh_if_due(StepStatistics &stats,
+                                         RunOutput<dim> *output)
   {
     const unsigned int every = parameters.adaptivity.interval;
     if (every == 0 || step_number % every != 0 || finished())
       return false;
+    if (output != nullptr)
+      output->finish_solution_output(); // its job reads the mesh
     adapt_mesh(stats);
+    if (output != nullptr)
+      output->mesh_changed(*this);
     return true;
   }
 
@@ -160,107 +188,67 @@ namespace hemicontact
   void
   ContactProblem<dim>::run()
   {
+    RunOutput<dim>    output(parameters, mpi_communicator, timer, pcout);
+    Checkpointer<dim> checkpointer(parameters, mpi_communicator, timer);
     // an earlier run's files come back if this run stops on an input or
     // output error before its first step; a solver failure keeps the state
     // it wrote (doc/outputs.md)
     try
       {
-        run_and_write();
+        time_loop(output, checkpointer);
       }
     catch (const InputError &)
       {
-        restore_earlier_output();
+        output.restore_earlier_output();
         throw;
       }
     catch (const OutputError &)
       {
-        restore_earlier_output();
+        output.restore_earlier_output();
         throw;
       }
     catch (const SolverFailure &)
       {
-        const std::string error = earlier_output.keep_new_output();
-        if (!error.empty())
-          std::cerr << "hemicontact: warning: " << error << std::endl;
+        output.keep_new_output();
         throw;
       }
   }
 
   template <int dim>
   void
-  ContactProblem<dim>::run_and_write()
+  ContactProblem<dim>::time_loop(RunOutput<dim> &   output,
+                                 Checkpointer<dim> &checkpointer)
   {
     // validate everything (mesh, boundary ids, data) before touching the
     // output directory, so that a bad input does not truncate earlier output
     require_usable_output_directory(parameters.output.directory,
                                     mpi_communicator);
-    const CheckpointParameters &checkpoints = parameters.checkpoint;
-    if (checkpoints.resume)
-      setup_from_checkpoint();
+    const bool resumed = parameters.checkpoint.resume;
+    if (resumed)
+      {
+        resume(checkpointer);
+        output.continue_series(checkpointer.series());
+      }
     else
       setup();
-    setup_probes(); // checks the points before the output is touched
-    open_tables();
-    if (!checkpoints.resume)
-      start_checkpoint_run();
-    termination_requested = 0;
-    std::signal(SIGTERM, request_termination);
-    std::signal(SIGINT, request_termination);
+    output.open(*this); // checks the probe points first
+    checkpointer.start(resumed);
+    output.print_start(*this);
 
-    const unsigned int n_nodes = Utilities::MPI::sum(
-      static_cast<unsigned int>(std::count_if(
-        contact_nodes.begin(), contact_nodes.end(),
-        [](const ContactNode<dim> &n) { return n.locally_owned; })),
-      mpi_communicator);
-    pcout << "hemicontact: " << dim << "D, "
-          << discretization.triangulation->n_global_active_cells()
-          << " cells, " << dof_handler.n_dofs() << " dofs, " << n_nodes
-          << " contact nodes, " << n_steps << " steps of k = " << time_step
-          << ", normal law '" << law->name() << "'";
-    if (friction->name() != default_friction_law_name())
-      pcout << ", friction law '" << friction->name() << "'";
-    if (parameters.output.terminal != TerminalOutput::test)
-      pcout << ", " << Utilities::MPI::n_mpi_processes(mpi_communicator)
-            << " MPI rank(s)";
-    pcout << std::endl;
-    if (convexity_with_friction)
-      pcout << "convexity: alpha_nu = " << law->relaxed_monotonicity_constant()
-            << ", alpha_tau <= " << std::setprecision(3) << largest_alpha_tau
-            << ", smallest eigenvalue against them (estimated) = "
-            << convexity_bound << " -> "
-            << (convexity_bound > 1 ? "each step is strongly convex" :
-                                      "NOT guaranteed convex")
-            << std::endl;
-    else if (law->relaxed_monotonicity_constant() > 0)
-      pcout << "convexity: alpha = " << law->relaxed_monotonicity_constant()
-            << ", bound (estimated) = " << std::setprecision(3)
-            << convexity_bound << " -> "
-            << (law->relaxed_monotonicity_constant() < convexity_bound ?
-                  "each step is strongly convex" :
-                  "NOT guaranteed convex")
-            << std::endl;
-
-    const unsigned int interval = parameters.output.output_interval;
-    Timer              run_timer; // the time loop with every output
-    if (checkpoints.resume)
+    Timer run_timer; // the time loop with every output
+    if (resumed)
       pcout << "resumed from the checkpoint of step " << step_number
-            << " (t = " << get_time() << ")" << std::endl;
+            << " (t = " << step_number * time_step << ")" << std::endl;
     else
       {
-        if (interval > 0)
-          {
-            write_solution();
-            write_contact_csv();
-          }
-        write_probes();
+        output.write_solution(*this);
+        output.write_probes(*this);
       }
-    Timer        since_checkpoint;
     unsigned int steps_this_run = 0;
-    loop_start      = std::chrono::steady_clock::now();
-    loop_start_step = step_number;
+    output.start_time_loop(step_number);
 
     RunTotals totals;
-    bool      restarted = false; // by 'adaptivity/pre-refinement steps'
+    bool      restarted       = false; // by 'adaptivity/pre-refinement steps'
     bool      growth_reported = false;
     while (!finished())
       {
@@ -268,34 +256,13 @@ namespace hemicontact
         try
           {
             stats = advance();
-            if (energy.growth() > unstable_energy_growth && !growth_reported)
-              {
-                std::ostringstream message;
-                message << std::setprecision(4) << "the stored energy E_n = "
-                        << energy.total_energy() << " at t = " << get_time()
-                        << " is " << energy.growth()
-                        << " times the energy put into the body (initial "
-                           "energy and work of the loads, "
-                        << energy.supplied_energy()
-                        << "): the time scheme is unstable (doc/theory.md, "
-                           "section 8); reduce the time step.";
-                if (!parameters.time.allow_unstable_time_step)
-                  throw SolverFailure(message.str());
-                growth_reported = true;
-                if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-                  std::cerr << "hemicontact: warning: " << message.str()
-                            << std::endl;
-              }
+            check_energy_growth(energy, step_number * time_step, parameters,
+                                mpi_communicator, growth_reported);
           }
         catch (const SolverFailure &failure)
           {
-            if (interval > 0)
-              {
-                write_solution();
-                write_contact_csv();
-              }
-            finish_solution_output();
-            write_checkpoint();
+            output.write_solution(*this);
+            checkpointer.write(*this, output);
             throw SolverFailure(std::string(failure.what()) +
                                 " The last converged state (step " +
                                 std::to_string(step_number) +
@@ -303,21 +270,13 @@ namespace hemicontact
                                 parameters.output.directory +
                                 "' with a checkpoint to resume from.");
           }
-        ++totals.steps;
-        totals.newton_iterations += stats.newton_iterations;
-        totals.max_newton = std::max(totals.max_newton, stats.newton_iterations);
-        totals.linear_iterations += stats.linear_iterations;
-        totals.step_wall_seconds += stats.wall_seconds;
+        totals.add(stats);
         // the fields on the mesh the step ran on, then (maybe) a new mesh
-        write_probes();
-        if (interval > 0 && (step_number % interval == 0 || finished()))
-          {
-            write_solution();
-            write_contact_csv();
-          }
-        adapt_mesh_if_due(stats);
-        write_step_row(stats);
-        print_step(stats);
+        output.write_probes(*this);
+        if (output.solution_due(step_number, finished()))
+          output.write_solution(*this);
+        adapt_mesh_if_due(stats, &output);
+        output.write_step(stats, *this);
         ++steps_this_run;
 
         // pre-refinement: once, start again from t = 0 on the mesh reached
@@ -330,60 +289,34 @@ namespace hemicontact
                   << discretization.triangulation->n_global_active_cells()
                   << " cells, " << dof_handler.n_dofs() << " dofs"
                   << std::endl;
-            write_probes();
-            if (interval > 0)
-              {
-                // the series shows the restarted run; its files replace
-                // those of the same steps before the restart
-                finish_solution_output();
-                pvd_records.clear();
-                write_solution();
-                write_contact_csv();
-              }
+            output.write_probes(*this);
+            // the series shows the restarted run; its files replace those
+            // of the same steps before the restart
+            output.restart_series();
+            output.write_solution(*this);
             continue;
           }
 
         // checkpoints: periodic, by wall time, and on interruption (the
         // same decision on every rank)
         const bool interrupted =
-          Utilities::MPI::max(static_cast<int>(termination_requested),
-                              mpi_communicator) > 0 ||
-          (checkpoints.stop_after > 0 &&
-           steps_this_run == checkpoints.stop_after);
-        const bool periodic =
-          (checkpoints.interval > 0 && step_number % checkpoints.interval == 0) ||
-          (checkpoints.wall_interval > 0 &&
-           Utilities::MPI::max(since_checkpoint.wall_time(), mpi_communicator) >=
-             checkpoints.wall_interval);
-        if (periodic || (interrupted && !finished()))
-          {
-            write_checkpoint();
-            since_checkpoint.reset();
-            since_checkpoint.start();
-          }
+          checkpointer.interruption_requested(steps_this_run);
+        if (checkpointer.due(step_number, interrupted, finished()))
+          checkpointer.write(*this, output);
         if (interrupted && !finished())
           {
-            finish_solution_output();
+            output.finish_solution_output();
             throw RunInterrupted(
-              "stopped after step " + std::to_string(step_number) + " (t = " +
-              std::to_string(get_time()) + "); a checkpoint was written to '" +
+              "stopped after step " + std::to_string(step_number) +
+              " (t = " + std::to_string(step_number * time_step) +
+              "); a checkpoint was written to '" +
               parameters.output.directory +
               "/checkpoint'; continue with 'hemicontact --resume FILE.prm'.");
           }
       }
 
-    finish_solution_output();
-    run_wall_seconds = run_timer.wall_time();
-    pcout << "done: " << n_steps << " steps, Newton iterations per step mean "
-          << std::fixed << std::setprecision(2)
-          << double(totals.newton_iterations) / std::max(totals.steps, 1u)
-          << " max " << totals.max_newton
-          << ", energy defect < 1e-7 relative: "
-          << (energy.relative_defect() < 1e-7 ? "yes" : "no") << std::endl;
-    if (parameters.output.performance_summary)
-      write_performance_summary(totals);
-    if (parameters.output.timing_summary && parameters.output.terminal != TerminalOutput::test)
-      timer.print_wall_time_statistics(mpi_communicator);
+    output.finish_solution_output();
+    output.finish(*this, totals, run_timer.wall_time());
   }
 
 #define HEMICONTACT_INSTANTIATE(dim)                                           \
@@ -391,9 +324,11 @@ namespace hemicontact
   template StepStatistics ContactProblem<dim>::advance_interval(              \
     const double, const double, const unsigned int);                           \
   template void ContactProblem<dim>::set_time_step(const double);                     \
-  template bool ContactProblem<dim>::adapt_mesh_if_due(StepStatistics &);    \
-  template void           ContactProblem<dim>::run();                        \
-  template void           ContactProblem<dim>::run_and_write();
+  template bool ContactProblem<dim>::adapt_mesh_if_due(StepStatistics &,     \
+                                                       RunOutput<dim> *);    \
+  template void ContactProblem<dim>::run();                                   \
+  template void ContactProblem<dim>::time_loop(RunOutput<dim> &,              \
+                                               Checkpointer<dim> &);
 
   HEMICONTACT_INSTANTIATE(2)
   HEMICONTACT_INSTANTIATE(3)

@@ -54,19 +54,12 @@ namespace hemicontact
   ContactProblem<dim>::setup()
   {
     TimerOutput::Scope t(timer, "setup");
-    make_mesh();
+    discretization.make_mesh(parameters.geometry);
+    discretization.check_boundary_ids(parameters.boundary);
     setup_on_current_mesh();
     initialize_state();
     check_time_step_stability();
     check_convexity();
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::make_mesh()
-  {
-    discretization.make_mesh(parameters.geometry);
-    discretization.check_boundary_ids(parameters.boundary);
   }
 
   template <int dim>
@@ -186,7 +179,7 @@ namespace hemicontact
     diagonal_g = diagonal;
 
     contact_nodes.clear();
-    checked_alpha_tau.clear(); // a convexity check covers its own nodes
+    convexity.checked_alpha_tau.clear(); // a convexity check covers its own nodes
     std::map<types::global_dof_index, unsigned int> seen;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
@@ -317,7 +310,6 @@ namespace hemicontact
                                                MPI_Comm);                     \
   template void ContactProblem<dim>::update_friction_bounds(const double);    \
   template void ContactProblem<dim>::setup();                                 \
-  template void ContactProblem<dim>::make_mesh();                             \
   template void ContactProblem<dim>::setup_on_current_mesh();                 \
   template void ContactProblem<dim>::setup_dofs();                            \
   template void ContactProblem<dim>::setup_base_constraints();                \

@@ -4,32 +4,43 @@
 #include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/model/contact_step.h>
 
+#include <vector>
+
 namespace hemicontact
 {
-  template <int dim>
-  void
-  ContactProblem<dim>::count_branches(StepStatistics &stats) const
+  namespace
   {
-    // one count per branch, summed over the ranks
-    auto count = [&](const auto branch, const auto node_branch) {
-      unsigned int n = 0;
-      for (const ContactNode<dim> &node : contact_nodes)
-        if (node.locally_owned && node_branch(node) == branch)
+    /** The branches of the owned nodes of @p contact_nodes, summed over the
+     *  ranks, into @p stats. */
+    template <int dim>
+    void
+    count_branches(const std::vector<ContactNode<dim>> &contact_nodes,
+                   MPI_Comm mpi_communicator, StepStatistics &stats)
+    {
+      // one count per branch, summed over the ranks
+      std::vector<unsigned int> counts(5, 0);
+      const auto count = [&](const bool condition, unsigned int &n) {
+        if (condition)
           ++n;
-      return Utilities::MPI::sum(n, mpi_communicator);
-    };
-    const auto normal = [](const ContactNode<dim> &node) {
-      return node.normal_branch;
-    };
-    const auto tangential = [](const ContactNode<dim> &node) {
-      return node.tangential_branch;
-    };
-    stats.n_separating   = count(NormalBranch::separating, normal);
-    stats.n_normal_stick = count(NormalBranch::stick, normal);
-    stats.n_damped       = count(NormalBranch::damped, normal);
-    stats.n_stick        = count(TangentialBranch::stick, tangential);
-    stats.n_slip         = count(TangentialBranch::slip, tangential);
-  }
+      };
+      for (const ContactNode<dim> &node : contact_nodes)
+        if (node.locally_owned)
+          {
+            count(node.normal_branch == NormalBranch::separating, counts[0]);
+            count(node.normal_branch == NormalBranch::stick, counts[1]);
+            count(node.normal_branch == NormalBranch::damped, counts[2]);
+            count(node.tangential_branch == TangentialBranch::stick, counts[3]);
+            count(node.tangential_branch == TangentialBranch::slip, counts[4]);
+          }
+      for (unsigned int &n : counts)
+        n = Utilities::MPI::sum(n, mpi_communicator);
+      stats.n_separating   = counts[0];
+      stats.n_normal_stick = counts[1];
+      stats.n_damped       = counts[2];
+      stats.n_stick        = counts[3];
+      stats.n_slip         = counts[4];
+    }
+  } // namespace
 
   template <int dim>
   StepStatistics
@@ -60,12 +71,10 @@ namespace hemicontact
     stats.linear_iterations      = report.linear_iterations;
     stats.line_search_reductions = report.line_search_reductions;
     stats.residual               = report.relative_residual;
-    count_branches(stats);
+    count_branches(contact_nodes, mpi_communicator, stats);
     return stats;
   }
 
-  template void ContactProblem<2>::count_branches(StepStatistics &) const;
-  template void ContactProblem<3>::count_branches(StepStatistics &) const;
   template StepStatistics ContactProblem<2>::solve_step();
   template StepStatistics ContactProblem<3>::solve_step();
 } // namespace hemicontact

@@ -7,6 +7,7 @@
 
 #include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/verification/convergence_study.h>
+#include <hemicontact/output/output_file.h>
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/verification/manufactured_smoothness.h>
 #include <hemicontact/verification/manufactured_solution.h>

@@ -25,6 +25,14 @@ namespace hemicontact
   ActiveSetNewton::Settings
   newton_settings(const Parameters &parameters);
 
+  /**
+   * @p v with the entries @p constraints constrains (hanging nodes,
+   * Gamma_1) zeroed.
+   */
+  TrilinosWrappers::MPI::Vector
+  without_constrained(const TrilinosWrappers::MPI::Vector &v,
+                      const AffineConstraints<double> &    constraints);
+
   /** The pieces of a mesh that one time step reads, and the solvers it uses. */
   template <int dim>
   struct StepSystem
@@ -81,10 +89,6 @@ namespace hemicontact
     nodal_energy(const VectorType &w) const override;
 
   private:
-    /** v with its constrained entries (hanging nodes, Gamma_1) zeroed. */
-    VectorType
-    without_constrained(const VectorType &v) const;
-
     StepSystem<dim>                  system;
     const LinearSolverType           solver_type;
     const double                     linear_relative_tolerance;

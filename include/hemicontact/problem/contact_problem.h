@@ -2,7 +2,6 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/index_set.h>
-#include <deal.II/base/mpi_remote_point_evaluation.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_values.h>
@@ -11,24 +10,19 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
-#include <deal.II/numerics/data_out.h>
 
-#include <hemicontact/output/background_writer.h>
 #include <hemicontact/laws/contact_laws.h>
 #include <hemicontact/model/contact_node.h>
 #include <hemicontact/mesh/discretization.h>
 #include <hemicontact/model/energy_balance.h>
 #include <hemicontact/model/kelvin_voigt.h>
 #include <hemicontact/solver/linear_solver.h>
-#include <hemicontact/output/output_file.h>
 #include <hemicontact/laws/normal_law.h>
 #include <hemicontact/input/parameters.h>
 #include <hemicontact/model/problem_data.h>
 #include <hemicontact/solver/step_preconditioner.h>
 #include <hemicontact/solver/step_statistics.h>
 
-#include <chrono>
-#include <fstream>
 #include <memory>
 #include <string>
 #include <utility>
@@ -37,6 +31,11 @@
 namespace hemicontact
 {
   using namespace dealii;
+
+  template <int dim>
+  class RunOutput;
+  template <int dim>
+  class Checkpointer;
 
   /**
    * The dynamic contact problem of Han & Han (2019), Problem 4.4: a
@@ -48,9 +47,14 @@ namespace hemicontact
    * primal-dual active-set method (doc/theory.md section 3).
    *
    * The member functions are spread over source/problem/: setup.cc (mesh,
-   * dofs, constraints, contact nodes), assembly.cc (matrices and loads),
-   * step.cc (one step, by ActiveSetNewton on a ContactStep), diagnostics.cc (energies, convexity), output.cc
-   * and run.cc (the time loop).
+   * dofs, constraints, contact nodes, initial state), resume.cc (the same
+   * from a checkpoint), assembly.cc (matrices and loads), step.cc (one
+   * step, by ActiveSetNewton on a ContactStep), diagnostics.cc (energies,
+   * convexity), stability.cc (the time step limit), adaptivity.cc and
+   * residual_indicator.cc (indicators, the new mesh), state_projection.cc
+   * (the state moved to it by projection) and run.cc (run() and the time
+   * loop). The run's output and checkpoints are a RunOutput and a
+   * Checkpointer (source/output/).
    */
   template <int dim>
   class ContactProblem
@@ -74,6 +78,13 @@ namespace hemicontact
     void
     setup();
 
+    /**
+     * setup() from the newest usable checkpoint that @p checkpointer finds
+     * instead of the initial data.
+     */
+    void
+    resume(Checkpointer<dim> &checkpointer);
+
     /** Advance one time step; throws SolverFailure if Newton fails. */
     StepStatistics
     advance();
@@ -90,10 +101,12 @@ namespace hemicontact
     /**
      * Call adapt_mesh() if it is due after the step just taken: every
      * 'adaptivity/interval' steps (never if 0), and not after the last
-     * step. Returns whether the mesh was adapted.
+     * step. With @p output, its solution write in progress finishes before
+     * the mesh changes and its probes follow the new mesh. Returns whether
+     * the mesh was adapted.
      */
     bool
-    adapt_mesh_if_due(StepStatistics &stats);
+    adapt_mesh_if_due(StepStatistics &stats, RunOutput<dim> *output = nullptr);
 
     /** The cell-wise refinement indicator of the current state. */
     Vector<float>
@@ -142,70 +155,98 @@ namespace hemicontact
     {
       return displacement;
     }
-    const std::vector<ContactNode<dim>> &
-    get_contact_nodes() const
-    {
-      return contact_nodes;
-    }
-    const EnergyBalance &
-    get_energy() const
-    {
-      return energy;
-    }
-    double
-    get_time() const
-    {
-      return step_number * time_step;
-    }
     double
     get_time_step() const
     {
       return time_step;
     }
-    unsigned int
-    get_step_number() const
+
+    /** The last check of the convexity of the step energy (diagnostics.cc). */
+    struct ConvexityCheck
     {
-      return step_number;
-    }
-    /** Nodal traction -(K w - b)_i / m_i at owned contact node dofs. */
-    const TrilinosWrappers::MPI::Vector &
-    get_contact_traction() const
-    {
-      return contact_traction;
-    }
+      /**
+       * Estimated smallest eigenvalue of K0 against sum m_i nu nu (0 if not
+       * computed); with a friction law that has alpha_tau > 0, against
+       * sum m_i (alpha_nu nu nu + alpha_tau (I - nu nu)), so that each step
+       * is strongly convex iff it exceeds 1.
+       */
+      double bound = 0;
+      /** Whether the bound includes the friction law's alpha_tau. */
+      bool with_friction = false;
+      /** The largest alpha_tau over the contact nodes at the check. */
+      double largest_alpha_tau = 0;
+      /** alpha_tau of each contact node that the check covers. */
+      std::vector<double> checked_alpha_tau;
+      /** Whether the check found the steps strongly convex. */
+      bool steps_convex = true;
+    };
+
     /**
-     * Estimated smallest eigenvalue of K0 against sum m_i nu nu (0 if not
-     * computed); with a friction law that has alpha_tau > 0, against
-     * sum m_i (alpha_nu nu nu + alpha_tau (I - nu nu)), so that each step is
-     * strongly convex iff it exceeds 1.
+     * A read-only view of the discretization and the state, for the run's
+     * output, its checkpoints and tests.
      */
-    double
-    get_convexity_bound() const
+    struct State
     {
-      return convexity_bound;
-    }
-    /** Whether the convexity bound includes the friction law's alpha_tau. */
-    bool
-    convexity_includes_friction() const
+      const Discretization<dim> &          discretization;
+      const DoFHandler<dim> &              dof_handler;
+      const IndexSet &                     locally_owned_dofs;
+      const IndexSet &                     locally_relevant_dofs;
+      const KelvinVoigtMaterial<dim> &     material;
+      const NormalLaw &                    normal_law;
+      const FrictionLaw &                  friction_law;
+      const TrilinosWrappers::SparseMatrix &step_matrix; ///< K0 = rho/k M + A
+      /** Hanging nodes and u = 0 on Gamma_1. */
+      const AffineConstraints<double> &    base_constraints;
+      const TrilinosWrappers::MPI::Vector &velocity;     ///< w_n
+      const TrilinosWrappers::MPI::Vector &old_velocity; ///< w_{n-1}
+      const TrilinosWrappers::MPI::Vector &displacement; ///< u_n
+      /** b = rho/k M w_{n-1} - B u_n + F_n of the last step. */
+      const TrilinosWrappers::MPI::Vector &step_rhs;
+      /** Nodal traction -(K w - b)_i / m_i at owned contact node dofs. */
+      const TrilinosWrappers::MPI::Vector &contact_traction;
+      const std::vector<ContactNode<dim>> &contact_nodes;
+      const StepPreconditioner<dim> &      preconditioner;
+      const EnergyBalance &                energy;
+      const ConvexityCheck &               convexity;
+      double                               time; ///< t_n = n k
+      double                               time_step;
+      /** Length of the last converged step (0: none yet). */
+      double       last_step_length;
+      unsigned int step_number;
+      unsigned int n_steps;
+    };
+
+    State
+    state() const
     {
-      return convexity_with_friction;
-    }
-    const NormalLaw &
-    get_normal_law() const
-    {
-      return *law;
-    }
-    const FrictionLaw &
-    get_friction_law() const
-    {
-      return *friction;
+      return {discretization,
+              dof_handler,
+              locally_owned_dofs,
+              locally_relevant_dofs,
+              material,
+              *law,
+              *friction,
+              step_matrix,
+              base_constraints,
+              velocity,
+              old_velocity,
+              displacement,
+              step_rhs,
+              contact_traction,
+              contact_nodes,
+              preconditioner,
+              energy,
+              convexity,
+              step_number * time_step,
+              time_step,
+              last_step_length,
+              step_number,
+              n_steps};
     }
     /** @} */
 
   private:
     /** @name setup.cc */
-    void
-    make_mesh();
     /** Dofs, constraints, constant matrices, contact nodes, AMG modes. */
     void
     setup_on_current_mesh();
@@ -246,8 +287,6 @@ namespace hemicontact
     /** Solve the current step by ActiveSetNewton on a ContactStep. */
     StepStatistics
     solve_step();
-    void
-    count_branches(StepStatistics &stats) const;
 
     /** @name diagnostics.cc */
     void
@@ -270,8 +309,6 @@ namespace hemicontact
      */
     void
     recheck_convexity_if_bounds_grew(const double t);
-    TrilinosWrappers::MPI::Vector
-    without_constrained(const TrilinosWrappers::MPI::Vector &v) const;
 
     /** @name stability.cc */
     /**
@@ -291,13 +328,6 @@ namespace hemicontact
 
     /** @name state_projection.cc */
     /**
-     * For 'adaptivity/state transfer = projection': register with the
-     * mesh, before execute_coarsening_and_refinement(), the functionals
-     * rho M w and B u_next (tested with the parent's shape functions) of
-     * every family of cells about to be coarsened. @p w and @p u_next are
-     * ghosted and must live until project_transferred_state().
-     */
-    /**
      * The local vectors rho M_K w and B_K u_next of @p cell (reinits
      * @p fe_values there), from cell_matrices().
      */
@@ -308,6 +338,13 @@ namespace hemicontact
                      const TrilinosWrappers::MPI::Vector &          u_next,
                      Vector<double> &                               m_w,
                      Vector<double> &                               b_u) const;
+    /**
+     * For 'adaptivity/state transfer = projection': register with the
+     * mesh, before execute_coarsening_and_refinement(), the functionals
+     * rho M w and B u_next (tested with the parent's shape functions) of
+     * every family of cells about to be coarsened. @p w and @p u_next are
+     * ghosted and must live until project_transferred_state().
+     */
     unsigned int
     attach_coarsened_functionals(const TrilinosWrappers::MPI::Vector &w,
                                  const TrilinosWrappers::MPI::Vector &u_next);
@@ -324,58 +361,13 @@ namespace hemicontact
                               TrilinosWrappers::MPI::Vector &w,
                               TrilinosWrappers::MPI::Vector &u_next);
 
-    /** @name output.cc */
-    /**
-     * Start writing the solution of the current step ('output/format') on
-     * a background thread while the run goes on: VTU files, or the data of
-     * an HDF5 file, which finish_solution_output() writes (collectively).
-     */
-    void
-    write_solution();
-    /**
-     * Wait for the solution write in progress, check it on every rank,
-     * write the HDF5 file and replace the series file (solution.pvd or
-     * solution.xdmf) atomically.
-     * Called before the next write, before the mesh changes or a checkpoint
-     * saves the series, and at the end of a run.
-     */
-    void
-    finish_solution_output();
-    /**
-     * Create the output directory, lock it, set an earlier run's files
-     * aside (or on resume cut the tables back to the checkpoint) and open
-     * steps.csv and probes.csv.
-     */
-    void
-    open_tables();
-    void
-    setup_probes();
-    void
-    write_step_row(const StepStatistics &stats);
-    void
-    write_probes();
-    void
-    print_step(const StepStatistics &stats) const;
-
-    /**
-     * Refuse (OutputError on every rank, naming the directory and the
-     * space) a checkpoint the file system has no room for: an estimate of
-     * its size from the mesh against the free space.
-     */
-    void
-    require_checkpoint_space() const;
-    /**
-     * After an input or output error: wait for the solution write and
-     * move an earlier run's files back if this run has not completed a
-     * step (EarlierOutput).
-     */
-    void
-    restore_earlier_output();
-
     /** @name run.cc */
-    /** run() without the restoring of an earlier run's files. */
+    /**
+     * The time loop of run(), with its output in @p output and its
+     * checkpoints by @p checkpointer.
+     */
     void
-    run_and_write();
+    time_loop(RunOutput<dim> &output, Checkpointer<dim> &checkpointer);
     /**
      * One interval [start, start + k]: a step of size k, or if Newton
      * fails (and 'time step halvings' allows) two intervals of k/2.
@@ -386,53 +378,6 @@ namespace hemicontact
     /** Change k and what depends on it (step matrix, AMG). */
     void
     set_time_step(const double k);
-
-    /** @name checkpoint.cc */
-    /**
-     * A run not resumed: a new run id and the mesh file's signature (for
-     * its checkpoints); OUTPUT/checkpoint, if it exists, then names this
-     * run, so that a resume takes no checkpoint of an earlier run.
-     */
-    void
-    start_checkpoint_run();
-    /** Write mesh, fields and state to OUTPUT/checkpoint (aside, then renamed). */
-    void
-    write_checkpoint();
-    /** setup() from the newest checkpoint instead of the initial data. */
-    void
-    setup_from_checkpoint();
-    /** Drop the rows after the checkpoint's step from steps.csv, probes.csv. */
-    void
-    continue_tables();
-
-    /** @name performance.cc */
-    /** Totals over the run's steps (for the summary line and performance.csv). */
-    struct RunTotals
-    {
-      unsigned int steps             = 0;
-      unsigned int newton_iterations = 0;
-      unsigned int max_newton        = 0;
-      unsigned int linear_iterations = 0;
-      double       step_wall_seconds = 0; ///< advance() only, no output
-    };
-    void
-    write_performance_summary(const RunTotals &totals);
-
-    /** @name contact_output.cc */
-    /**
-     * Write contact_NNNNN.csv: one row per contact node (all ranks, sorted
-     * by coordinates) with w_nu, w_tau, sigma_nu, sigma_tau, the branches
-     * and the nodal mass m_i.
-     */
-    void
-    write_contact_csv();
-    /**
-     * On the root: the gathered rows (@p width values each) sorted by
-     * coordinates, written atomically; returns the reason of a failure.
-     */
-    std::string
-    write_contact_table(const std::vector<std::vector<double>> &gathered,
-                        const unsigned int                      width) const;
 
     MPI_Comm           mpi_communicator;
     Parameters         parameters;
@@ -468,61 +413,13 @@ namespace hemicontact
     LinearSolver            linear_solver;
     /** Every AMG of the mesh and the preconditioner of the Newton solves. */
     StepPreconditioner<dim> preconditioner;
-    EnergyBalance energy;
-    double        convexity_bound = 0;
-    bool          convexity_with_friction = false;
-    /** The largest alpha_tau over the contact nodes at the last check. */
-    double        largest_alpha_tau = 0;
-    /** alpha_tau of each contact node that the last convexity check covers. */
-    std::vector<double> checked_alpha_tau;
-    /** Whether the last convexity check found the steps strongly convex. */
-    bool steps_convex = true;
+    EnergyBalance  energy;
+    ConvexityCheck convexity;
 
     double       time_step   = 0;
     /** Length of the last converged step (0: none yet). */
     double       last_step_length = 0;
-    /** The run (a resumed run continues its run): checkpoints record it. */
-    std::string run_id;
-    /** file_signature() of the mesh file the run read ("" if none). */
-    std::string mesh_signature;
     unsigned int n_steps     = 0;
     unsigned int step_number = 0;
-
-    /** The series written so far: (time, .pvtu file) for VTU output,
-     *  (time, XDMF grid element) for HDF5 output. */
-    std::vector<std::pair<double, std::string>> pvd_records;
-    /** Wall clock and step number when the time loop started (for the
-     *  time left on the progress line). */
-    std::chrono::steady_clock::time_point loop_start;
-    unsigned int                          loop_start_step = 0;
-    /** Wall seconds of the time loop, with every output (0 until done). */
-    double run_wall_seconds = 0;
-    std::vector<Point<dim>>                     probe_points;
-    Utilities::MPI::RemotePointEvaluation<dim>  probe_cache;
-    std::ofstream                               steps_file;
-    /** Held by the root while the run writes its output directory. */
-    std::unique_ptr<OutputLock>                 output_lock;
-    /** An earlier run's files, until this run completes its first step. */
-    EarlierOutput                               earlier_output;
-    std::ofstream                               probes_file;
-
-    /** What a solution write reads: copies made when the write started. */
-    struct SolutionSnapshot
-    {
-      unsigned int step = 0;
-      double       time = 0;
-      /** The fields (DataOut copies them when they are added; the copies
-       *  need MPI, so they are made before the job starts). */
-      std::unique_ptr<DataOut<dim>> data_out;
-      /** w and u with ghost entries, for the cell stresses. */
-      TrilinosWrappers::MPI::Vector velocity, displacement;
-      /** HDF5 output: the patches' data in the layout of the file. */
-      std::unique_ptr<DataOutBase::DataOutFilter> hdf5_filter;
-    };
-    SolutionSnapshot solution_snapshot;
-    /** The series entry of the write in progress. */
-    std::pair<double, std::string> pending_record;
-    /** Declared last: destroyed (after waiting) before what its job reads. */
-    BackgroundWriter solution_writer;
   };
 } // namespace hemicontact

@@ -1,7 +1,9 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
+#include <hemicontact/output/performance_summary.h>
 #include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/solver/linear_solver.h>
 
 #include <sys/resource.h>
 
@@ -25,26 +27,38 @@ namespace hemicontact
 
   template <int dim>
   void
-  ContactProblem<dim>::write_performance_summary(const RunTotals &totals)
+  write_performance_summary(const ContactProblem<dim> &problem,
+                            const Parameters &         parameters,
+                            const TimerOutput &        timer,
+                            const RunTotals &          totals,
+                            const double               run_wall_seconds,
+                            const unsigned int         solution_writes,
+                            MPI_Comm                   mpi_communicator)
   {
+    const typename ContactProblem<dim>::State s = problem.state();
+    const DoFHandler<dim> &                   dof_handler = s.dof_handler;
+    const Discretization<dim> &discretization = s.discretization;
+    // the linear solver of the run (its parameters; it keeps no state)
+    LinearSolver linear_solver(parameters.linear_solver, mpi_communicator);
     // the reference cost: one solve of the step matrix K0 = rho/k M + A with
     // the same solver, AMG set up afresh, CG from zero to the fixed tolerance
-    const double setup_before = preconditioner.setup_seconds();
-    TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);
-    TrilinosWrappers::MPI::Vector b(step_rhs);
+    const double setup_before = s.preconditioner.setup_seconds();
+    TrilinosWrappers::MPI::Vector x(s.locally_owned_dofs, mpi_communicator);
+    TrilinosWrappers::MPI::Vector b(s.step_rhs);
     if (b.l2_norm() == 0)
       b = 1.;
-    base_constraints.set_zero(b);
+    s.base_constraints.set_zero(b);
     StepPreconditioner<dim> reference(parameters.solver_tuning,
                                       mpi_communicator);
     reference.reinit(dof_handler, *discretization.mapping);
     Timer        solve_timer(mpi_communicator, /*sync_lap_times=*/true);
     unsigned int reference_iterations = 1;
     if (parameters.linear_solver.type == LinearSolverType::direct)
-      linear_solver.solve_direct(step_matrix, x, b);
+      linear_solver.solve_direct(s.step_matrix, x, b);
     else
       reference_iterations =
-        linear_solver.solve(step_matrix, reference.step_amg(step_matrix), x, b);
+        linear_solver.solve(s.step_matrix, reference.step_amg(s.step_matrix),
+                            x, b);
     solve_timer.stop();
     const double reference_total = solve_timer.wall_time();
     const double reference_setup =
@@ -113,12 +127,18 @@ namespace hemicontact
         << "time_energy," << times.at("energy balance") << "\n"
         << "time_output," << times.at("output") << "\n"
         << "run_wall," << run_wall << "\n"
-        << "solution_writes," << pvd_records.size() << "\n"
+        << "solution_writes," << solution_writes << "\n"
         << "peak_memory_bytes," << peak_bytes << "\n"
         << "bytes_per_dof," << peak_bytes / dof_handler.n_dofs() << "\n"
         << "mesh_bytes_max_rank," << mesh_bytes << "\n";
   }
 
-  template void ContactProblem<2>::write_performance_summary(const RunTotals &);
-  template void ContactProblem<3>::write_performance_summary(const RunTotals &);
+#define HEMICONTACT_INSTANTIATE(dim)                                           \
+  template void write_performance_summary<dim>(                               \
+    const ContactProblem<dim> &, const Parameters &, const TimerOutput &,      \
+    const RunTotals &, double, unsigned int, MPI_Comm);
+
+  HEMICONTACT_INSTANTIATE(2)
+  HEMICONTACT_INSTANTIATE(3)
+#undef HEMICONTACT_INSTANTIATE
 } // namespace hemicontact

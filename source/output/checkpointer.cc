@@ -2,6 +2,8 @@
 #include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
 
+#include <hemicontact/output/checkpointer.h>
+#include <hemicontact/output/run_output.h>
 #include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/output/output_file.h>
@@ -14,6 +16,7 @@
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
 
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -29,39 +32,6 @@ namespace hemicontact
   namespace
   {
     namespace fs = std::filesystem;
-
-    /** Everything of a run that is not a finite element field. */
-    struct CheckpointState
-    {
-      unsigned int                                step_number = 0;
-      double                                      time_step   = 0;
-      unsigned int                                n_steps     = 0;
-      std::vector<double>                         energy;
-      std::vector<std::pair<double, std::string>> pvd_records;
-      /** Parameters::problem_definition of the run that wrote it. */
-      std::vector<std::string> problem_definition;
-      /** "name size crc32" of every other file of the checkpoint. */
-      std::vector<std::string> file_signatures;
-      /** The number of MPI ranks that wrote it. */
-      unsigned int n_ranks = 0;
-      /** The length of the last converged step (the extrapolated guess). */
-      double last_step_length = 0;
-      /** The run that wrote it (a resumed run keeps its run's id). */
-      std::string run_id;
-      /** "name size crc32" of the mesh file the run read ("" if none). */
-      std::string mesh_signature;
-      /** The preconditioner's ConstrainedAmgStatus. */
-      unsigned int constrained_amg = 0;
-
-      template <class Archive>
-      void
-      serialize(Archive &ar, const unsigned int)
-      {
-        ar &step_number &time_step &n_steps &energy &pvd_records
-          &problem_definition &file_signatures &n_ranks &last_step_length
-            &run_id &mesh_signature &constrained_amg;
-      }
-    };
 
     /** The number of values of EnergyBalance in a checkpoint. */
     constexpr std::size_t n_energy_values = 9;
@@ -274,23 +244,6 @@ namespace hemicontact
               e.transfer_change};
     }
 
-    EnergyBalance
-    from_vector(const std::vector<double> &v)
-    {
-      EnergyBalance e;
-      AssertDimension(v.size(), n_energy_values); // read_state() checks it
-      e.kinetic               = v[0];
-      e.elastic               = v[1];
-      e.initial_energy        = v[2];
-      e.viscous_dissipation   = v[3];
-      e.friction_dissipation  = v[4];
-      e.damping_dissipation   = v[5];
-      e.external_work         = v[6];
-      e.numerical_dissipation = v[7];
-      e.transfer_change       = v[8];
-      return e;
-    }
-
     /**
      * The step of a file of a checkpoint ("step-" + at least six digits +
      * "." + anything), or -1 for any other name; @p suffix: what follows
@@ -388,26 +341,6 @@ namespace hemicontact
       field.compress(VectorOperation::insert);
     }
 
-    /** The branches of every node of @p nodes from branches_to_field(). */
-    template <int dim>
-    void
-    branches_from_field(const TrilinosWrappers::MPI::Vector &field,
-                        const IndexSet &                     owned,
-                        const IndexSet &                     relevant,
-                        std::vector<ContactNode<dim>> &      nodes)
-    {
-      TrilinosWrappers::MPI::Vector ghosted(owned, relevant,
-                                            field.get_mpi_communicator());
-      ghosted = field;
-      for (ContactNode<dim> &node : nodes)
-        {
-          node.normal_branch =
-            static_cast<NormalBranch>(std::lround(ghosted[node.dofs[0]]));
-          node.tangential_branch =
-            static_cast<TangentialBranch>(std::lround(ghosted[node.dofs[1]]));
-        }
-    }
-
     /**
      * @p nodes with, at the owned ones, the branches whose constrained
      * directions the constrained AMG of @p preconditioner was built for
@@ -478,14 +411,77 @@ namespace hemicontact
       for (const fs::path &f : old)
         fs::remove(f, ec);
     }
+
+    /** Set by SIGTERM or SIGINT; the time loop checks it after every step. */
+    volatile std::sig_atomic_t termination_requested = 0;
+
+    extern "C" void
+    request_termination(int)
+    {
+      termination_requested = 1;
+    }
   } // namespace
 
   template <int dim>
+  Checkpointer<dim>::Checkpointer(const Parameters &parameters,
+                                  MPI_Comm          comm,
+                                  TimerOutput &     timer)
+    : parameters(parameters)
+    , mpi_communicator(comm)
+    , timer(timer)
+  {}
+
+  EnergyBalance
+  CheckpointState::energy_balance() const
+  {
+    const std::vector<double> &v = energy;
+    EnergyBalance e;
+    AssertDimension(v.size(), n_energy_values); // read_state() checks it
+    e.kinetic               = v[0];
+    e.elastic               = v[1];
+    e.initial_energy        = v[2];
+    e.viscous_dissipation   = v[3];
+    e.friction_dissipation  = v[4];
+    e.damping_dissipation   = v[5];
+    e.external_work         = v[6];
+    e.numerical_dissipation = v[7];
+    e.transfer_change       = v[8];
+    return e;
+  }
+
+  template <int dim>
+  bool
+  Checkpointer<dim>::interruption_requested(
+    const unsigned int steps_this_run) const
+  {
+    const CheckpointParameters &checkpoints = parameters.checkpoint;
+    return Utilities::MPI::max(static_cast<int>(termination_requested),
+                               mpi_communicator) > 0 ||
+           (checkpoints.stop_after > 0 &&
+            steps_this_run == checkpoints.stop_after);
+  }
+
+  template <int dim>
+  bool
+  Checkpointer<dim>::due(const unsigned int step,
+                         const bool         interrupted,
+                         const bool         last_step) const
+  {
+    const CheckpointParameters &checkpoints = parameters.checkpoint;
+    const bool                  periodic =
+      (checkpoints.interval > 0 && step % checkpoints.interval == 0) ||
+      (checkpoints.wall_interval > 0 &&
+       Utilities::MPI::max(since_checkpoint.wall_time(), mpi_communicator) >=
+         checkpoints.wall_interval);
+    return periodic || (interrupted && !last_step);
+  }
+
+  template <int dim>
   void
-  ContactProblem<dim>::start_checkpoint_run()
+  Checkpointer<dim>::start(const bool resumed)
   {
     std::string error;
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    if (!resumed && Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
         run_id         = new_run_id();
         mesh_signature = mesh_signature_of(parameters.geometry);
@@ -498,15 +494,25 @@ namespace hemicontact
           error = write_atomically((dir / run_file_name).string(),
                                    run_id + "\n");
       }
-    throw_if_any(error, mpi_communicator);
+    if (!resumed)
+      throw_if_any(error, mpi_communicator);
+    termination_requested = 0;
+    std::signal(SIGTERM, request_termination);
+    std::signal(SIGINT, request_termination);
+    since_checkpoint.reset();
+    since_checkpoint.start();
   }
 
   template <int dim>
   void
-  ContactProblem<dim>::write_checkpoint()
+  Checkpointer<dim>::write(const ContactProblem<dim> &problem,
+                           RunOutput<dim> &           output)
   {
-    finish_solution_output(); // the series it saves lists every write
-    require_checkpoint_space(); // p4est aborts on a failed write
+    output.finish_solution_output(); // the series it saves lists every write
+    const std::vector<SeriesRecord> &series = output.series();
+    require_space(problem, series); // p4est aborts on a failed write
+    const typename ContactProblem<dim>::State s = problem.state();
+    const unsigned int step_number = s.step_number;
     TimerOutput::Scope t(timer, "checkpoint");
     const fs::path     dir  = fs::path(parameters.output.directory) / "checkpoint";
     const fs::path     aside = dir / "writing";
@@ -526,19 +532,21 @@ namespace hemicontact
     // constrained AMG was built for: attached to the p4est mesh, or, on a
     // simplex mesh (rebuilt from the parameters on resume), one file per
     // rank in dof order
-    TrilinosWrappers::MPI::Vector branches(locally_owned_dofs, mpi_communicator);
+    TrilinosWrappers::MPI::Vector branches(s.locally_owned_dofs,
+                                           mpi_communicator);
     TrilinosWrappers::MPI::Vector amg_branches(branches);
-    branches_to_field(contact_nodes, branches);
-    branches_to_field(constrained_amg_branches(contact_nodes, preconditioner),
+    branches_to_field(s.contact_nodes, branches);
+    branches_to_field(constrained_amg_branches(s.contact_nodes,
+                                               s.preconditioner),
                       amg_branches);
     const std::vector<const TrilinosWrappers::MPI::Vector *> owned_fields{
-      &velocity, &displacement, &branches, &old_velocity, &amg_branches};
-    if (discretization.is_simplex())
+      &s.velocity, &s.displacement, &branches, &s.old_velocity, &amg_branches};
+    if (s.discretization.is_simplex())
       throw_if_any(write_rank_fields(
                      aside / (name + ".fields." +
                               std::to_string(Utilities::MPI::this_mpi_process(
                                 mpi_communicator))),
-                     locally_owned_dofs, owned_fields),
+                     s.locally_owned_dofs, owned_fields),
                    mpi_communicator);
     else
       {
@@ -546,17 +554,17 @@ namespace hemicontact
         std::vector<const TrilinosWrappers::MPI::Vector *> fields;
         for (unsigned int i = 0; i < ghosted.size(); ++i)
           {
-            ghosted[i].reinit(locally_owned_dofs, locally_relevant_dofs,
+            ghosted[i].reinit(s.locally_owned_dofs, s.locally_relevant_dofs,
                               mpi_communicator);
             ghosted[i] = *owned_fields[i];
             fields.push_back(&ghosted[i]);
           }
         parallel::distributed::SolutionTransfer<dim,
                                                 TrilinosWrappers::MPI::Vector>
-          transfer(dof_handler);
+          transfer(s.dof_handler);
         transfer.prepare_for_serialization(fields);
-        dynamic_cast<parallel::distributed::Triangulation<dim> &>(
-          *discretization.triangulation)
+        dynamic_cast<const parallel::distributed::Triangulation<dim> &>(
+          *s.discretization.triangulation)
           .save((aside / (name + ".mesh")).string());
       }
     MPI_Barrier(mpi_communicator);
@@ -568,17 +576,18 @@ namespace hemicontact
           state.file_signatures.push_back(file_signature(entry.path()));
         std::sort(state.file_signatures.begin(), state.file_signatures.end());
         state.step_number = step_number;
-        state.time_step   = time_step;
-        state.n_steps     = n_steps;
-        state.energy      = to_vector(energy);
-        state.pvd_records = pvd_records;
+        state.time_step   = s.time_step;
+        state.n_steps     = s.n_steps;
+        state.energy      = to_vector(s.energy);
+        for (const SeriesRecord &record : series)
+          state.pvd_records.push_back(record.stored());
         state.problem_definition = parameters.problem_definition;
         state.n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
-        state.last_step_length = last_step_length;
+        state.last_step_length = s.last_step_length;
         state.run_id           = run_id;
         state.mesh_signature   = mesh_signature;
         state.constrained_amg =
-          static_cast<unsigned int>(preconditioner.constrained_amg_status());
+          static_cast<unsigned int>(s.preconditioner.constrained_amg_status());
         {
           std::ofstream out(aside / (name + ".state"), std::ios::binary);
           out << state_text(state);
@@ -596,13 +605,63 @@ namespace hemicontact
         keep_last_two_checkpoints(dir, run_id, step_number);
       }
     MPI_Barrier(mpi_communicator);
+    since_checkpoint.reset();
+    since_checkpoint.start();
   }
 
   template <int dim>
   void
-  ContactProblem<dim>::setup_from_checkpoint()
+  Checkpointer<dim>::require_space(
+    const ContactProblem<dim> &        problem,
+    const std::vector<SeriesRecord> &series) const
   {
-    TimerOutput::Scope t(timer, "setup");
+    const typename ContactProblem<dim>::State s = problem.state();
+    const Discretization<dim> &discretization = s.discretization;
+    const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+    // w_n, u_n and the branches on every cell (p4est's data file) or at
+    // every dof with its index (the rank files of a simplex mesh), the
+    // cells themselves, and the state with the series and the parameters
+    std::uintmax_t bytes = 16 * 1024;
+    for (const SeriesRecord &record : series)
+      bytes += record.stored().second.size() + 32;
+    for (const std::string &entry : parameters.problem_definition)
+      bytes += entry.size() + 16;
+    if (discretization.is_simplex())
+      bytes += std::uintmax_t(s.dof_handler.n_dofs()) * 4 * sizeof(double) +
+               Utilities::MPI::n_mpi_processes(mpi_communicator) * 8;
+    else
+      bytes += std::uintmax_t(
+                 discretization.triangulation->n_global_active_cells()) *
+               (3 * discretization.fe->n_dofs_per_cell() * sizeof(double) +
+                64);
+    std::string error;
+    if (root)
+      {
+        const fs::path  dir = fs::path(parameters.output.directory) /
+                             "checkpoint";
+        std::error_code ec;
+        // a checkpoint write cut short is deleted before the next one
+        for (const auto &entry : fs::directory_iterator(dir / "writing", ec))
+          {
+            const std::uintmax_t size = fs::file_size(entry.path(), ec);
+            bytes -= std::min(bytes, ec ? 0 : size);
+          }
+        error = free_space_shortfall(
+          fs::is_directory(dir, ec) ? dir.string() : parameters.output.directory,
+          bytes);
+        if (!error.empty())
+          error = "cannot write the checkpoint of step " +
+                  std::to_string(s.step_number) + " in '" + dir.string() +
+                  "': " + error + "; nothing of it was written, the earlier "
+                  "checkpoints are unchanged.";
+      }
+    throw_if_any(error, mpi_communicator);
+  }
+
+  template <int dim>
+  const CheckpointState &
+  Checkpointer<dim>::read(const unsigned int n_steps, const double time_step)
+  {
     const fs::path     dir = fs::path(parameters.output.directory) / "checkpoint";
     const std::vector<unsigned int> steps = complete_checkpoints(dir);
     require(!steps.empty(),
@@ -612,9 +671,8 @@ namespace hemicontact
     // the newest checkpoint of the run whose output the directory holds
     // with all its files as written (checked on the root, which reads them
     // anyway); any other is reported and skipped
-    int             chosen = -1;
-    std::string     damage;
-    CheckpointState state;
+    int         chosen = -1;
+    std::string damage;
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
         const std::string run = recorded_run(dir);
@@ -650,7 +708,7 @@ namespace hemicontact
     require(chosen >= 0, "checkpoint: no checkpoint in '" + dir.string() +
                            "' can be resumed from: " + damage + ".");
     state = Utilities::MPI::broadcast(mpi_communicator, state, 0);
-    const std::string name = checkpoint_name(steps[chosen]);
+    name  = checkpoint_name(steps[chosen]);
     require(std::abs(state.time_step - time_step) <= 1e-12 * time_step &&
               state.n_steps == n_steps,
             "checkpoint: the checkpoint was written with another time step or "
@@ -706,13 +764,16 @@ namespace hemicontact
                 "'). A resume continues the same problem; restore the mesh "
                 "file, or start a new run without --resume.");
     }
-    run_id           = state.run_id;
-    mesh_signature   = state.mesh_signature;
-    last_step_length = state.last_step_length;
+    run_id         = state.run_id;
+    mesh_signature = state.mesh_signature;
+    return state;
+  }
 
-    TrilinosWrappers::MPI::Vector                branches, amg_branches;
-    std::vector<TrilinosWrappers::MPI::Vector *> fields{
-      &velocity, &displacement, &branches, &old_velocity, &amg_branches};
+  template <int dim>
+  void
+  Checkpointer<dim>::load_mesh(Discretization<dim> &discretization) const
+  {
+    const fs::path dir = fs::path(parameters.output.directory) / "checkpoint";
     if (discretization.is_simplex())
       {
         // the same mesh and partition as the run that wrote it, hence only
@@ -727,15 +788,32 @@ namespace hemicontact
                   "wrote its checkpoint. Resume with mpirun -np " +
                   std::to_string(state.n_ranks) + ".");
         discretization.make_mesh(parameters.geometry);
-        discretization.check_boundary_ids(parameters.boundary);
-        setup_on_current_mesh();
-        branches.reinit(locally_owned_dofs, mpi_communicator);
-        amg_branches.reinit(locally_owned_dofs, mpi_communicator);
+      }
+    else
+      {
+        // the coarse mesh, then the refined one
+        discretization.make_mesh(parameters.geometry, /*refine=*/false);
+        dynamic_cast<parallel::distributed::Triangulation<dim> &>(
+          *discretization.triangulation)
+          .load((dir / (name + ".mesh")).string());
+      }
+  }
+
+  template <int dim>
+  void
+  Checkpointer<dim>::load_fields(
+    const DoFHandler<dim> &                             dof_handler,
+    const IndexSet &                                    owned,
+    const std::vector<TrilinosWrappers::MPI::Vector *> &fields)
+  {
+    const fs::path dir = fs::path(parameters.output.directory) / "checkpoint";
+    if (dof_handler.get_fe().reference_cell().is_simplex())
+      {
         const std::string why = read_rank_fields(
           dir / (name + ".fields." +
                  std::to_string(
                    Utilities::MPI::this_mpi_process(mpi_communicator))),
-          locally_owned_dofs, fields);
+          owned, fields);
         for (TrilinosWrappers::MPI::Vector *v : fields)
           v->compress(VectorOperation::insert);
         require(Utilities::MPI::min(why.empty() ? 1 : 0, mpi_communicator) == 1,
@@ -747,66 +825,24 @@ namespace hemicontact
       }
     else
       {
-        // the coarse mesh, then the refined one with its fields
-        discretization.make_mesh(parameters.geometry, /*refine=*/false);
-        dynamic_cast<parallel::distributed::Triangulation<dim> &>(
-          *discretization.triangulation)
-          .load((dir / (name + ".mesh")).string());
-        discretization.check_boundary_ids(parameters.boundary);
-        setup_on_current_mesh();
-        branches.reinit(locally_owned_dofs, mpi_communicator);
-        amg_branches.reinit(locally_owned_dofs, mpi_communicator);
         parallel::distributed::SolutionTransfer<dim,
                                                 TrilinosWrappers::MPI::Vector>
           transfer(dof_handler);
-        transfer.deserialize(fields);
+        std::vector<TrilinosWrappers::MPI::Vector *> targets(fields);
+        transfer.deserialize(targets);
       }
-    branches_from_field(branches, locally_owned_dofs, locally_relevant_dofs,
-                        contact_nodes);
-
-    step_number = state.step_number;
-    energy      = from_vector(state.energy);
-    pvd_records = state.pvd_records;
-    update_friction_bounds(get_time());
-    check_time_step_stability();
-    check_convexity();
-
-    // the preconditioner as the interrupted run left it (after the checks
-    // above, which build AMGs of their own, as at the run's start)
-    std::vector<ContactNode<dim>> amg_nodes(contact_nodes);
-    branches_from_field(amg_branches, locally_owned_dofs, locally_relevant_dofs,
-                        amg_nodes);
-    ProjectedOperator<dim> op(step_matrix, locally_owned_dofs);
-    for (const ContactNode<dim> &node : amg_nodes)
-      if (node.locally_owned)
-        op.add_node(node.dofs, nodal::free_projector(node), Tensor<2, dim>());
-    preconditioner.restore(
-      op, static_cast<ConstrainedAmgStatus>(state.constrained_amg));
   }
 
   template <int dim>
-  void
-  ContactProblem<dim>::continue_tables()
+  std::vector<SeriesRecord>
+  Checkpointer<dim>::series() const
   {
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
-      return;
-    const fs::path dir = parameters.output.directory;
-    for (const char *table : {"steps.csv", "probes.csv"})
-      {
-        const std::string warning =
-          truncate_table((dir / table).string(), step_number);
-        if (!warning.empty())
-          std::cerr << "hemicontact: warning: " << warning << std::endl;
-      }
+    std::vector<SeriesRecord> records;
+    for (const auto &entry : state.pvd_records)
+      records.push_back(SeriesRecord::from_stored(entry));
+    return records;
   }
 
-#define HEMICONTACT_INSTANTIATE(dim)                                           \
-  template void ContactProblem<dim>::start_checkpoint_run();                  \
-  template void ContactProblem<dim>::write_checkpoint();                      \
-  template void ContactProblem<dim>::setup_from_checkpoint();                 \
-  template void ContactProblem<dim>::continue_tables();
-
-  HEMICONTACT_INSTANTIATE(2)
-  HEMICONTACT_INSTANTIATE(3)
-#undef HEMICONTACT_INSTANTIATE
+  template class Checkpointer<2>;
+  template class Checkpointer<3>;
 } // namespace hemicontact

@@ -1,0 +1,56 @@
+#pragma once
+
+#include <deal.II/base/timer.h>
+
+#include <hemicontact/solver/step_statistics.h>
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <string>
+
+namespace hemicontact
+{
+  using namespace dealii;
+
+  template <int dim>
+  class ContactProblem;
+  struct Parameters;
+
+  /** Totals over the run's steps (for the summary line and performance.csv). */
+  struct RunTotals
+  {
+    unsigned int steps             = 0;
+    unsigned int newton_iterations = 0;
+    unsigned int max_newton        = 0;
+    unsigned int linear_iterations = 0;
+    double       step_wall_seconds = 0; ///< advance() only, no output
+
+    /** Count the step of @p stats. */
+    void
+    add(const StepStatistics &stats)
+    {
+      ++steps;
+      newton_iterations += stats.newton_iterations;
+      max_newton = std::max(max_newton, stats.newton_iterations);
+      linear_iterations += stats.linear_iterations;
+      step_wall_seconds += stats.wall_seconds;
+    }
+  };
+
+  /**
+   * Write OUTPUT/performance.csv (doc/outputs.md): the run's costs by
+   * @p timer's sections against a reference solve of the step matrix of
+   * @p problem, memory, @p run_wall_seconds (the time loop with every
+   * output) and the number of solution writes. Collective.
+   */
+  template <int dim>
+  void
+  write_performance_summary(const ContactProblem<dim> &problem,
+                            const Parameters &         parameters,
+                            const TimerOutput &        timer,
+                            const RunTotals &          totals,
+                            double                     run_wall_seconds,
+                            unsigned int               solution_writes,
+                            MPI_Comm                   mpi_communicator);
+} // namespace hemicontact
