@@ -198,21 +198,21 @@ namespace
 
   template <int dim>
   void
-  test(const std::string &cell_type, const std::string &stem)
+  test(const CellType cell_type, const std::string &stem)
   {
     GeometryParameters geometry;
-    geometry.mesh_type          = "rectangle";
+    geometry.mesh_type          = MeshType::rectangle;
     geometry.cell_type          = cell_type;
     geometry.lower_left         = std::vector<double>(dim, 0.);
     geometry.upper_right        = std::vector<double>(dim, 1.);
     geometry.upper_right[0]     = 2;
     geometry.subdivisions       = std::vector<unsigned int>(dim, 2);
     geometry.subdivisions[0]    = 4;
-    geometry.global_refinements = cell_type == "simplex" ? 0 : 2;
+    geometry.global_refinements = cell_type == CellType::simplex ? 0 : 2;
     Discretization<dim> discretization(geometry, MPI_COMM_WORLD);
     discretization.make_mesh(geometry);
     Triangulation<dim> &tria = *discretization.triangulation;
-    if (cell_type == "hypercube")
+    if (cell_type == CellType::hypercube)
       {
         // hanging nodes: the cells left of x = 0.6 once more
         for (const auto &cell : tria.active_cell_iterators())
@@ -245,7 +245,7 @@ namespace
       {"displacement", &vectors[1]},
       {"contact_traction", &traction}};
 
-    out() << dim << "D " << cell_type << ":\n";
+    out() << dim << "D " << (cell_type == CellType::simplex ? "simplex" : "hypercube") << ":\n";
     NodalHdf5Writer<dim> writer(".", stem, MPI_COMM_WORLD);
     for (unsigned int step = 0; step < 3; ++step)
       writer.write(dof_handler, fields, step, 0.1 * step, "displacement");
@@ -274,7 +274,7 @@ namespace
 
     // the first nodes and cells, the same on any number of ranks where the
     // numbering of the degrees of freedom is (p4est)
-    if (cell_type == "hypercube")
+    if (cell_type == CellType::hypercube)
       {
         HDF5::File file(writer.file_name(0), HDF5::File::FileAccessMode::open,
                         MPI_COMM_WORLD);
@@ -298,6 +298,6 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  test<2>("hypercube", "quad");
-  test<3>("simplex", "tet");
+  test<2>(CellType::hypercube, "quad");
+  test<3>(CellType::simplex, "tet");
 }

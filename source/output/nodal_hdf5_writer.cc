@@ -14,6 +14,9 @@
 #include <iomanip>
 #include <map>
 #include <sstream>
+#include <iterator>
+#include <fstream>
+#include <regex>
 
 namespace hemicontact
 {
@@ -109,6 +112,39 @@ namespace hemicontact
   }
 
 
+
+  template <int dim>
+  void
+  NodalHdf5Writer<dim>::read_collection()
+  {
+    // the collection as xdmf_content() writes it: one grid a step, whose
+    // first data item names the step's file STEM_NNNNN.h5
+    entries.clear();
+    std::ifstream file(directory + "/" + xdmf_file_name());
+    if (!file)
+      return;
+    const std::string text((std::istreambuf_iterator<char>(file)),
+                           std::istreambuf_iterator<char>());
+    const std::string begin =
+      "      <Grid Name=\"" + stem + "\" GridType=\"Uniform\">";
+    const std::string end = "      </Grid>\n";
+    const std::regex  time("<Time Value=\"([^\"]+)\"");
+    const std::regex  step(stem + "_([0-9]+)\\.h5");
+    for (std::size_t start = text.find(begin); start != std::string::npos;
+         start = text.find(begin, start))
+      {
+        const std::size_t stop = text.find(end, start);
+        if (stop == std::string::npos)
+          break;
+        const std::string grid = text.substr(start, stop + end.size() - start);
+        std::smatch       t, s;
+        if (std::regex_search(grid, t, time) &&
+            std::regex_search(grid, s, step))
+          entries.push_back({static_cast<unsigned int>(std::stoul(s[1])),
+                             std::stod(t[1]), grid});
+        start = stop;
+      }
+  }
 
   template <int dim>
   std::string

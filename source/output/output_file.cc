@@ -82,7 +82,8 @@ namespace hemicontact
     is_run_file(const std::string &name)
     {
       static const std::regex pattern(
-        "((steps|probes|performance)\\.csv|solution\\.(pvd|xdmf)|"
+        "((steps|probes|performance)\\.csv|(solution|nodal)\\.(pvd|xdmf)|"
+        "nodal_[0-9]+\\.h5|"
         "solution_[0-9]+(\\.[0-9]+)?\\.(vtu|pvtu|h5)|contact_[0-9]+\\.csv)"
         "(\\.tmp)?");
       return std::regex_match(name, pattern);
@@ -157,7 +158,8 @@ namespace hemicontact
         "; rename or remove it, or set another 'output/directory'.";
       for (const char *name :
            {"steps.csv", "probes.csv", "performance.csv", "solution.pvd",
-            "solution.xdmf", "convergence.csv", ".hemicontact.lock"})
+            "solution.xdmf", "nodal.xdmf", "convergence.csv",
+            ".hemicontact.lock"})
         {
           const fs::file_status s = fs::status(directory / name, ec);
           if (fs::exists(s) && !fs::is_regular_file(s))

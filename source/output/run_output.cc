@@ -82,7 +82,11 @@ namespace hemicontact
     , mpi_communicator(comm)
     , timer(timer)
     , pcout(pcout)
-  {}
+  {
+    if (parameters.output.precision == OutputPrecision::double_precision)
+      nodal_writer = std::make_unique<NodalHdf5Writer<dim>>(
+        parameters.output.directory, "nodal", comm);
+  }
 
   template <int dim>
   void
@@ -184,6 +188,13 @@ namespace hemicontact
               probes_file << ",u_" << xyz[d];
             probes_file << "\n";
           }
+      }
+    // the double-precision collection of a resumed run: its files up to
+    // the checkpoint's step
+    if (nodal_writer && parameters.checkpoint.resume)
+      {
+        nodal_writer->read_collection();
+        nodal_writer->keep_steps_up_to(problem.state().step_number);
       }
   }
 

@@ -69,6 +69,17 @@ namespace hemicontact
     TimerOutput::Scope t(timer, "output");
     write_contact_table(problem, parameters.output.directory,
                         mpi_communicator);
+    if (nodal_writer)
+      {
+        const typename ContactProblem<dim>::State state = problem.state();
+        nodal_writer->write(state.dof_handler,
+                            {{"velocity", &state.velocity},
+                             {"displacement", &state.displacement},
+                             {"contact_traction", &state.contact_traction}},
+                            state.step_number,
+                            state.time,
+                            "displacement");
+      }
   }
 
   template <int dim>
@@ -324,6 +335,8 @@ namespace hemicontact
   {
     finish_solution_output();
     records.clear();
+    if (nodal_writer)
+      nodal_writer->keep_steps_up_to(0);
   }
 
   template class RunOutput<2>;

@@ -82,6 +82,13 @@ namespace hemicontact
     void
     keep_steps_up_to(unsigned int step);
 
+    /**
+     * Take the files listed by the XDMF collection in the directory (a
+     * resumed run continues it); nothing if there is none.
+     */
+    void
+    read_collection();
+
     /** The XDMF collection as write() writes it. */
     std::string
     xdmf_content() const;

@@ -9,6 +9,7 @@
 
 #include <hemicontact/input/parameters.h>
 #include <hemicontact/output/background_writer.h>
+#include <hemicontact/output/nodal_hdf5_writer.h>
 #include <hemicontact/output/output_file.h>
 #include <hemicontact/output/performance_summary.h>
 #include <hemicontact/output/series_record.h>
@@ -159,6 +160,8 @@ namespace hemicontact
     std::unique_ptr<OutputLock> output_lock;
     /** An earlier run's files, until this run completes its first step. */
     EarlierOutput earlier_output;
+    /** The nodal fields in double precision ('output/precision = double'). */
+    std::unique_ptr<NodalHdf5Writer<dim>> nodal_writer;
 
     /** What a solution write reads: copies made when the write started. */
     struct SolutionSnapshot
