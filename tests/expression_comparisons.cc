@@ -1,9 +1,8 @@
 // The comparisons < > <= >= == !=, the logical && || and c ? a : b of
-// Expression (the grammar of the friction bound and the manufactured
-// solution) give the values muparser gives for the same text (the grammar
-// of the other data entries), at points on both sides of each switch and
-// on it: the same precedence, 1 for true and 0 for false. A '?' without
-// its ':' is refused.
+// Expression (the grammar of every expression entry, doc/parameters.md)
+// give the values muparser gives for the same text, at points on both
+// sides of each switch and on it: the same precedence, 1 for true and 0 for
+// false. A '?' without its ':' is refused.
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
 

@@ -89,7 +89,7 @@ main(int argc, char **argv)
            "mv*V/H + Fb; -a/2", "V*(1-y); 0");
 
   // the same with the contact traction given as plain numbers (constant
-  // data take the Functions::ConstantFunction path, not muparser)
+  // data take the Functions::ConstantFunction path, not an expression)
   check<2>("slip, numeric contact traction", "rho/k*V*(1-y/H); 0",
            "0; -" + side + "*mv*V/H",
            num(mu_v * V / H + Fb) + "; " + num(-a / 2), "V*(1-y); 0");

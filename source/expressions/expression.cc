@@ -12,8 +12,9 @@ namespace hemicontact
   {
     /** Recursive-descent parser, loosest first: expr = disjunction [?
      *  expr : expr], disjunction = conjunction {|| conjunction}, conjunction = comparison {&& comparison}, comparison =
-     *  sum [(<|>|<=|>=|==|!=) sum], sum = term {(+|-) term}, term = factor
-     *  {(*|/) factor}, factor = unary [^ factor], unary = [-|+] primary. */
+     *  sum [(<|>|<=|>=|==|!=) sum], sum = term {(+|-) term}, term = unary
+     *  {(*|/) unary}, unary = (-|+) unary | power, power = primary [^
+     *  unary]: as in muparser, -x^2 is -(x^2) and 2^3^2 is 2^9. */
     class Parser
     {
     public:
@@ -29,6 +30,11 @@ namespace hemicontact
       std::unique_ptr<Expression::Node>
       parse()
       {
+        if (text.size() > max_length)
+          throw InputError("cannot parse '" + parameter_name + "' = " +
+                           quoted_expression(text) + ": it is longer than " +
+                           std::to_string(max_length) +
+                           " characters, the most an expression may have.");
         auto node = expression();
         skip_space();
         if (position != text.size())
@@ -107,6 +113,7 @@ namespace hemicontact
         NodePtr condition = disjunction();
         if (!accept('?'))
           return condition;
+        const Nested nested(*this);
         NodePtr if_true = expression();
         if (!accept(':'))
           fail("missing ':' of 'c ? a : b'");
@@ -171,25 +178,16 @@ namespace hemicontact
       NodePtr
       term()
       {
-        NodePtr left = factor();
+        NodePtr left = unary();
         for (;;)
           {
             if (accept('*'))
-              left = binary("*", std::move(left), factor());
+              left = binary("*", std::move(left), unary());
             else if (accept('/'))
-              left = binary("/", std::move(left), factor());
+              left = binary("/", std::move(left), unary());
             else
               return left;
           }
-      }
-
-      NodePtr
-      factor()
-      {
-        NodePtr base = unary();
-        if (accept('^'))
-          return binary("^", std::move(base), factor());
-        return base;
       }
 
       NodePtr
@@ -197,13 +195,50 @@ namespace hemicontact
       {
         if (accept('-'))
           {
+            const Nested nested(*this);
             std::vector<NodePtr> args;
             args.push_back(unary());
             return make(Expression::Node::unary, "-", std::move(args));
           }
-        accept('+');
-        return primary();
+        if (accept('+'))
+          {
+            const Nested nested(*this);
+            return unary();
+          }
+        return power();
       }
+
+      NodePtr
+      power()
+      {
+        NodePtr base = primary();
+        if (!accept('^'))
+          return base;
+        const Nested nested(*this);
+        return binary("^", std::move(base), unary());
+      }
+
+      /** While it lives, one more level of nesting (parentheses, function
+       *  arguments, signs, powers); too deep a nesting is refused rather
+       *  than overflowing the stack. */
+      class Nested
+      {
+      public:
+        explicit Nested(Parser &parser)
+          : parser(parser)
+        {
+          if (++parser.depth > max_depth)
+            parser.fail("nesting deeper than " + std::to_string(max_depth) +
+                        " levels");
+        }
+        ~Nested()
+        {
+          --parser.depth;
+        }
+
+      private:
+        Parser &parser;
+      };
 
       NodePtr
       binary(const std::string &op, NodePtr a, NodePtr b)
@@ -222,6 +257,7 @@ namespace hemicontact
           fail("unexpected end of expression");
         if (accept('('))
           {
+            const Nested nested(*this);
             NodePtr inner = expression();
             if (!accept(')'))
               fail("missing ')'");
@@ -246,7 +282,10 @@ namespace hemicontact
               ++position;
             const std::string name = text.substr(start, position - start);
             if (accept('('))
-              return function(name);
+              {
+                const Nested nested(*this);
+                return name == "if" ? if_function() : function(name);
+              }
             for (unsigned int i = 0; i < variables.size(); ++i)
               if (variables[i] == name)
                 {
@@ -291,6 +330,28 @@ namespace hemicontact
         return node;
       }
 
+      /** if(c, a, b), muparser's spelling of c ? a : b. */
+      NodePtr
+      if_function()
+      {
+        NodePtr condition = expression();
+        if (!accept(','))
+          fail("'if' needs three arguments, if(condition, a, b)");
+        NodePtr if_true = expression();
+        if (!accept(','))
+          fail("'if' needs three arguments, if(condition, a, b)");
+        NodePtr node = operation("?:", std::move(condition), std::move(if_true));
+        node->args.push_back(expression());
+        if (!accept(')'))
+          fail("missing ')' after the arguments of 'if'");
+        return node;
+      }
+
+      /** The longest expression read, in characters. */
+      static constexpr std::size_t max_length = 20000;
+      /** The deepest nesting read. */
+      static constexpr unsigned int max_depth = 500;
+
       inline static const std::vector<std::string> comparison_operators = {
         "<=", ">=", "==", "!=", "<", ">"};
 
@@ -299,6 +360,7 @@ namespace hemicontact
       const std::map<std::string, double> &constants;
       const std::string                    parameter_name;
       std::size_t                          position = 0;
+      unsigned int                         depth    = 0;
     };
   } // namespace
 

@@ -334,10 +334,11 @@ namespace hemicontact
                       "User constants for the expressions below, e.g. "
                       "'g=9.81, v=0.1': finite numbers, each name once and "
                       "none of a variable (x, y, z, t, u_nu) or a function "
-                      "(sin, ...). 'pi' is predefined.");
+                      "(sin, ...). 'pi', '_pi' and '_e' are predefined.");
     const std::string vec_help =
-      " Vector-valued: 'dimension' expressions separated by ';' in x, y, z "
-      "and t. A single number (e.g. 0) means that value in every component.";
+      " Vector-valued: 'dimension' expressions (doc/parameters.md, "
+      "Expressions) separated by ';' in x, y, z and t. A single number (e.g. "
+      "0) means that value in every component.";
     prm.declare_entry("body force", "0", Patterns::Anything(),
                       "Body force density f0(x,t)." + vec_help);
     prm.declare_entry("surface traction", "0", Patterns::Anything(),
@@ -349,13 +350,12 @@ namespace hemicontact
     prm.declare_entry("friction bound", "0", Patterns::Anything(),
                       "Friction bound F_b >= 0 on Gamma_3: the radius of the "
                       "friction disk (the static bound of a weakening law). A "
-                      "scalar expression in x, y, z, t and u_nu, the normal "
-                      "displacement at the node (positive into the "
-                      "foundation), evaluated at the start of each step with "
-                      "the known u_n; e.g. mu*cp*pos(u_nu) for normal "
-                      "compliance with friction. Comparisons < > <= >= == != "
-                      "and && || give 1 or 0; c ? a : b is a if c is not 0, "
-                      "else b; e.g. x < 0.5 ? 0.3 : 0.2.");
+                      "scalar expression (doc/parameters.md, Expressions) in "
+                      "x, y, z, t and u_nu, the normal displacement at the "
+                      "node (positive into the foundation), evaluated at the "
+                      "start of each step with the known u_n; e.g. "
+                      "mu*cp*pos(u_nu) for normal compliance with friction, "
+                      "or x < 0.5 ? 0.3 : 0.2.");
     prm.declare_entry("initial displacement", "0", Patterns::Anything(),
                       "u0(x); must vanish on Gamma_1." + vec_help);
     prm.declare_entry("initial velocity", "0", Patterns::Anything(),
@@ -456,19 +456,20 @@ namespace hemicontact
                       "except 'friction bound' are ignored, and the errors "
                       "E_H, E_V, E_u are computed.");
     prm.declare_entry("exact displacement", "0", Patterns::Anything(),
-                      "u(x,t): 'dimension' expressions separated by ';' in x, "
-                      "y, z, t and the data constants. Functions: sin cos tan "
-                      "exp log sqrt abs tanh sinh cosh atan pos(a)=max(a,0) "
-                      "pow max min; a^n for powers. It must vanish on "
-                      "Gamma_1.");
+                      "u(x,t): 'dimension' expressions (doc/parameters.md, "
+                      "Expressions) separated by ';' in x, y, z, t and the "
+                      "data constants. It must vanish on Gamma_1.");
     prm.declare_entry("normal multiplier", "0", Patterns::Anything(),
                       "The choice xi_nu = s*(x,t) in dj(0) = [0,a] where the "
-                      "normal velocity vanishes; should lie strictly inside "
-                      "(0, a).");
+                      "normal velocity vanishes, an expression "
+                      "(doc/parameters.md, Expressions); should lie strictly "
+                      "inside (0, a).");
     prm.declare_entry("tangential multiplier", "0", Patterns::Anything(),
                       "The choice xi_tau = lambda*(x,t) (projected on the "
-                      "tangent plane) where the tangential velocity vanishes; "
-                      "should satisfy |lambda*| < F_b.");
+                      "tangent plane) where the tangential velocity vanishes, "
+                      "'dimension' expressions (doc/parameters.md, "
+                      "Expressions) separated by ';'; should satisfy "
+                      "|lambda*| < F_b.");
     prm.leave_subsection();
   }
 

@@ -1,5 +1,4 @@
 #include <deal.II/base/function_lib.h>
-#include <deal.II/base/function_parser.h>
 #include <deal.II/base/numbers.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
@@ -8,6 +7,7 @@
 #include <hemicontact/model/problem_data.h>
 
 #include <hemicontact/expressions/expression.h>
+#include <hemicontact/expressions/expression_function.h>
 
 #include <algorithm>
 #include <cctype>
@@ -21,37 +21,6 @@ namespace hemicontact
 {
   namespace
   {
-    /** @p text with its line breaks and runs of spaces made single spaces,
-     *  at most 300 characters of it. */
-    std::string
-    one_paragraph(const std::string &text)
-    {
-      std::string result = single_spaced(text);
-      if (result.size() > 300)
-        result = result.substr(0, 300) + "...";
-      return result;
-    }
-
-    /** While it lives, what is written to std::cerr is discarded. */
-    class CerrSilenced
-    {
-    public:
-      CerrSilenced()
-        : saved(std::cerr.rdbuf(discarded.rdbuf()))
-      {}
-      ~CerrSilenced()
-      {
-        std::cerr.rdbuf(saved);
-      }
-      CerrSilenced(const CerrSilenced &) = delete;
-      CerrSilenced &
-      operator=(const CerrSilenced &) = delete;
-
-    private:
-      std::ostringstream    discarded;
-      std::streambuf *const saved;
-    };
-
     bool
     is_number(const std::string &s)
     {
@@ -88,8 +57,8 @@ namespace hemicontact
                "the friction bound)";
       if (name == "pi" || name == "_pi" || name == "_e")
         return "is a predefined constant";
-      // muparser's and deal.II's functions besides those of the project's
-      // own grammar (Expression::function_names())
+      // muparser's functions besides those of the grammar
+      // (Expression::function_names()), kept free for its users
       static const std::set<std::string> parser_functions = {
         "asin", "acos",  "asinh", "acosh", "atanh", "log2", "log10", "ln",
         "rint", "sum",   "avg",   "if",    "int",   "ceil", "floor", "cot",
@@ -140,7 +109,9 @@ namespace hemicontact
         constants[name]  = value;
         definition[name] = item;
       }
-    constants["pi"] = numbers::PI;
+    constants["pi"]  = numbers::PI;
+    constants["_pi"] = numbers::PI;
+    constants["_e"]  = numbers::E;
     return constants;
   }
 
@@ -165,8 +136,7 @@ namespace hemicontact
                             "' has an empty component in " +
                             quoted_expression(expression) + ".");
 
-    // constant data (e.g. the default zero body force) need no parser: a
-    // ConstantFunction evaluates without muparser's per-thread lookup, and
+    // constant data (e.g. the default zero body force) need no expression:
     // a ZeroFunction lets the assembly skip the integral
     if (std::all_of(expressions.begin(), expressions.end(), is_number))
       {
@@ -179,39 +149,37 @@ namespace hemicontact
         return std::make_unique<Functions::ConstantFunction<dim>>(values);
       }
 
-    const std::string variables =
-      dim == 2 ? std::string("x,y,t") : std::string("x,y,z,t");
     const std::map<std::string, double> constants =
       parse_constants(constants_text);
-    auto function = std::make_unique<FunctionParser<dim>>(n_components);
-    const std::string what = "data: cannot parse '" + parameter_name +
-                             "' = " + quoted_expression(expression);
-    // deal.II writes muparser's own report (the whole expression) to
-    // std::cerr before it throws: keep it out of the one-paragraph message
-    const CerrSilenced silenced;
-    try
-      {
-        function->initialize(variables, expressions, constants,
-                             /*time_dependent=*/true);
-        // muparser reports some errors only on evaluation: try once
-        Vector<double> values(n_components);
-        function->vector_value(Point<dim>(), values);
-      }
-    catch (const ExceptionBase &e)
-      {
-        std::ostringstream s;
-        e.print_info(s);
-        throw InputError(what + " (variables " + variables +
-                         " and the constants): " + one_paragraph(s.str()));
-      }
-    catch (const std::exception &e)
-      {
-        throw InputError(what + ": " + one_paragraph(e.what()));
-      }
-    catch (...)
-      {
-        throw InputError(what + " (variables " + variables + ").");
-      }
+    for (unsigned int c = 0; c < n_components; ++c)
+      try
+        {
+          const Expression check(expressions[c],
+                                 ExpressionFunction<dim>::variable_names(),
+                                 constants, parameter_name);
+        }
+      catch (const InputError &e)
+        {
+          // the reason after Expression's "cannot parse 'name' = 'text': "
+          const std::string prefix = "cannot parse '" + parameter_name +
+                                     "' = " + quoted_expression(expressions[c]) +
+                                     ": ";
+          const std::string what = e.what();
+          const std::string reason =
+            what.compare(0, prefix.size(), prefix) == 0 ?
+              what.substr(prefix.size()) :
+              what;
+          throw InputError("data: cannot parse '" + parameter_name + "' = " +
+                           quoted_expression(expression) +
+                           (n_components > 1 ? " in its component " +
+                                                 std::to_string(c + 1) :
+                                               std::string()) +
+                           " (variables " +
+                           (dim == 2 ? "x, y, t" : "x, y, z, t") +
+                           " and the constants): " + reason);
+        }
+    auto function = std::make_unique<ExpressionFunction<dim>>(
+      expressions, constants, parameter_name);
     return function;
   }
 

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # long_expression.sh EXE WORKDIR
-# A data expression of 1.6 MB that muparser refuses gives one paragraph on
-# standard error (exit 2) that quotes at most the first 200 characters of the
-# expression, without muparser's own report of it.
+# A data expression of 1.6 MB, longer than an expression may be, gives one
+# paragraph on standard error (exit 2) that quotes at most the first 200
+# characters of the expression.
 set -euo pipefail
 exe=$1; work=$2
 rm -rf "$work"; mkdir -p "$work"; cd "$work"

@@ -11,14 +11,14 @@ namespace hemicontact
   /**
    * A scalar expression in named variables, parsed once and evaluated with
    * any number type -- double, or forward-AD numbers (Sacado) for exact
-   * derivatives (muparser evaluates only doubles). Grammar: numbers,
-   * variables and constants, + - * / ^, unary minus, parentheses, and the
-   * functions sin cos tan exp log sqrt abs tanh sinh cosh atan, pos(a) =
-   * max(a, 0) (for C^2 cut-offs such as pos(x-0.4)^3), step(a) (1 if a > 0,
-   * else 0), sign(a) (-1 if a < 0, else 1), pow(a,b), max(a,b), min(a,b),
-   * and, as in muparser, the comparisons < > <= >= == != and the logical
-   * && || (1 if true, else 0; looser than + and -, then ||), and c ? a : b
-   * (a if c is not 0, else b; loosest of all).
+   * derivatives. The grammar of every expression entry (doc/parameters.md,
+   * Expressions): numbers, variables, constants, + - * / ^ (right-assoc.),
+   * unary minus (-x^2 is -(x^2)), parentheses, the functions sin cos tan exp
+   * log sqrt abs tanh sinh cosh atan, pos(a) = max(a, 0), step(a) (1 if
+   * a > 0, else 0), sign(a) (-1 if a < 0, else 1), pow max min (a, b), and,
+   * as in muparser, the comparisons < > <= >= == != and the logical && ||
+   * (1 if true, else 0; looser than + and -, then ||), and c ? a : b or
+   * if(c, a, b) (a if c is not 0, else b; loosest of all).
    *
    * derivative() differentiates symbolically: the derivatives of a
    * manufactured solution are plain expressions evaluated in doubles.

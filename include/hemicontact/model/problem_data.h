@@ -20,7 +20,7 @@ namespace hemicontact
   /**
    * The data of the contact problem as Function objects: f0, f2, f3 and
    * the initial fields (dim components each), and the friction bound F_b
-   * (an expression that may depend on the normal displacement). Built from the muparser expressions of the parameter
+   * (an expression that may depend on the normal displacement). Built from the expressions of the parameter
    * file; a manufactured solution replaces them with derived functions.
    */
   template <int dim>
@@ -72,15 +72,15 @@ namespace hemicontact
   make_problem_data(const DataParameters &data);
 
   /**
-   * The user constants of 'data/constants' ("a=1, b=2") plus pi; a
-   * malformed entry throws an InputError.
+   * The user constants of 'data/constants' ("a=1, b=2") plus pi, _pi and
+   * _e; a malformed entry throws an InputError.
    */
   std::map<std::string, double>
   parse_constants(const std::string &text);
 
   /**
-   * A FunctionParser for one parameter, with the variables x, y[, z], t and
-   * the user constants (plus pi). @p n_components expressions are expected;
+   * An ExpressionFunction for one parameter, with the variables x, y[, z], t
+   * and the user constants (plus pi, _pi, _e). @p n_components expressions are expected;
    * a single number is broadcast to every component. @p parameter_name is
    * used in error messages. Numbers only give a Functions::ConstantFunction
    * (a Functions::ZeroFunction if all are zero), which the load assembly
