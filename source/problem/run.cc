@@ -66,7 +66,8 @@ namespace hemicontact
                                         const double       k,
                                         const unsigned int depth)
   {
-    // u_n = u_{n-1} + k w_{n-1} (left-point rule), then solve for w_n,
+    // u_n = u_{n-1} + k w_{n-1} (left-point rule; the implicit rule adds
+    // k w_n after the step, StepScheme), then solve for w_n,
     // starting from the linear extrapolation of w_{n-2}, w_{n-1}; the trend
     // is zero after the start, an adaptation or a resume (old_velocity =
     // velocity there)
@@ -80,7 +81,7 @@ namespace hemicontact
         trend -= old_velocity;
       }
     old_velocity = velocity;
-    displacement.add(k, old_velocity);
+    scheme.displacement_before_step(displacement, old_velocity, k);
     if (extrapolate)
       {
         velocity.add(k / last_step_length, trend);
@@ -93,6 +94,7 @@ namespace hemicontact
     try
       {
         const StepStatistics stats = solve_step();
+        scheme.displacement_after_step(displacement, velocity, k);
         update_energy_balance(/*initial=*/false);
         last_step_length = k;
         return stats;
@@ -100,7 +102,7 @@ namespace hemicontact
     catch (const SolverFailure &failure)
       {
         // back to the last converged state (w_{n-1}, u_{n-1})
-        displacement.add(-k, old_velocity);
+        scheme.undo_displacement_before_step(displacement, old_velocity, k);
         velocity = old_velocity;
         if (depth >= parameters.nonlinear_solver.time_step_halvings)
           throw;
@@ -224,6 +226,9 @@ namespace hemicontact
           << ", normal law '" << law->name() << "'";
     if (friction->name() != default_friction_law_name())
       pcout << ", friction law '" << friction->name() << "'";
+    if (scheme.name() != StepScheme(ProblemClass::dynamic,
+                                    TimeScheme::left_point).name())
+      pcout << ", " << scheme.name();
     if (parameters.output.terminal != "test")
       pcout << ", " << Utilities::MPI::n_mpi_processes(mpi_communicator)
             << " MPI rank(s)";

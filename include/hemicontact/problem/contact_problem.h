@@ -24,6 +24,7 @@
 #include <hemicontact/laws/normal_law.h>
 #include <hemicontact/input/parameters.h>
 #include <hemicontact/model/problem_data.h>
+#include <hemicontact/model/step_scheme.h>
 #include <hemicontact/solver/step_preconditioner.h>
 #include <hemicontact/solver/step_statistics.h>
 
@@ -162,6 +163,12 @@ namespace hemicontact
     {
       return time_step;
     }
+    /** The problem class and time scheme of the run. */
+    const StepScheme &
+    get_scheme() const
+    {
+      return scheme;
+    }
     unsigned int
     get_step_number() const
     {
@@ -217,6 +224,12 @@ namespace hemicontact
     setup_contact_nodes();
     void
     initialize_state();
+    /**
+     * w_0 as the step problem at t_0 with the data u_0 (K = A,
+     * b = F_0 - B u_0), where the class asks for it (doc/theory.md 9.2).
+     */
+    void
+    solve_initial_velocity();
     /**
      * F_b at every contact node from 'data/friction bound' at time @p t and
      * the displacement u_n (the left-point rule: known when step n starts).
@@ -440,6 +453,8 @@ namespace hemicontact
     TimerOutput        timer;
 
     KelvinVoigtMaterial<dim>   material;
+    /** What differs between the problem classes and time schemes. */
+    StepScheme                 scheme;
     std::unique_ptr<NormalLaw>   law;
     std::unique_ptr<FrictionLaw> friction;
     ProblemData<dim>           data;
@@ -454,8 +469,9 @@ namespace hemicontact
 
     /** Constant on a fixed mesh, condensed with the base constraints. */
     TrilinosWrappers::SparseMatrix mass_matrix;    ///< M
-    TrilinosWrappers::SparseMatrix step_matrix;    ///< K0 = rho/k M + A
+    TrilinosWrappers::SparseMatrix step_matrix;    ///< K (StepScheme::step_matrix())
     TrilinosWrappers::SparseMatrix elastic_matrix; ///< B
+    TrilinosWrappers::SparseMatrix viscous_matrix; ///< A
 
     TrilinosWrappers::MPI::Vector velocity;     ///< w_n
     TrilinosWrappers::MPI::Vector old_velocity; ///< w_{n-1}
