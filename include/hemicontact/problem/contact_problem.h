@@ -46,7 +46,10 @@ namespace hemicontact
    * displacement, P1/Q1 elements, nodal quadrature on Gamma_3.
    *
    * Each time step minimises the step energy J_n by a semismooth Newton /
-   * primal-dual active-set method (doc/theory.md section 3).
+   * primal-dual active-set method (doc/theory.md section 3). The
+   * quasistatic class and the implicit rule (doc/theory.md section 9) change
+   * the step matrix, the right-hand side and the update of the
+   * displacement; StepScheme holds what differs.
    *
    * The member functions are spread over source/problem/: setup.cc (mesh,
    * dofs, constraints, contact nodes), assembly.cc (matrices and loads),
