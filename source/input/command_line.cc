@@ -10,6 +10,7 @@
 #include <hemicontact/verification/convergence_study.h>
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/model/step_scheme.h>
 
 #include <cstdlib>
 #include <iostream>
@@ -85,6 +86,10 @@ namespace
       resume ? read_parameters(prm, file,
                                "subsection checkpoint\n  set resume = true\nend\n") :
                read_parameters(prm, file);
+    if (const std::string note =
+          StepScheme(parameters.problem).ignored_parameters(parameters);
+        !note.empty() && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cerr << "hemicontact: note: " << note << std::endl;
     if (parameters.manufactured.enabled)
       {
         if (parameters.dimension == 2)

@@ -327,6 +327,37 @@ namespace hemicontact
   }
 
   void
+  ProblemParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("problem");
+    prm.declare_entry(
+      "class", "dynamic", Patterns::Selection("dynamic|quasistatic"),
+      "The problem class (doc/theory.md, section 9): 'dynamic' (rho dw/dt "
+      "= Div sigma + f0) or 'quasistatic' (0 = Div sigma + f0: no inertia; "
+      "'material/density' and 'data/initial velocity' are not used, the "
+      "initial velocity is the step problem at t = 0).");
+    prm.declare_entry(
+      "time scheme", "left point", Patterns::Selection("left point|implicit"),
+      "The rule for the displacement: 'left point' (u_{n+1} = u_n + k w_n, "
+      "the elastic term explicit, stable below a time-step limit) or "
+      "'implicit' (u_n = u_{n-1} + k w_n, the elastic term in the step "
+      "matrix, stable for every time step).");
+    prm.leave_subsection();
+  }
+
+  void
+  ProblemParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("problem");
+    problem_class = prm.get("class") == "quasistatic" ?
+                      ProblemClass::quasistatic :
+                      ProblemClass::dynamic;
+    time_scheme = prm.get("time scheme") == "implicit" ? TimeScheme::implicit :
+                                                         TimeScheme::left_point;
+    prm.leave_subsection();
+  }
+
+  void
   DataParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("data");
@@ -630,6 +661,7 @@ namespace hemicontact
     BoundaryParameters::declare(prm);
     MaterialParameters::declare(prm);
     TimeParameters::declare(prm);
+    ProblemParameters::declare(prm);
     DataParameters::declare(prm);
     NonlinearSolverParameters::declare(prm);
     LinearSolverParameters::declare(prm);
@@ -648,6 +680,7 @@ namespace hemicontact
     boundary.parse(prm);
     material.parse(prm);
     time.parse(prm);
+    problem.parse(prm);
     data.parse(prm);
     nonlinear_solver.parse(prm);
     linear_solver.parse(prm);

@@ -215,6 +215,9 @@ namespace hemicontact
           << ", normal law '" << s.normal_law.name() << "'";
     if (s.friction_law.name() != default_friction_law_name())
       pcout << ", friction law '" << s.friction_law.name() << "'";
+    if (s.scheme.name() !=
+        StepScheme(ProblemClass::dynamic, TimeScheme::left_point).name())
+      pcout << ", " << s.scheme.name();
     if (parameters.output.terminal != TerminalOutput::test)
       pcout << ", " << Utilities::MPI::n_mpi_processes(mpi_communicator)
             << " MPI rank(s)";

@@ -136,8 +136,10 @@ namespace hemicontact
     u = displacement;
     if (project)
       {
+        // the displacement held after the step (StepScheme): u_n + k w_n
+        // for the left point, u_n for the implicit rule
         TrilinosWrappers::MPI::Vector u_next(displacement);
-        u_next.add(time_step, velocity);
+        u_next.add(scheme.held_displacement_offset(time_step), velocity);
         u = u_next;
       }
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
@@ -161,7 +163,8 @@ namespace hemicontact
     base_constraints.distribute(velocity);
     base_constraints.distribute(displacement);
     if (project)
-      displacement.add(-time_step, velocity); // u_n = u_{n+1} - k w_n
+      displacement.add(-scheme.held_displacement_offset(time_step),
+                       velocity); // u_n = u_{n+1} - k w_n (left point)
     old_velocity = velocity;
 
     std::tie(stats.kinetic_after_adaptation, stats.elastic_after_adaptation) =

@@ -22,6 +22,10 @@ namespace hemicontact
     mass_matrix    = 0;
     step_matrix    = 0;
     elastic_matrix = 0;
+    viscous_matrix = 0;
+    // K = c_M rho M + c_A A + c_B B of the class and scheme (doc/theory.md,
+    // section 9); the dynamic left point is rho/k M + A
+    const StepMatrixCoefficients c = scheme.step_matrix(time_step);
 
     const FiniteElement<dim> &fe = *discretization.fe;
     FEValues<dim> fe_values(*discretization.mapping, fe,
@@ -39,7 +43,12 @@ namespace hemicontact
           fe_values.reinit(cell);
           cell_matrices(fe_values, cell_mass, cell_viscous, cell_elastic);
           cell_step = cell_viscous;
-          cell_step.add(1. / time_step, cell_mass);
+          if (c.viscous != 1.)
+            cell_step *= c.viscous;
+          if (c.mass != 0.)
+            cell_step.add(c.mass, cell_mass);
+          if (c.elastic != 0.)
+            cell_step.add(c.elastic, cell_elastic);
           cell->get_dof_indices(dofs);
           base_constraints.distribute_local_to_global(cell_mass, dofs,
                                                       mass_matrix);
@@ -47,8 +56,11 @@ namespace hemicontact
                                                       step_matrix);
           base_constraints.distribute_local_to_global(cell_elastic, dofs,
                                                       elastic_matrix);
+          base_constraints.distribute_local_to_global(cell_viscous, dofs,
+                                                      viscous_matrix);
         }
     mass_matrix.compress(VectorOperation::add);
+    viscous_matrix.compress(VectorOperation::add);
     step_matrix.compress(VectorOperation::add);
     elastic_matrix.compress(VectorOperation::add);
   }
@@ -237,13 +249,11 @@ namespace hemicontact
   void
   ContactProblem<dim>::assemble_step_rhs()
   {
-    // b = rho/k M w_{n-1} - B u_n + F_n
+    // b = rho/k M w_{n-1} - B u + F_n (without inertia F_n - B u), u the
+    // displacement held before the step (doc/theory.md, section 9)
     TrilinosWrappers::MPI::Vector tmp(locally_owned_dofs, mpi_communicator);
-    mass_matrix.vmult(step_rhs, old_velocity);
-    step_rhs /= time_step;
-    elastic_matrix.vmult(tmp, displacement);
-    step_rhs -= tmp;
-    step_rhs += load;
+    scheme.step_rhs(mass_matrix, elastic_matrix, old_velocity, displacement,
+                    load, time_step, step_rhs, tmp);
     base_constraints.set_zero(step_rhs);
   }
 

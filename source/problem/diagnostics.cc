@@ -38,15 +38,18 @@ namespace hemicontact
   std::pair<double, double>
   ContactProblem<dim>::stored_energy() const
   {
-    // rho/2 |w_n|^2 and 1/2 a_B(u_{n+1}, u_{n+1}) with u_{n+1} = u_n + k w_n
-    const TrilinosWrappers::MPI::Vector w =
-      without_constrained(velocity, base_constraints);
+    // rho/2 |w_n|^2 and 1/2 a_B(u, u) with u the displacement held after
+    // step n: u_{n+1} = u_n + k w_n (left point) or u_n (implicit); no
+    // kinetic energy without inertia (doc/theory.md, section 9.3)
+    const TrilinosWrappers::MPI::Vector w = without_constrained(velocity, base_constraints);
     TrilinosWrappers::MPI::Vector       u_next(displacement);
-    u_next.add(time_step, velocity);
+    const double offset = scheme.held_displacement_offset(time_step);
+    if (offset != 0.)
+      u_next.add(offset, velocity);
     u_next = without_constrained(u_next, base_constraints);
     TrilinosWrappers::MPI::Vector tmp(locally_owned_dofs, mpi_communicator);
     mass_matrix.vmult(tmp, w);
-    const double kinetic = 0.5 * (w * tmp);
+    const double kinetic = scheme.kinetic_energy(w * tmp);
     elastic_matrix.vmult(tmp, u_next);
     return {kinetic, 0.5 * (u_next * tmp)};
   }
@@ -61,23 +64,26 @@ namespace hemicontact
       without_constrained(velocity, base_constraints);
     TrilinosWrappers::MPI::Vector       tmp(locally_owned_dofs, mpi_communicator);
     std::tie(energy.kinetic, energy.elastic) = stored_energy();
-    const double w_M_w                       = 2 * energy.kinetic;
     if (initial)
       {
         energy.initial_energy = energy.total_energy();
         return;
       }
 
-    step_matrix.vmult(tmp, w);
-    energy.viscous_dissipation += k * (w * tmp) - w_M_w; // k a_A(w, w)
-
+    // the terms of doc/theory.md, section 9.3: k a_A(w, w) from A, the
+    // numerical dissipation rho/2 |w_n - w_{n-1}|^2 -+ k^2/2 a_B(w_n, w_n)
+    viscous_matrix.vmult(tmp, w);
+    const double w_A_w = w * tmp;
     TrilinosWrappers::MPI::Vector dw(velocity);
     dw -= old_velocity;
     dw = without_constrained(dw, base_constraints);
     mass_matrix.vmult(tmp, dw);
     const double dw_M_dw = dw * tmp;
     elastic_matrix.vmult(tmp, w);
-    energy.numerical_dissipation += 0.5 * dw_M_dw - 0.5 * k * k * (w * tmp);
+    const StepScheme::StepEnergy terms =
+      scheme.step_energy(k, w_A_w, dw_M_dw, w * tmp);
+    energy.viscous_dissipation += terms.viscous;
+    energy.numerical_dissipation += terms.numerical;
     energy.external_work += k * (load * w);
 
     // the work xi . w of the contact forces, not their potentials: with a
@@ -104,7 +110,9 @@ namespace hemicontact
   void
   ContactProblem<dim>::check_convexity(const std::string &context)
   {
-    // J_n is strongly convex if K0 = rho/k M + A dominates the nodal form
+    // J_n is strongly convex if K (rho/k M + A for the dynamic left point,
+    // the K of the class and scheme otherwise: doc/theory.md, section 9.5)
+    // dominates the nodal form
     // N = sum_i m_i (alpha_nu nu nu + alpha_tau,i (I - nu nu)) of the laws'
     // nonconvexity (doc/theory.md, section 7). Without friction remainder
     // (alpha_tau = 0) the bound is stated for alpha_nu: the smallest
@@ -217,15 +225,15 @@ namespace hemicontact
                   << alpha << " (normal law) and alpha_tau up to "
                   << convexity.largest_alpha_tau << " (friction law '"
                   << friction->name()
-                  << "') are too large for (rho/k M + A): its smallest "
+                  << "') are too large for (" << scheme.step_matrix_name()
+                  << "): its smallest "
                      "eigenvalue against sum m_i (alpha_nu nu nu + alpha_tau "
                      "(I - nu nu)) is estimated at "
                   << convexity.bound
                   << ", below 1 (the convexity condition of the step "
-                     "problem, doc/theory.md section 7). Newton may fail or "
-                     "the step may have several solutions; reduce the time "
-                     "step k = "
-                  << time_step
+                     "problem, doc/theory.md sections 7 and 9.5). Newton may "
+                     "fail or the step may have several solutions; "
+                  << scheme.convexity_remedy(time_step)
                   << " or the laws' nonmonotonicity (e.g. a larger "
                      "characteristic slip speed).";
         else
@@ -234,11 +242,12 @@ namespace hemicontact
                   << alpha
                   << " is not below the estimated smallest eigenvalue "
                   << convexity.bound
-                  << " of (rho/k M + A) against the normal boundary mass "
-                     "(the convexity condition of the step problem, cf. Han & Han 2019, (4.26)). Newton may fail "
-                     "or the step may have several solutions; reduce the time "
-                     "step k = "
-                  << time_step << " or the law's nonmonotonicity.";
+                  << " of (" << scheme.step_matrix_name()
+                  << ") against the normal boundary mass "
+                     "(the convexity condition of the step problem, cf. Han & Han 2019, (4.26); doc/theory.md section 9.5). Newton may fail "
+                     "or the step may have several solutions; "
+                  << scheme.convexity_remedy(time_step)
+                  << " or the law's nonmonotonicity.";
         if (parameters.nonlinear_solver.strict_convexity_check)
           {
             if (context.empty())

@@ -59,7 +59,7 @@ namespace hemicontact
                           const types::boundary_id         id) {
       return std::find(ids.begin(), ids.end(), id) != ids.end();
     };
-    const double rho            = material.density();
+    const double rho            = scheme.inertia_density(material.density());
     const double contact_weight = parameters.adaptivity.contact_weight;
 
     const auto stress = [&](const Tensor<2, dim> &grad_w,

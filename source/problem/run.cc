@@ -89,7 +89,8 @@ namespace hemicontact
                                         const double       k,
                                         const unsigned int depth)
   {
-    // u_n = u_{n-1} + k w_{n-1} (left-point rule), then solve for w_n,
+    // u_n = u_{n-1} + k w_{n-1} (left-point rule; the implicit rule adds
+    // k w_n after the step, StepScheme), then solve for w_n,
     // starting from the linear extrapolation of w_{n-2}, w_{n-1}; the trend
     // is zero after the start, an adaptation or a resume (old_velocity =
     // velocity there)
@@ -103,7 +104,7 @@ namespace hemicontact
         trend -= old_velocity;
       }
     old_velocity = velocity;
-    displacement.add(k, old_velocity);
+    scheme.displacement_before_step(displacement, old_velocity, k);
     if (extrapolate)
       {
         velocity.add(k / last_step_length, trend);
@@ -116,6 +117,7 @@ namespace hemicontact
     try
       {
         const StepStatistics stats = solve_step();
+        scheme.displacement_after_step(displacement, velocity, k);
         update_energy_balance(/*initial=*/false);
         last_step_length = k;
         return stats;
@@ -123,7 +125,7 @@ namespace hemicontact
     catch (const SolverFailure &failure)
       {
         // back to the last converged state (w_{n-1}, u_{n-1})
-        displacement.add(-k, old_velocity);
+        scheme.undo_displacement_before_step(displacement, old_velocity, k);
         velocity = old_velocity;
         if (depth >= parameters.nonlinear_solver.time_step_halvings)
           throw;

@@ -28,7 +28,9 @@ namespace hemicontact
   {
     // lambda_max(B; A + 2M/k) by LOBPCG, preconditioned by the AMG of
     // K0 = M/k + A (spectrally within a factor 2 of A + 2M/k), from a
-    // fixed pseudo-random start (the same on any number of ranks)
+    // fixed pseudo-random start (the same on any number of ranks); without
+    // inertia lambda_max(B; A) with K = A (doc/theory.md, section 9.6)
+    const bool inertia = scheme.has_inertia();
     const auto apply_b = [&](const TrilinosWrappers::MPI::Vector &in,
                              TrilinosWrappers::MPI::Vector &      out) {
       elastic_matrix.vmult(out, in);
@@ -38,9 +40,12 @@ namespace hemicontact
     TrilinosWrappers::MPI::Vector m_in(locally_owned_dofs, mpi_communicator);
     const auto apply_s = [&](const TrilinosWrappers::MPI::Vector &in,
                              TrilinosWrappers::MPI::Vector &      out) {
-      mass_matrix.vmult(m_in, in);
       step_matrix.vmult(out, in);
-      out.add(1. / current_k, m_in);
+      if (inertia)
+        {
+          mass_matrix.vmult(m_in, in);
+          out.add(1. / current_k, m_in);
+        }
       base_constraints.set_zero(out);
     };
     const TrilinosWrappers::PreconditionAMG &amg =
@@ -69,7 +74,7 @@ namespace hemicontact
         if (!(estimate.value > 0) || estimate.value * current_k <= 2)
           return round == 0 ? std::numeric_limits<double>::infinity() : limit;
         mass_matrix.vmult(tmp, x);
-        const double m = x * tmp;
+        const double m = inertia ? x * tmp : 0.;
         step_matrix.vmult(tmp, x);
         const double a = x * tmp - m / current_k;
         elastic_matrix.vmult(tmp, x);
@@ -88,6 +93,9 @@ namespace hemicontact
   void
   ContactProblem<dim>::check_time_step_stability()
   {
+    // the implicit rule is stable for every k (doc/theory.md, section 9.6)
+    if (!scheme.has_time_step_limit())
+      return;
     TimerOutput::Scope t(timer, "stability check");
     const double       material_limit = mesh_independent_stable_time_step(
       dim, material.mu_viscous(), material.lambda_viscous(),
@@ -104,17 +112,17 @@ namespace hemicontact
             << " is above the stability limit of the left-point rule on this "
                "mesh, k <= "
             << limit
-            << " (estimated: the largest generalized eigenvalue of the "
-               "elastic operator B against A + 2M/k must not exceed 2/k; "
-               "doc/theory.md, section 8): the elastic term is explicit, "
+            << " (estimated: " << scheme.stability_condition()
+            << "): the elastic term is explicit, "
                "and the energy of the run would grow without bound. Choose "
                "a time step that divides the end time and is at most "
             << limit << " (e.g. " << parameters.time.end_time
             << " / " << std::ceil(parameters.time.end_time / limit)
             << "), a larger viscosity or a softer material; below k = "
             << material_limit
-            << " the rule is stable on every mesh. 'time/allow unstable time "
-               "step = true' runs it anyway.";
+            << " the rule is stable on every mesh. 'problem/time scheme = "
+               "implicit' is stable for every time step; 'time/allow unstable "
+               "time step = true' runs it anyway.";
     if (!parameters.time.allow_unstable_time_step)
       throw InputError("time: " + message.str());
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)

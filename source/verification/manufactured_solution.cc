@@ -43,6 +43,8 @@ namespace hemicontact
     : law(law)
     , friction(friction)
     , material(parameters.material)
+    , inertia_density(
+        StepScheme(parameters.problem).inertia_density(material.density()))
   {
     const auto constants = parse_constants(parameters.data.constants);
     const ManufacturedParameters &m = parameters.manufactured;
@@ -225,7 +227,7 @@ namespace hemicontact
       {
         Values v;
         unpack_second_derivatives(r.data() + p * force_tape->n_outputs(), v);
-        forces[p] = material.density() * v.w_dot - v.div_sigma;
+        forces[p] = inertia_density * v.w_dot - v.div_sigma;
       }
     return forces;
   }

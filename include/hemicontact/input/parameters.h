@@ -86,6 +86,30 @@ namespace hemicontact
     void        parse(ParameterHandler &prm);
   };
 
+  /** The problem class (doc/theory.md, section 9). */
+  enum class ProblemClass
+  {
+    dynamic,    ///< rho dw/dt = Div sigma + f0 (sections 1-8)
+    quasistatic ///< 0 = Div sigma + f0: no inertia, viscosity kept
+  };
+
+  /** The rule for the displacement of the velocity classes (section 9). */
+  enum class TimeScheme
+  {
+    left_point, ///< u_{n+1} = u_n + k w_n: u_n known in step n
+    implicit    ///< u_n = u_{n-1} + k w_n: u_n part of step n
+  };
+
+  /** The problem class and the time scheme (subsection 'problem'). */
+  struct ProblemParameters
+  {
+    ProblemClass problem_class;
+    TimeScheme   time_scheme;
+
+    static void declare(ParameterHandler &prm);
+    void        parse(ParameterHandler &prm);
+  };
+
   /** Data of the problem as expressions in x, y, z, t. */
   struct DataParameters
   {
@@ -287,6 +311,7 @@ namespace hemicontact
     BoundaryParameters         boundary;
     MaterialParameters         material;
     TimeParameters             time;
+    ProblemParameters          problem;
     DataParameters             data;
     NonlinearSolverParameters  nonlinear_solver;
     LinearSolverParameters     linear_solver;

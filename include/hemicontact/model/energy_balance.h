@@ -6,7 +6,9 @@
 namespace hemicontact
 {
   /**
-   * The discrete energy identity that the scheme satisfies exactly.
+   * The discrete energy identity that the scheme satisfies exactly, here
+   * for the dynamic left point (every class and rule: doc/theory.md,
+   * section 9.3, with the terms of StepScheme::step_energy()).
    * Testing step n of Problem 4.4 with w_n and using u_{n+1} = u_n + k w_n:
    *
    *   E_n - E_{n-1} + k a_A(w_n,w_n) + k sum_i m_i (xi_nu w_nu + F_b|w_tau|)

@@ -20,6 +20,7 @@
 #include <hemicontact/laws/normal_law.h>
 #include <hemicontact/input/parameters.h>
 #include <hemicontact/model/problem_data.h>
+#include <hemicontact/model/step_scheme.h>
 #include <hemicontact/solver/step_preconditioner.h>
 #include <hemicontact/solver/step_statistics.h>
 
@@ -44,7 +45,10 @@ namespace hemicontact
    * displacement, P1/Q1 elements, nodal quadrature on Gamma_3.
    *
    * Each time step minimises the step energy J_n by a semismooth Newton /
-   * primal-dual active-set method (doc/theory.md section 3).
+   * primal-dual active-set method (doc/theory.md section 3). The
+   * quasistatic class and the implicit rule (doc/theory.md section 9) change
+   * the step matrix, the right-hand side and the update of the
+   * displacement; StepScheme holds what differs.
    *
    * The member functions are spread over source/problem/: setup.cc (mesh,
    * dofs, constraints, contact nodes, initial state), resume.cc (the same
@@ -208,6 +212,8 @@ namespace hemicontact
       const StepPreconditioner<dim> &      preconditioner;
       const EnergyBalance &                energy;
       const ConvexityCheck &               convexity;
+      /** The problem class and time scheme of the run. */
+      const StepScheme &                   scheme;
       double                               time; ///< t_n = n k
       double                               time_step;
       /** Length of the last converged step (0: none yet). */
@@ -237,6 +243,7 @@ namespace hemicontact
               preconditioner,
               energy,
               convexity,
+              scheme,
               step_number * time_step,
               time_step,
               last_step_length,
@@ -258,6 +265,12 @@ namespace hemicontact
     setup_contact_nodes();
     void
     initialize_state();
+    /**
+     * w_0 as the step problem at t_0 with the data u_0 (K = A,
+     * b = F_0 - B u_0), where the class asks for it (doc/theory.md 9.2).
+     */
+    void
+    solve_initial_velocity();
     /**
      * F_b at every contact node from 'data/friction bound' at time @p t and
      * the displacement u_n (the left-point rule: known when step n starts).
@@ -385,6 +398,8 @@ namespace hemicontact
     TimerOutput        timer;
 
     KelvinVoigtMaterial<dim>   material;
+    /** What differs between the problem classes and time schemes. */
+    StepScheme                 scheme;
     std::unique_ptr<NormalLaw>   law;
     std::unique_ptr<FrictionLaw> friction;
     ProblemData<dim>           data;
@@ -399,8 +414,9 @@ namespace hemicontact
 
     /** Constant on a fixed mesh, condensed with the base constraints. */
     TrilinosWrappers::SparseMatrix mass_matrix;    ///< M
-    TrilinosWrappers::SparseMatrix step_matrix;    ///< K0 = rho/k M + A
+    TrilinosWrappers::SparseMatrix step_matrix;    ///< K (StepScheme::step_matrix())
     TrilinosWrappers::SparseMatrix elastic_matrix; ///< B
+    TrilinosWrappers::SparseMatrix viscous_matrix; ///< A
 
     TrilinosWrappers::MPI::Vector velocity;     ///< w_n
     TrilinosWrappers::MPI::Vector old_velocity; ///< w_{n-1}

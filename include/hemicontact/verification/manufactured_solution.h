@@ -13,6 +13,7 @@
 #include <hemicontact/laws/normal_law.h>
 #include <hemicontact/input/parameters.h>
 #include <hemicontact/model/problem_data.h>
+#include <hemicontact/model/step_scheme.h>
 #include <hemicontact/expressions/spatial_cache.h>
 
 #include <memory>
@@ -78,7 +79,7 @@ namespace hemicontact
     SymmetricTensor<2, dim>
     stress(const Values &v) const;
 
-    /** f0 = rho dw/dt - Div sigma. */
+    /** f0 = rho dw/dt - Div sigma (quasistatic: -Div sigma, doc/theory.md 9.7). */
     Tensor<1, dim>
     body_force(const Point<dim> &p, const double t) const;
 
@@ -117,6 +118,8 @@ namespace hemicontact
     const NormalLaw &                   law;
     const FrictionLaw &                 friction;
     KelvinVoigtMaterial<dim>            material;
+    /** rho in f0: the density (dynamic) or 0 (quasistatic). */
+    double                              inertia_density;
     std::vector<Expression>             displacement;
     /** @name The derivatives of u, one expression per component */
     /** @{ */

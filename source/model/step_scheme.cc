@@ -1,0 +1,115 @@
+#include <hemicontact/model/step_scheme.h>
+
+#include <sstream>
+
+namespace hemicontact
+{
+  StepScheme::StepScheme(const ProblemClass problem_class,
+                         const TimeScheme   time_scheme)
+    : the_class(problem_class)
+    , the_scheme(time_scheme)
+  {}
+
+  StepScheme::StepScheme(const ProblemParameters &parameters)
+    : StepScheme(parameters.problem_class, parameters.time_scheme)
+  {}
+
+  std::string
+  StepScheme::name() const
+  {
+    return std::string(has_inertia() ? "dynamic" : "quasistatic") +
+           (the_scheme == TimeScheme::left_point ? ", left point" :
+                                                   ", implicit");
+  }
+
+  StepMatrixCoefficients
+  StepScheme::step_matrix(const double k) const
+  {
+    // doc/theory.md, section 9 (the table)
+    StepMatrixCoefficients c;
+    c.mass    = has_inertia() ? 1. / k : 0.;
+    c.viscous = 1.;
+    c.elastic = the_scheme == TimeScheme::implicit ? k : 0.;
+    return c;
+  }
+
+  StepMatrixCoefficients
+  StepScheme::initial_matrix() const
+  {
+    // doc/theory.md, section 9.2: K = A, b = F_0 - B u_0
+    return StepMatrixCoefficients{0., 1., 0.};
+  }
+
+  std::string
+  StepScheme::step_matrix_name() const
+  {
+    return std::string(has_inertia() ? "rho/k M + A" : "A") +
+           (the_scheme == TimeScheme::implicit ? " + k B" : "");
+  }
+
+  StepScheme::StepEnergy
+  StepScheme::step_energy(const double k, const double w_A_w,
+                          const double dw_M_dw, const double w_B_w) const
+  {
+    // doc/theory.md, section 9.3
+    StepEnergy e;
+    e.viscous = k * w_A_w;
+    const double kinetic = has_inertia() ? 0.5 * dw_M_dw : 0.;
+    e.numerical = the_scheme == TimeScheme::implicit ?
+                    kinetic + 0.5 * k * k * w_B_w :
+                    kinetic - 0.5 * k * k * w_B_w;
+    return e;
+  }
+
+  std::string
+  StepScheme::stability_condition() const
+  {
+    if (!has_time_step_limit())
+      return "none (the implicit rule is stable for every time step)";
+    if (has_inertia())
+      return "the largest generalized eigenvalue of the elastic operator B "
+             "against A + 2M/k must not exceed 2/k; doc/theory.md, section 8";
+    return "the largest generalized eigenvalue of the elastic operator B "
+           "against the viscous operator A must not exceed 2/k, i.e. "
+           "k B <= 2 A; doc/theory.md, section 9.6";
+  }
+
+  std::string
+  StepScheme::convexity_remedy(const double k) const
+  {
+    std::ostringstream s;
+    if (has_inertia())
+      s << "reduce the time step k = " << k;
+    else
+      s << "in the quasistatic class the condition does not improve with the "
+           "time step (K = "
+        << step_matrix_name()
+        << ", doc/theory.md section 9.5): use a larger viscosity";
+    return s.str();
+  }
+
+  std::string
+  StepScheme::ignored_parameters(const Parameters &parameters) const
+  {
+    if (has_inertia())
+      return "";
+    // the defaults of 'material/density' and 'data/initial velocity'
+    std::string ignored;
+    if (parameters.material.density != 1.)
+      {
+        std::ostringstream value;
+        value << parameters.material.density;
+        ignored += "'material/density' = " + value.str();
+      }
+    if (parameters.data.initial_velocity != "0" &&
+        !parameters.manufactured.enabled)
+      ignored += std::string(ignored.empty() ? "" : " and ") +
+                 "'data/initial velocity' = '" +
+                 parameters.data.initial_velocity + "'";
+    if (ignored.empty())
+      return "";
+    return "the quasistatic class does not use " + ignored +
+           " (no inertia; the initial velocity is the step problem at t = 0, "
+           "doc/theory.md section 9.2).";
+  }
+} // namespace hemicontact
