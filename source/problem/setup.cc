@@ -300,50 +300,44 @@ namespace hemicontact
     step_number  = 0;
     update_friction_bounds(0.);
     if (scheme.initial_velocity_from_step())
-      solve_initial_velocity();
+      {
+      // doc/theory.md, section 9.2: the equation at t_0 with the data u_0,
+      // K = A and b = F_0 - B u_0, solved from w = 0 by the step solver
+      const bool other_matrix =
+        !(scheme.initial_matrix() == scheme.step_matrix(time_step));
+      if (other_matrix)
+        {
+          step_matrix.copy_from(viscous_matrix);
+          preconditioner.clear();
+        }
+      assemble_load(0.);
+      scheme.initial_rhs(elastic_matrix, displacement, load, step_rhs);
+      base_constraints.set_zero(step_rhs);
+      velocity = 0;
+      try
+        {
+          solve_step();
+        }
+      catch (const SolverFailure &failure)
+        {
+          throw SolverFailure(
+            std::string("the initial velocity w_0 of the quasistatic class (the "
+                        "step problem at t = 0 with the initial displacement, "
+                        "doc/theory.md section 9.2) failed: ") +
+            failure.what());
+        }
+      old_velocity = velocity;
+      if (other_matrix)
+        {
+          assemble_constant_matrices();
+          preconditioner.clear();
+        }
+      }
     energy       = EnergyBalance();
     update_energy_balance(/*initial=*/true);
   }
 
-  template <int dim>
-  void
-  ContactProblem<dim>::solve_initial_velocity()
-  {
-    // doc/theory.md, section 9.2: the equation at t_0 with the data u_0,
-    // K = A and b = F_0 - B u_0, solved from w = 0 by the step solver
-    const bool other_matrix =
-      !(scheme.initial_matrix() == scheme.step_matrix(time_step));
-    if (other_matrix)
-      {
-        step_matrix.copy_from(viscous_matrix);
-        preconditioner.clear();
-      }
-    assemble_load(0.);
-    scheme.initial_rhs(elastic_matrix, displacement, load, step_rhs);
-    base_constraints.set_zero(step_rhs);
-    velocity = 0;
-    try
-      {
-        solve_step();
-      }
-    catch (const SolverFailure &failure)
-      {
-        throw SolverFailure(
-          std::string("the initial velocity w_0 of the quasistatic class (the "
-                      "step problem at t = 0 with the initial displacement, "
-                      "doc/theory.md section 9.2) failed: ") +
-          failure.what());
-      }
-    old_velocity = velocity;
-    if (other_matrix)
-      {
-        assemble_constant_matrices();
-        preconditioner.clear();
-      }
-  }
-
 #define HEMICONTACT_INSTANTIATE(dim)                                           \
-  template void ContactProblem<dim>::solve_initial_velocity();               \
   template ContactProblem<dim>::ContactProblem(const Parameters &,            \
                                                ContactLaws, MPI_Comm);        \
   template ContactProblem<dim>::ContactProblem(const Parameters &,            \

@@ -263,14 +263,13 @@ namespace hemicontact
     setup_base_constraints();
     void
     setup_contact_nodes();
-    void
-    initialize_state();
     /**
-     * w_0 as the step problem at t_0 with the data u_0 (K = A,
-     * b = F_0 - B u_0), where the class asks for it (doc/theory.md 9.2).
+     * u_0 and w_0 from the data; where the class asks for it, w_0 as the
+     * step problem at t_0 with the data u_0 (K = A, b = F_0 - B u_0,
+     * doc/theory.md 9.2).
      */
     void
-    solve_initial_velocity();
+    initialize_state();
     /**
      * F_b at every contact node from 'data/friction bound' at time @p t and
      * the displacement u_n (the left-point rule: known when step n starts).
