@@ -2,13 +2,6 @@
 #include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
 
-#include <hemicontact/output/checkpointer.h>
-#include <hemicontact/output/run_output.h>
-#include <hemicontact/problem/contact_problem.h>
-#include <hemicontact/base/exceptions.h>
-#include <hemicontact/output/output_file.h>
-#include <hemicontact/solver/projected_operator.h>
-
 #include <boost/archive/text_iarchive.hpp>
 #include <boost/archive/text_oarchive.hpp>
 #include <boost/crc.hpp>
@@ -16,12 +9,19 @@
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
 
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/output/checkpointer.h>
+#include <hemicontact/output/output_file.h>
+#include <hemicontact/output/run_output.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/solver/projected_operator.h>
+
+#include <cctype>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
-#include <cctype>
 #include <limits>
 #include <map>
 #include <random>
@@ -82,9 +82,9 @@ namespace hemicontact
       const std::string text = content.str();
       const std::size_t last =
         text.size() < 2 ? std::string::npos : text.rfind('\n', text.size() - 2);
-      if (last == std::string::npos ||
-          text.compare(last + 1, state_checksum_label.size(),
-                       state_checksum_label) != 0)
+      if (last == std::string::npos || text.compare(last + 1,
+                                                    state_checksum_label.size(),
+                                                    state_checksum_label) != 0)
         return name + " is cut short (no checksum line)";
       const std::string body = text.substr(0, last + 1);
       if (text.substr(last + 1 + state_checksum_label.size()) !=
@@ -119,9 +119,10 @@ namespace hemicontact
      * way on the same number of ranks). Returns the reason of a failure.
      */
     std::string
-    write_rank_fields(const fs::path &file, const IndexSet &owned,
-                      const std::vector<const TrilinosWrappers::MPI::Vector *>
-                        &fields)
+    write_rank_fields(
+      const fs::path                                           &file,
+      const IndexSet                                           &owned,
+      const std::vector<const TrilinosWrappers::MPI::Vector *> &fields)
     {
       std::ofstream       out(file, std::ios::binary);
       const std::uint64_t n = owned.n_elements();
@@ -142,7 +143,8 @@ namespace hemicontact
 
     /** Read write_rank_fields()'s file; the reason if it does not fit. */
     std::string
-    read_rank_fields(const fs::path &file, const IndexSet &owned,
+    read_rank_fields(const fs::path                                     &file,
+                     const IndexSet                                     &owned,
                      const std::vector<TrilinosWrappers::MPI::Vector *> &fields)
     {
       const std::string other_partition =
@@ -204,8 +206,9 @@ namespace hemicontact
      * an empty string.
      */
     std::string
-    checkpoint_damage(const fs::path &dir, const unsigned int step,
-                      CheckpointState &state)
+    checkpoint_damage(const fs::path    &dir,
+                      const unsigned int step,
+                      CheckpointState   &state)
     {
       const fs::path    state_file = dir / (checkpoint_name(step) + ".state");
       const std::string why        = read_state(state_file, state);
@@ -219,7 +222,7 @@ namespace hemicontact
         return "'" + state_file.string() + "' lists no files";
       for (const std::string &expected : state.file_signatures)
         {
-          const std::string file = expected.substr(0, expected.find(' '));
+          const std::string file  = expected.substr(0, expected.find(' '));
           const std::string found = file_signature(dir / file);
           if (found != expected)
             return "'" + (dir / file).string() +
@@ -282,7 +285,8 @@ namespace hemicontact
       return steps;
     }
 
-    /** The file naming the run whose output is in OUTPUT (in OUTPUT/checkpoint). */
+    /** The file naming the run whose output is in OUTPUT (in
+     * OUTPUT/checkpoint). */
     const std::string run_file_name = "run";
 
     /** The run id in @p dir's run file, "" if there is none. */
@@ -301,8 +305,8 @@ namespace hemicontact
     {
       std::random_device rd;
       std::ostringstream s;
-      s << std::hex << std::setw(8) << std::setfill('0') << rd()
-        << std::setw(8) << std::setfill('0') << rd();
+      s << std::hex << std::setw(8) << std::setfill('0') << rd() << std::setw(8)
+        << std::setfill('0') << rd();
       return s.str();
     }
 
@@ -330,7 +334,7 @@ namespace hemicontact
     template <int dim>
     void
     branches_to_field(const std::vector<ContactNode<dim>> &nodes,
-                      TrilinosWrappers::MPI::Vector &      field)
+                      TrilinosWrappers::MPI::Vector       &field)
     {
       for (const ContactNode<dim> &node : nodes)
         if (node.locally_owned)
@@ -364,9 +368,10 @@ namespace hemicontact
             AssertIndexRange(i, directions.size());
             // sum e e over nodal::constrained_directions(): nu nu for normal
             // stick, the tangent plane's projector for tangential stick
-            const double normal_part = node.normal * (directions[i] * node.normal);
-            node.normal_branch = normal_part > 0.5 ? NormalBranch::stick :
-                                                     NormalBranch::separating;
+            const double normal_part =
+              node.normal * (directions[i] * node.normal);
+            node.normal_branch     = normal_part > 0.5 ? NormalBranch::stick :
+                                                         NormalBranch::separating;
             node.tangential_branch = trace(directions[i]) - normal_part > 0.5 ?
                                        TangentialBranch::stick :
                                        TangentialBranch::slip;
@@ -384,7 +389,8 @@ namespace hemicontact
      * beyond @p step that a resumed run left behind).
      */
     void
-    keep_last_two_checkpoints(const fs::path &dir, const std::string &run,
+    keep_last_two_checkpoints(const fs::path    &dir,
+                              const std::string &run,
                               const unsigned int step)
     {
       std::vector<unsigned int> kept;
@@ -392,7 +398,8 @@ namespace hemicontact
         {
           CheckpointState state;
           if (s <= step &&
-              read_state(dir / (checkpoint_name(s) + ".state"), state).empty() &&
+              read_state(dir / (checkpoint_name(s) + ".state"), state)
+                .empty() &&
               state.run_id == run)
             kept.push_back(s);
         }
@@ -425,7 +432,7 @@ namespace hemicontact
   template <int dim>
   Checkpointer<dim>::Checkpointer(const Parameters &parameters,
                                   MPI_Comm          comm,
-                                  TimerOutput &     timer)
+                                  TimerOutput      &timer)
     : parameters(parameters)
     , mpi_communicator(comm)
     , timer(timer)
@@ -435,7 +442,7 @@ namespace hemicontact
   CheckpointState::energy_balance() const
   {
     const std::vector<double> &v = energy;
-    EnergyBalance e;
+    EnergyBalance              e;
     AssertDimension(v.size(), n_energy_values); // read_state() checks it
     e.kinetic               = v[0];
     e.elastic               = v[1];
@@ -488,11 +495,12 @@ namespace hemicontact
         // checkpoints of an earlier run no longer match the output this
         // run replaces: from now on the directory names this run, so that
         // a resume does not take them (its first checkpoint removes them)
-        const fs::path  dir = fs::path(parameters.output.directory) / "checkpoint";
+        const fs::path dir =
+          fs::path(parameters.output.directory) / "checkpoint";
         std::error_code ec;
         if (fs::is_directory(dir, ec))
-          error = write_atomically((dir / run_file_name).string(),
-                                   run_id + "\n");
+          error =
+            write_atomically((dir / run_file_name).string(), run_id + "\n");
       }
     if (!resumed)
       throw_if_any(error, mpi_communicator);
@@ -506,19 +514,19 @@ namespace hemicontact
   template <int dim>
   void
   Checkpointer<dim>::write(const ContactProblem<dim> &problem,
-                           RunOutput<dim> &           output)
+                           RunOutput<dim>            &output)
   {
     output.finish_solution_output(); // the series it saves lists every write
     const std::vector<SeriesRecord> &series = output.series();
     require_space(problem, series); // p4est aborts on a failed write
-    const typename ContactProblem<dim>::State s = problem.state();
-    const unsigned int step_number = s.step_number;
-    TimerOutput::Scope t(timer, "checkpoint");
-    const fs::path     dir  = fs::path(parameters.output.directory) / "checkpoint";
-    const fs::path     aside = dir / "writing";
-    const std::string  name = checkpoint_name(step_number);
-    const bool         root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
-    std::string        error;
+    const typename ContactProblem<dim>::State s           = problem.state();
+    const unsigned int                        step_number = s.step_number;
+    TimerOutput::Scope                        t(timer, "checkpoint");
+    const fs::path dir   = fs::path(parameters.output.directory) / "checkpoint";
+    const fs::path aside = dir / "writing";
+    const std::string name = checkpoint_name(step_number);
+    const bool  root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+    std::string error;
     if (root)
       {
         fs::remove_all(aside);
@@ -546,7 +554,8 @@ namespace hemicontact
                      aside / (name + ".fields." +
                               std::to_string(Utilities::MPI::this_mpi_process(
                                 mpi_communicator))),
-                     s.locally_owned_dofs, owned_fields),
+                     s.locally_owned_dofs,
+                     owned_fields),
                    mpi_communicator);
     else
       {
@@ -554,7 +563,8 @@ namespace hemicontact
         std::vector<const TrilinosWrappers::MPI::Vector *> fields;
         for (unsigned int i = 0; i < ghosted.size(); ++i)
           {
-            ghosted[i].reinit(s.locally_owned_dofs, s.locally_relevant_dofs,
+            ghosted[i].reinit(s.locally_owned_dofs,
+                              s.locally_relevant_dofs,
                               mpi_communicator);
             ghosted[i] = *owned_fields[i];
             fields.push_back(&ghosted[i]);
@@ -612,11 +622,11 @@ namespace hemicontact
   template <int dim>
   void
   Checkpointer<dim>::require_space(
-    const ContactProblem<dim> &        problem,
+    const ContactProblem<dim>       &problem,
     const std::vector<SeriesRecord> &series) const
   {
-    const typename ContactProblem<dim>::State s = problem.state();
-    const Discretization<dim> &discretization = s.discretization;
+    const typename ContactProblem<dim>::State s              = problem.state();
+    const Discretization<dim>                &discretization = s.discretization;
     const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
     // w_n, u_n and the branches on every cell (p4est's data file) or at
     // every dof with its index (the rank files of a simplex mesh), the
@@ -630,15 +640,14 @@ namespace hemicontact
       bytes += std::uintmax_t(s.dof_handler.n_dofs()) * 4 * sizeof(double) +
                Utilities::MPI::n_mpi_processes(mpi_communicator) * 8;
     else
-      bytes += std::uintmax_t(
-                 discretization.triangulation->n_global_active_cells()) *
-               (3 * discretization.fe->n_dofs_per_cell() * sizeof(double) +
-                64);
+      bytes +=
+        std::uintmax_t(discretization.triangulation->n_global_active_cells()) *
+        (3 * discretization.fe->n_dofs_per_cell() * sizeof(double) + 64);
     std::string error;
     if (root)
       {
-        const fs::path  dir = fs::path(parameters.output.directory) /
-                             "checkpoint";
+        const fs::path dir =
+          fs::path(parameters.output.directory) / "checkpoint";
         std::error_code ec;
         // a checkpoint write cut short is deleted before the next one
         for (const auto &entry : fs::directory_iterator(dir / "writing", ec))
@@ -646,13 +655,15 @@ namespace hemicontact
             const std::uintmax_t size = fs::file_size(entry.path(), ec);
             bytes -= std::min(bytes, ec ? 0 : size);
           }
-        error = free_space_shortfall(
-          fs::is_directory(dir, ec) ? dir.string() : parameters.output.directory,
-          bytes);
+        error = free_space_shortfall(fs::is_directory(dir, ec) ?
+                                       dir.string() :
+                                       parameters.output.directory,
+                                     bytes);
         if (!error.empty())
           error = "cannot write the checkpoint of step " +
                   std::to_string(s.step_number) + " in '" + dir.string() +
-                  "': " + error + "; nothing of it was written, the earlier "
+                  "': " + error +
+                  "; nothing of it was written, the earlier "
                   "checkpoints are unchanged.";
       }
     throw_if_any(error, mpi_communicator);
@@ -662,7 +673,7 @@ namespace hemicontact
   const CheckpointState &
   Checkpointer<dim>::read(const unsigned int n_steps, const double time_step)
   {
-    const fs::path     dir = fs::path(parameters.output.directory) / "checkpoint";
+    const fs::path dir = fs::path(parameters.output.directory) / "checkpoint";
     const std::vector<unsigned int> steps = complete_checkpoints(dir);
     require(!steps.empty(),
             "checkpoint: 'resume' is set but '" + dir.string() +
@@ -678,18 +689,18 @@ namespace hemicontact
         const std::string run = recorded_run(dir);
         for (int i = static_cast<int>(steps.size()) - 1; i >= 0; --i)
           {
-            std::string why = checkpoint_damage(dir, steps[i], state);
+            std::string why     = checkpoint_damage(dir, steps[i], state);
             const bool  damaged = !why.empty();
             if (!damaged && state.run_id != run)
-              why =
-                "'" + (dir / (checkpoint_name(steps[i]) + ".state")).string() +
-                "' is of another run than the output in '" +
-                parameters.output.directory + "' (" +
-                (run.empty() ? "'" + (dir / run_file_name).string() +
-                                 "' naming that run is missing" :
-                               "a run started there without --resume after "
-                               "it, and wrote no checkpoint yet") +
-                ")";
+              why = "'" +
+                    (dir / (checkpoint_name(steps[i]) + ".state")).string() +
+                    "' is of another run than the output in '" +
+                    parameters.output.directory + "' (" +
+                    (run.empty() ? "'" + (dir / run_file_name).string() +
+                                     "' naming that run is missing" :
+                                   "a run started there without --resume after "
+                                   "it, and wrote no checkpoint yet") +
+                    ")";
             if (why.empty())
               {
                 chosen = i;
@@ -697,16 +708,17 @@ namespace hemicontact
               }
             damage += (damage.empty() ? "" : "; ") + why;
             std::cerr << "hemicontact: warning: the checkpoint of step "
-                      << steps[i] << (damaged ? " is damaged: " : " is skipped: ")
-                      << why << "."
-                      << (i > 0 ? " Trying the one before it." : "")
+                      << steps[i]
+                      << (damaged ? " is damaged: " : " is skipped: ") << why
+                      << "." << (i > 0 ? " Trying the one before it." : "")
                       << std::endl;
           }
       }
     chosen = Utilities::MPI::broadcast(mpi_communicator, chosen, 0);
     damage = Utilities::MPI::broadcast(mpi_communicator, damage, 0);
-    require(chosen >= 0, "checkpoint: no checkpoint in '" + dir.string() +
-                           "' can be resumed from: " + damage + ".");
+    require(chosen >= 0,
+            "checkpoint: no checkpoint in '" + dir.string() +
+              "' can be resumed from: " + damage + ".");
     state = Utilities::MPI::broadcast(mpi_communicator, state, 0);
     name  = checkpoint_name(steps[chosen]);
     require(std::abs(state.time_step - time_step) <= 1e-12 * time_step &&
@@ -732,7 +744,7 @@ namespace hemicontact
       std::string changes;
       for (const auto &[entry, value] : now)
         {
-          const auto it = before.find(entry);
+          const auto        it = before.find(entry);
           const std::string old_value =
             it == before.end() ? "(not recorded)" : it->second;
           if (old_value != value)
@@ -748,12 +760,13 @@ namespace hemicontact
     }
     {
       // ... and so must the mesh file's content
-      const std::string now = Utilities::MPI::broadcast(
-        mpi_communicator,
-        Utilities::MPI::this_mpi_process(mpi_communicator) == 0 ?
-          mesh_signature_of(parameters.geometry) :
-          std::string(),
-        0);
+      const std::string now =
+        Utilities::MPI::broadcast(mpi_communicator,
+                                  Utilities::MPI::this_mpi_process(
+                                    mpi_communicator) == 0 ?
+                                    mesh_signature_of(parameters.geometry) :
+                                    std::string(),
+                                  0);
       const std::string file = parameters.geometry.mesh_file;
       require(now == state.mesh_signature,
               "checkpoint: the mesh file '" + file +
@@ -802,18 +815,20 @@ namespace hemicontact
   template <int dim>
   void
   Checkpointer<dim>::load_fields(
-    const DoFHandler<dim> &                             dof_handler,
-    const IndexSet &                                    owned,
+    const DoFHandler<dim>                              &dof_handler,
+    const IndexSet                                     &owned,
     const std::vector<TrilinosWrappers::MPI::Vector *> &fields)
   {
     const fs::path dir = fs::path(parameters.output.directory) / "checkpoint";
     if (dof_handler.get_fe().reference_cell().is_simplex())
       {
-        const std::string why = read_rank_fields(
-          dir / (name + ".fields." +
-                 std::to_string(
-                   Utilities::MPI::this_mpi_process(mpi_communicator))),
-          owned, fields);
+        const std::string why =
+          read_rank_fields(dir /
+                             (name + ".fields." +
+                              std::to_string(Utilities::MPI::this_mpi_process(
+                                mpi_communicator))),
+                           owned,
+                           fields);
         for (TrilinosWrappers::MPI::Vector *v : fields)
           v->compress(VectorOperation::insert);
         require(Utilities::MPI::min(why.empty() ? 1 : 0, mpi_communicator) == 1,
@@ -827,7 +842,7 @@ namespace hemicontact
       {
         parallel::distributed::SolutionTransfer<dim,
                                                 TrilinosWrappers::MPI::Vector>
-          transfer(dof_handler);
+                                                     transfer(dof_handler);
         std::vector<TrilinosWrappers::MPI::Vector *> targets(fields);
         transfer.deserialize(targets);
       }

@@ -1,8 +1,8 @@
 #include <deal.II/base/mpi.h>
 
-#include <hemicontact/solver/active_set_newton.h>
-#include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/model/contact_step.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/solver/active_set_newton.h>
 
 #include <vector>
 
@@ -15,7 +15,8 @@ namespace hemicontact
     template <int dim>
     void
     count_branches(const std::vector<ContactNode<dim>> &contact_nodes,
-                   MPI_Comm mpi_communicator, StepStatistics &stats)
+                   MPI_Comm                             mpi_communicator,
+                   StepStatistics                      &stats)
     {
       // one count per branch, summed over the ranks
       std::vector<unsigned int> counts(5, 0);
@@ -46,10 +47,18 @@ namespace hemicontact
   StepStatistics
   ContactProblem<dim>::solve_step()
   {
-    ContactStep<dim> step({step_matrix, step_rhs, base_constraints,
-                           locally_owned_dofs, locally_relevant_dofs,
-                           contact_nodes, *law, *friction, linear_solver,
-                           preconditioner, timer, mpi_communicator},
+    ContactStep<dim>      step({step_matrix,
+                                step_rhs,
+                                base_constraints,
+                                locally_owned_dofs,
+                                locally_relevant_dofs,
+                                contact_nodes,
+                                *law,
+                                *friction,
+                                linear_solver,
+                                preconditioner,
+                                timer,
+                                mpi_communicator},
                           parameters);
     const ActiveSetNewton newton(newton_settings(parameters), &timer);
 
@@ -75,6 +84,8 @@ namespace hemicontact
     return stats;
   }
 
-  template StepStatistics ContactProblem<2>::solve_step();
-  template StepStatistics ContactProblem<3>::solve_step();
+  template StepStatistics
+  ContactProblem<2>::solve_step();
+  template StepStatistics
+  ContactProblem<3>::solve_step();
 } // namespace hemicontact
