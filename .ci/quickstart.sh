@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages="libdeal.ii-dev numdiff openmpi-bin cmake make g++ perl jupyter-nbconvert python3-ipykernel python3-matplotlib python3-pandas python3-nbformat python3-meshio python3-h5py"
+packages="libdeal.ii-dev numdiff openmpi-bin cmake make g++ perl jupyter-nbconvert python3-ipykernel python3-matplotlib python3-pandas python3-nbformat python3-meshio python3-h5py clang-format"
 
 install_missing() {
   local missing=""

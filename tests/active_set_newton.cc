@@ -8,21 +8,21 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <hemicontact/solver/active_set_newton.h>
 #include <hemicontact/base/exceptions.h>
-
-#include "tests.h"
+#include <hemicontact/solver/active_set_newton.h>
 
 #include <cmath>
 #include <vector>
+
+#include "tests.h"
 
 using namespace hemicontact;
 using namespace dealii;
 
 namespace
 {
-  constexpr unsigned int n       = 8;
-  constexpr double       penalty = 50;
+  constexpr unsigned int          n       = 8;
+  constexpr double                penalty = 50;
   const std::vector<unsigned int> contact = {1, 3, 5, 7};
 
   FullMatrix<double>
@@ -98,7 +98,8 @@ namespace
     }
 
     unsigned int
-    update_branches(const VectorType &w, const VectorType &,
+    update_branches(const VectorType &w,
+                    const VectorType &,
                     const unsigned int) override
     {
       energies.push_back(energy(w));
@@ -123,7 +124,9 @@ namespace
     }
 
     unsigned int
-    solve_linearized(const VectorType &, const double, const double,
+    solve_linearized(const VectorType &,
+                     const double,
+                     const double,
                      VectorType &trial) override
     {
       from_serial(solve_on(active), trial);
@@ -190,7 +193,7 @@ main(int argc, char **argv)
   out() << "branch sets consistent with their minimiser: " << n_consistent
         << "\n";
 
-  const IndexSet all = complete_index_set(n);
+  const IndexSet            all = complete_index_set(n);
   ActiveSetNewton::Settings settings;
   settings.tolerance = 1e-12;
   for (const double start : {0., 1., -3.})
@@ -204,8 +207,8 @@ main(int argc, char **argv)
       error -= exact;
       bool decreasing = true;
       for (unsigned int i = 1; i < problem.energies.size(); ++i)
-        decreasing = decreasing && problem.energies[i] <=
-                                     problem.energies[i - 1] + 1e-14;
+        decreasing =
+          decreasing && problem.energies[i] <= problem.energies[i - 1] + 1e-14;
       out() << "start " << start << ": " << report.newton_iterations
             << " Newton iterations, " << report.linear_iterations
             << " linear solves, error "
@@ -228,7 +231,7 @@ main(int argc, char **argv)
   catch (const SolverFailure &failure)
     {
       const std::string message = failure.what();
-      out() << "max iterations 1: "
-            << message.substr(0, message.find(':')) << "\n";
+      out() << "max iterations 1: " << message.substr(0, message.find(':'))
+            << "\n";
     }
 }

@@ -15,9 +15,9 @@
 // - at the finest level the adaptive E_V and E_u lie below 0.95 times the
 //   uniform errors at the adaptive mean dofs (log-log interpolated or
 //   extrapolated; about 0.87 and 0.80 when written).
-#include <hemicontact/verification/convergence_study.h>
-#include <hemicontact/laws/normal_law.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/laws/normal_law.h>
+#include <hemicontact/verification/convergence_study.h>
 
 #include <cmath>
 #include <iomanip>
@@ -40,7 +40,8 @@ namespace
     "subsection adaptivity\n  set max cells = 25\n  set max level = 5\n"
     "  set min level = 1\nend\n";
 
-  /** The reduced study on adaptive or uniform ('adaptivity/interval = 0') meshes. */
+  /** The reduced study on adaptive or uniform ('adaptivity/interval = 0')
+   * meshes. */
   std::vector<LevelResult>
   study(const bool adaptive, Parameters &parameters)
   {
@@ -50,11 +51,12 @@ namespace
       prm,
       std::string(SOURCE_DIR) +
         "/../prm/verification/mms_2d_quad_exponential_adaptive.prm",
-      overrides + "subsection adaptivity\n  set interval = " +
-        (adaptive ? "1" : "0") +
+      overrides +
+        "subsection adaptivity\n  set interval = " + (adaptive ? "1" : "0") +
         "\nend\n"
         "subsection output\n  set terminal = quiet\n"
-        "  set directory = output-" + name + "\nend\n");
+        "  set directory = output-" +
+        name + "\nend\n");
     return run_convergence_study<2>(parameters, prm, MPI_COMM_WORLD);
   }
 
@@ -68,9 +70,9 @@ namespace
         x.push_back(std::log(level.mean_dofs));
         y.push_back(std::log(level.errors.*e));
       }
-    const double n  = x.size();
-    const double mx = std::accumulate(x.begin(), x.end(), 0.) / n;
-    const double my = std::accumulate(y.begin(), y.end(), 0.) / n;
+    const double n   = x.size();
+    const double mx  = std::accumulate(x.begin(), x.end(), 0.) / n;
+    const double my  = std::accumulate(y.begin(), y.end(), 0.) / n;
     double       sxy = 0, sxx = 0;
     for (unsigned int i = 0; i < x.size(); ++i)
       {
@@ -94,8 +96,9 @@ namespace
    * extrapolated along the last two).
    */
   double
-  uniform_at(const std::vector<LevelResult> &u, double ErrorNorms::*e,
-             const double dofs)
+  uniform_at(const std::vector<LevelResult> &u,
+             double ErrorNorms::*e,
+             const double        dofs)
   {
     for (unsigned int i = 1; i < u.size(); ++i)
       if (dofs <= u[i].mean_dofs || i + 1 == u.size())
@@ -154,22 +157,21 @@ main(int argc, char **argv)
       const double uniform_slope = fitted_slope(uniform, e);
       const bool   time_error    = e == &ErrorNorms::E_H;
       const bool   ok_rate       = rate >= 0.4;
-      const bool   ok_slope = time_error || slope >= uniform_slope - 0.05;
+      const bool   ok_slope      = time_error || slope >= uniform_slope - 0.05;
       out() << name << ": rate against mean dofs >= 0.4: " << yes_no(ok_rate);
       if (!time_error)
         out() << ", fitted slope >= uniform - 0.05: " << yes_no(ok_slope);
       out() << std::endl;
       if (!ok_rate || !ok_slope)
-        numbers << "  " << name << ": last rate " << rate << ", slope "
-                << slope << ", uniform slope " << uniform_slope << "\n";
+        numbers << "  " << name << ": last rate " << rate << ", slope " << slope
+                << ", uniform slope " << uniform_slope << "\n";
     }
   for (const auto &[name, e] :
        {std::pair<const char *, double ErrorNorms::*>{"E_V", &ErrorNorms::E_V},
         {"E_u", &ErrorNorms::E_u}})
     {
-      const double ratio =
-        adaptive.back().errors.*e /
-        uniform_at(uniform, e, adaptive.back().mean_dofs);
+      const double ratio = adaptive.back().errors.*e /
+                           uniform_at(uniform, e, adaptive.back().mean_dofs);
       out() << name << " below 0.95 times the uniform error at the same dofs: "
             << yes_no(ratio < 0.95) << std::endl;
       if (ratio >= 0.95)

@@ -7,8 +7,8 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/problem/contact_problem.h>
 
 #include "tests.h"
 
@@ -17,15 +17,17 @@ using namespace hemicontact;
 namespace
 {
   double
-  max_difference(const ContactProblem<2> &            problem,
+  max_difference(const ContactProblem<2>             &problem,
                  const TrilinosWrappers::MPI::Vector &field,
-                 const std::string &                  expression)
+                 const std::string                   &expression)
   {
     FunctionParser<2> exact(2);
     exact.initialize("x,y", expression, {});
     TrilinosWrappers::MPI::Vector interpolant(field);
-    VectorTools::interpolate(problem.get_mapping(), problem.get_dof_handler(),
-                             exact, interpolant);
+    VectorTools::interpolate(problem.get_mapping(),
+                             problem.get_dof_handler(),
+                             exact,
+                             interpolant);
     interpolant -= field;
     return interpolant.linfty_norm();
   }
@@ -63,8 +65,10 @@ subsection output
 end
 )";
   ParameterHandler                 prm;
-  const Parameters parameters = read_parameters_from_string(prm, text);
-  ContactProblem<2> problem(parameters, create_contact_laws(prm), MPI_COMM_WORLD);
+  const Parameters  parameters = read_parameters_from_string(prm, text);
+  ContactProblem<2> problem(parameters,
+                            create_contact_laws(prm),
+                            MPI_COMM_WORLD);
   problem.setup();
 
   const auto &tria = problem.get_dof_handler().get_triangulation();

@@ -20,7 +20,7 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const std::thread::id caller = std::this_thread::get_id();
+  const std::thread::id                    caller = std::this_thread::get_id();
 
   BackgroundWriter writer;
   out() << "pending before any job: " << writer.pending() << "\n";
@@ -77,8 +77,8 @@ main(int argc, char **argv)
   struct Buffer
   {
     Buffer(const std::atomic<bool> &release,
-           std::thread::id &        freed_on,
-           std::atomic<int> &       freed)
+           std::thread::id         &freed_on,
+           std::atomic<int>        &freed)
       : release(release)
       , freed_on(freed_on)
       , freed(freed)
@@ -91,19 +91,18 @@ main(int argc, char **argv)
       ++freed;
     }
     const std::atomic<bool> &release;
-    std::thread::id &        freed_on;
-    std::atomic<int> &       freed;
+    std::thread::id         &freed_on;
+    std::atomic<int>        &freed;
   };
   std::atomic<bool> release_buffers{false};
   std::thread::id   freed_on = caller;
   std::atomic<int>  freed{0};
-  writer.retire(
-    {std::make_shared<Buffer>(release_buffers, freed_on, freed),
-     std::make_shared<Buffer>(release_buffers, freed_on, freed),
-     nullptr});
+  writer.retire({std::make_shared<Buffer>(release_buffers, freed_on, freed),
+                 std::make_shared<Buffer>(release_buffers, freed_on, freed),
+                 nullptr});
   // the caller goes on while the buffers wait to be freed
   out() << "retired buffers freed when retire returns: " << freed;
-  release_buffers  = true;
+  release_buffers      = true;
   int freed_before_job = -1;
   writer.start(
     [&]() -> std::string {

@@ -18,10 +18,9 @@ namespace
   {
     unsigned int n_reductions = 0;
     const double theta =
-      backtracking_step_length(change, /*scale=*/1, /*min=*/1e-3,
-                               n_reductions);
-    out() << "  " << name << ": theta = " << theta << " after "
-          << n_reductions << " halvings\n";
+      backtracking_step_length(change, /*scale=*/1, /*min=*/1e-3, n_reductions);
+    out() << "  " << name << ": theta = " << theta << " after " << n_reductions
+          << " halvings\n";
   }
 } // namespace
 

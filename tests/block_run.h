@@ -6,8 +6,8 @@
 // In 2D 3 steps of k = 0.04 (as in tests/block_2d_short.prm), in 3D 8 steps
 // of k = 0.01875 (the nearest divisor of 0.15 to the 0.02 of
 // tests/block_3d_short.prm).
-#include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/problem/contact_problem.h>
 
 #include <fstream>
 #include <functional>
@@ -23,12 +23,13 @@ struct BlockRun
 
 template <int dim>
 BlockRun
-run_block(const std::string &file, const std::string &settings,
+run_block(const std::string                                      &file,
+          const std::string                                      &settings,
           const std::function<void(hemicontact::SolverTuning &)> &tune = {})
 {
   using namespace hemicontact;
-  std::ifstream     in(file);
-  std::stringstream text;
+  std::ifstream      in(file);
+  std::stringstream  text;
   const unsigned int n_steps  = (dim == 2 ? 3 : 8);
   const double       end_time = (dim == 2 ? 0.12 : 0.15);
   text.precision(17);
@@ -41,7 +42,8 @@ run_block(const std::string &file, const std::string &settings,
   Parameters parameters = read_parameters_from_string(prm, text.str());
   if (tune)
     tune(parameters.solver_tuning);
-  ContactProblem<dim> problem(parameters, create_contact_laws(prm),
+  ContactProblem<dim> problem(parameters,
+                              create_contact_laws(prm),
                               MPI_COMM_WORLD);
   problem.setup();
   BlockRun result;

@@ -39,9 +39,9 @@ namespace
   void
   compare_following(const std::string &file, const std::string &extra)
   {
-    const BlockRun standard  = run_block<dim>(file, extra);
-    const BlockRun following = run_block<dim>(
-      file, extra, [](SolverTuning &tuning) {
+    const BlockRun standard = run_block<dim>(file, extra);
+    const BlockRun following =
+      run_block<dim>(file, extra, [](SolverTuning &tuning) {
         tuning.constrained_amg_follows_branches = true;
       });
     out() << "  " << dim << "D following vs first-iteration constraints: "
@@ -62,6 +62,7 @@ main(int argc, char **argv)
   compare<2>(SOURCE_DIR "/block_2d_short.prm");
   compare<3>(SOURCE_DIR "/block_3d_short.prm",
              "subsection geometry\n  set global refinements = 2\nend\n");
-  compare_following<2>(SOURCE_DIR "/block_2d_short.prm",
-                       "subsection geometry\n  set global refinements = 4\nend\n");
+  compare_following<2>(
+    SOURCE_DIR "/block_2d_short.prm",
+    "subsection geometry\n  set global refinements = 4\nend\n");
 }

@@ -4,9 +4,9 @@
 // E_u at the finest pair lie in [0.85, 1.3], that E_H converges at least at
 // first order, and that every contact branch occurs on a share of at least
 // 5% of the (node, step) pairs.
-#include <hemicontact/verification/convergence_study.h>
-#include <hemicontact/laws/normal_law.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/laws/normal_law.h>
+#include <hemicontact/verification/convergence_study.h>
 
 #include <cmath>
 #include <iomanip>
@@ -30,11 +30,14 @@ namespace
       "subsection convergence study\n  set type = coupled\n"
       "  set levels = 3\nend\n"
       "subsection output\n  set terminal = quiet\n"
-      "  set directory = output-" + name + "\nend\n";
+      "  set directory = output-" +
+      name + "\nend\n";
     ParameterHandler prm;
-    const Parameters parameters = read_parameters(
-      prm, std::string(SOURCE_DIR) + "/../prm/verification/" + name + ".prm",
-      overrides);
+    const Parameters parameters =
+      read_parameters(prm,
+                      std::string(SOURCE_DIR) + "/../prm/verification/" + name +
+                        ".prm",
+                      overrides);
     const std::vector<LevelResult> r =
       run_convergence_study<dim>(parameters, prm, MPI_COMM_WORLD);
 
@@ -58,11 +61,10 @@ namespace
     out() << line.str() << std::endl;
     // the numbers themselves only when a check fails (they are not
     // reproducible to the last digit across machines)
-    const bool ok = order(&ErrorNorms::E_V) >= 0.85 &&
-                    order(&ErrorNorms::E_V) <= 1.3 &&
-                    order(&ErrorNorms::E_u) >= 0.85 &&
-                    order(&ErrorNorms::E_u) <= 1.3 &&
-                    order(&ErrorNorms::E_H) >= 0.9 && all_branches;
+    const bool ok =
+      order(&ErrorNorms::E_V) >= 0.85 && order(&ErrorNorms::E_V) <= 1.3 &&
+      order(&ErrorNorms::E_u) >= 0.85 && order(&ErrorNorms::E_u) <= 1.3 &&
+      order(&ErrorNorms::E_H) >= 0.9 && all_branches;
     if (!ok)
       out() << std::fixed << std::setprecision(3) << "  orders: E_V "
             << order(&ErrorNorms::E_V) << ", E_u " << order(&ErrorNorms::E_u)

@@ -6,8 +6,8 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
 
-#include <hemicontact/expressions/expression.h>
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/expressions/expression.h>
 
 #include "tests.h"
 
@@ -18,33 +18,33 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const std::vector<std::string>      variables = {"x", "y", "t"};
-  const std::map<std::string, double> constants = {{"c", 0.15}};
-  const std::vector<std::string>      cases     = {
-    "x < y",
-    "x <= c",
-    "x > y",
-    "x >= 0.15",
-    "x == c",
-    "x != 0.15",
-    "x < 0.2 && y > 0",
-    "x < 0.2 || y > 0.5",
-    "x > 0 || y > 0 && t > 0.5",
-    "1 + x < y * 2 - t",
-    "x < y == t > 0.5",
-    "2^x > 1.1 && -x < 0",
-    "0.3*(x < 0.4) + 0.2*(x >= 0.4)",
-    "max(x, y) > t || x*y != 0",
-    "x < 0.2 ? y : t",
-    "x < y ? x + 1 : y*2 - t",
-    "x > 0 ? y > 0 ? 1 : 2 : 3",
-    "x > 0 && t > 0.5 ? sin(x) : 0.2 + (x < 0.4 ? 0 : 0.1)"};
+  const std::vector<std::string>           variables = {"x", "y", "t"};
+  const std::map<std::string, double>      constants = {{"c", 0.15}};
+  const std::vector<std::string>           cases     = {
+                  "x < y",
+                  "x <= c",
+                  "x > y",
+                  "x >= 0.15",
+                  "x == c",
+                  "x != 0.15",
+                  "x < 0.2 && y > 0",
+                  "x < 0.2 || y > 0.5",
+                  "x > 0 || y > 0 && t > 0.5",
+                  "1 + x < y * 2 - t",
+                  "x < y == t > 0.5",
+                  "2^x > 1.1 && -x < 0",
+                  "0.3*(x < 0.4) + 0.2*(x >= 0.4)",
+                  "max(x, y) > t || x*y != 0",
+                  "x < 0.2 ? y : t",
+                  "x < y ? x + 1 : y*2 - t",
+                  "x > 0 ? y > 0 ? 1 : 2 : 3",
+                  "x > 0 && t > 0.5 ? sin(x) : 0.2 + (x < 0.4 ? 0 : 0.1)"};
 
   bool all_equal = true;
   for (const std::string &text : cases)
     {
-      const Expression      f(text, variables, constants, "test");
-      FunctionParser<2>     parser(1);
+      const Expression  f(text, variables, constants, "test");
+      FunctionParser<2> parser(1);
       parser.initialize("x,y,t", text, constants, /*time_dependent=*/true);
       unsigned int n_points = 0, n_equal = 0, n_true = 0;
       for (const double x : {-0.35, 0.15, 0.4, 0.45})
@@ -66,7 +66,9 @@ main(int argc, char **argv)
 
   try
     {
-      const Expression f("x < 0.5 ? 0.3", variables, constants,
+      const Expression f("x < 0.5 ? 0.3",
+                         variables,
+                         constants,
                          "friction bound");
       out() << "'?' without ':' accepted: NO\n";
     }

@@ -13,10 +13,10 @@
 #include <hemicontact/expressions/expression_function.h>
 #include <hemicontact/model/problem_data.h>
 
-#include "tests.h"
-
 #include <iomanip>
 #include <thread>
+
+#include "tests.h"
 
 using namespace dealii;
 using namespace hemicontact;
@@ -59,8 +59,10 @@ main(int argc, char **argv)
 
   out() << "values at t = 0.3 with " << constants << ":\n";
   for (const std::string &text :
-       {"0; -P*pos(x - 0.25)^2", "if(x < 0.5, S*t, -1); x > 0.4 ? y : 2*y",
-        "-x^2; 2^3^2 - 2^-1", "2*t*(x > 1.999); -0.5*(y > 0.499)",
+       {"0; -P*pos(x - 0.25)^2",
+        "if(x < 0.5, S*t, -1); x > 0.4 ? y : 2*y",
+        "-x^2; 2^3^2 - 2^-1",
+        "2*t*(x > 1.999); -0.5*(y > 0.499)",
         "S*sin(pi*t)*x/4; -P*sin(2*pi*t)*(0.25 + x/4)",
         "0; -P*sin(2*pi*t)*exp(-4*x^2)",
         "max(x, y) + min(x, y) + abs(x); _pi - pi + _e - exp(1) + sign(x)",
@@ -79,11 +81,12 @@ main(int argc, char **argv)
 
   // the same bits as muparser for the expressions of the shipped files
   const std::map<std::string, double> values = parse_constants(constants);
-  bool same = true;
+  bool                                same   = true;
   for (const std::string &text :
        {"S*sin(pi*t)*x/4; -P*sin(2*pi*t)*(0.25 + x/4)",
         "S*sin(pi*t)*x/4*0.8; S*sin(pi*t)*x/4*0.6",
-        "2*t*(x > 1.999); -0.5*(y > 0.499)", "0; -P*sin(2*pi*t)*exp(-4*x^2)",
+        "2*t*(x > 1.999); -0.5*(y > 0.499)",
+        "0; -P*sin(2*pi*t)*exp(-4*x^2)",
         "-x^2 + 2^3^2; if(x < 0.5, S*t, -1)"})
     {
       const auto        f = parse_function<2>(text, 2, constants, "test");
@@ -98,14 +101,15 @@ main(int argc, char **argv)
               same = same && f->value(p, c) == parser.value(p, c);
         }
     }
-  out() << "the same bits as FunctionParser: " << (same ? "yes" : "NO")
-        << '\n';
+  out() << "the same bits as FunctionParser: " << (same ? "yes" : "NO") << '\n';
 
   // two threads at once
   {
-    const auto f = parse_function<2>(
-      "S*sin(pi*t)*x/4 + pos(y - 0.2)^3; if(x > 0, y, -y)", 2, constants,
-      "test");
+    const auto f =
+      parse_function<2>("S*sin(pi*t)*x/4 + pos(y - 0.2)^3; if(x > 0, y, -y)",
+                        2,
+                        constants,
+                        "test");
     f->set_time(0.4);
     std::vector<Point<2>> points;
     for (unsigned int i = 0; i < 200; ++i)
@@ -131,9 +135,13 @@ main(int argc, char **argv)
   }
 
   for (const std::string &text : std::vector<std::string>{
-         "0; sin(x", "0; asin(x)", "q*t; 0", "if(x, 1); 0", "0; 1 +* x",
-        std::string(30, '(') + "x" + std::string(30, ')') + "; 0",
-        std::string(600, '(') + "x" + std::string(600, ')') + "; 0"})
+         "0; sin(x",
+         "0; asin(x)",
+         "q*t; 0",
+         "if(x, 1); 0",
+         "0; 1 +* x",
+         std::string(30, '(') + "x" + std::string(30, ')') + "; 0",
+         std::string(600, '(') + "x" + std::string(600, ')') + "; 0"})
     try
       {
         parse_function<2>(text, 2, constants, "body force");

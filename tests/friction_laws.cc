@@ -10,13 +10,13 @@
 // gradient is that force.
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <hemicontact/model/contact_node.h>
-#include <hemicontact/laws/friction_law.h>
+#include <hemicontact/base/exceptions.h>
 #include <hemicontact/laws/friction/piecewise_linear_friction.h>
 #include <hemicontact/laws/friction/slip_rate_weakening.h>
 #include <hemicontact/laws/friction/tresca.h>
-#include <hemicontact/base/exceptions.h>
+#include <hemicontact/laws/friction_law.h>
 #include <hemicontact/laws/normal/no_normal_resistance.h>
+#include <hemicontact/model/contact_node.h>
 
 #include <cmath>
 #include <functional>
@@ -36,7 +36,8 @@ namespace
   }
 
   void
-  check_law(const FrictionLaw &law, const double bound,
+  check_law(const FrictionLaw         &law,
+            const double               bound,
             const std::vector<double> &kinks)
   {
     const double alpha = law.relaxed_monotonicity_constant(bound);
@@ -57,13 +58,14 @@ namespace
     bool derivative_ok = true, primitive_ok = true, force_ok = true;
     for (const double s : points)
       {
-        const double h  = 1e-7;
-        const double fd = (law.remainder(bound, s + h) - law.remainder(bound, s)) / h;
+        const double h = 1e-7;
+        const double fd =
+          (law.remainder(bound, s + h) - law.remainder(bound, s)) / h;
         bool near_kink = false;
         for (const double k : kinks)
           near_kink |= std::abs(s - k) < 2 * h;
-        if (!near_kink &&
-            std::abs(fd - law.remainder_derivative(bound, s)) > 1e-5 * (1 + std::abs(fd)))
+        if (!near_kink && std::abs(fd - law.remainder_derivative(bound, s)) >
+                            1e-5 * (1 + std::abs(fd)))
           derivative_ok = false;
 
         const unsigned int n        = 100000;
@@ -71,8 +73,9 @@ namespace
         for (unsigned int i = 0; i < n; ++i)
           {
             const double s0 = s * i / n, s1 = s * (i + 1) / n;
-            integral +=
-              0.5 * (law.remainder(bound, s0) + law.remainder(bound, s1)) * (s1 - s0);
+            integral += 0.5 *
+                        (law.remainder(bound, s0) + law.remainder(bound, s1)) *
+                        (s1 - s0);
           }
         if (std::abs(integral - law.remainder_primitive(bound, s)) > 1e-8)
           primitive_ok = false;
@@ -82,7 +85,8 @@ namespace
           force_ok = false;
       }
     std::cout << "  r(0) = 0: " << yes(law.remainder(bound, 0.) == 0.) << "\n"
-              << "  r' matches difference quotients: " << yes(derivative_ok) << "\n"
+              << "  r' matches difference quotients: " << yes(derivative_ok)
+              << "\n"
               << "  R matches the integral of r: " << yes(primitive_ok) << "\n"
               << "  F >= 0 and phi = F_b s + R: " << yes(force_ok) << "\n";
 
@@ -96,10 +100,10 @@ namespace
     // vector relaxed monotonicity in 2D: (xi1 - xi2).(v1 - v2) >=
     // -alpha |v1 - v2|^2 with xi in dphi(v); at v = 0 the extreme points of
     // the disk of radius F_b
-    bool monotone_ok = true;
-    const auto xi = [&](const Tensor<1, 2> &v) {
+    bool       monotone_ok = true;
+    const auto xi          = [&](const Tensor<1, 2> &v) {
       std::vector<Tensor<1, 2>> result;
-      const double s = v.norm();
+      const double              s = v.norm();
       if (s == 0)
         for (double q = 0; q < 6.28; q += 0.7854)
           result.push_back(bound * Tensor<1, 2>({std::cos(q), std::sin(q)}));
@@ -142,12 +146,13 @@ namespace
 
   /** The law's nodal contact force m (F(|w_t|) w_t/|w_t|) in 3D. */
   Tensor<1, 3>
-  friction_force(const ContactNode<3> &node, const FrictionLaw &law,
-                 const Tensor<1, 3> &w)
+  friction_force(const ContactNode<3> &node,
+                 const FrictionLaw    &law,
+                 const Tensor<1, 3>   &w)
   {
     const Tensor<1, 3> wt = w - (w * node.normal) * node.normal;
-    return node.mass * law.response(node.friction_bound, wt.norm()) / wt.norm() *
-           wt;
+    return node.mass * law.response(node.friction_bound, wt.norm()) /
+           wt.norm() * wt;
   }
 
   void
@@ -155,25 +160,24 @@ namespace
   {
     std::cout << "node with law '" << law.name() << "' (3D, oblique normal)\n";
     ContactNode<3> node;
-    node.normal         = Tensor<1, 3>({0.3, -0.2, 0.9});
-    node.normal        /= node.normal.norm();
+    node.normal = Tensor<1, 3>({0.3, -0.2, 0.9});
+    node.normal /= node.normal.norm();
     node.mass           = 0.7;
     node.friction_bound = 0.8;
     node.c              = 5.;
     const NoNormalResistance none;
 
     // a slipping velocity with no normal part and the exact contact force
-    const auto   t = nodal::tangent_basis(node.normal);
-    Tensor<1, 3> w = 0.12 * t[0] - 0.05 * t[1];
+    const auto         t     = nodal::tangent_basis(node.normal);
+    Tensor<1, 3>       w     = 0.12 * t[0] - 0.05 * t[1];
     const Tensor<1, 3> force = friction_force(node, law, w);
-    const NodeState<3> m =
-      nodal::state(node, w, force, none, law);
-    const Tensor<1, 3> e = m.w_tangential / m.w_tangential.norm();
+    const NodeState<3> m     = nodal::state(node, w, force, none, law);
+    const Tensor<1, 3> e     = m.w_tangential / m.w_tangential.norm();
     std::cout << "  multiplier of the convex part = F_b e: "
-              << yes((m.lambda - node.friction_bound * e).norm() < 1e-14) << "\n"
+              << yes((m.lambda - node.friction_bound * e).norm() < 1e-14)
+              << "\n"
               << "  tangential complementarity vanishes: "
-              << yes(nodal::tangential_complementarity(node, m).norm() <
-                     1e-14)
+              << yes(nodal::tangential_complementarity(node, m).norm() < 1e-14)
               << ", branch slip: "
               << yes(nodal::tangential_branch(node, m) ==
                      TangentialBranch::slip)
@@ -181,16 +185,16 @@ namespace
 
     // the slip linearisation at the solution: the force itself, and the
     // Jacobian of the force in the tangent plane
-    node.tangential_branch         = TangentialBranch::slip;
-    node.normal_branch             = NormalBranch::separating;
-    const NodeLinearization<3> lin = nodal::linearize(node, m, none, law);
-    Tensor<2, 3> projector = unit_symmetric_tensor<3>();
+    node.tangential_branch               = TangentialBranch::slip;
+    node.normal_branch                   = NormalBranch::separating;
+    const NodeLinearization<3> lin       = nodal::linearize(node, m, none, law);
+    Tensor<2, 3>               projector = unit_symmetric_tensor<3>();
     projector -= outer_product(node.normal, node.normal);
     Tensor<2, 3> jacobian;
     for (unsigned int j = 0; j < 3; ++j)
       {
         Tensor<1, 3> dw;
-        dw[j] = 1e-6;
+        dw[j]                     = 1e-6;
         const Tensor<1, 3> column = (friction_force(node, law, w + dw) -
                                      friction_force(node, law, w - dw)) /
                                     2e-6;
@@ -234,9 +238,11 @@ main()
   check_law(SlipRateWeakeningLaw(0.6, 0.3, 0.1), 0.6, {});
   check_law(SlipRateWeakeningLaw(0.5, 0.5, 0.2), 0.9, {});
   // weakening, then strengthening, then constant
-  check_law(PiecewiseLinearFrictionLaw({{0.05, 0.6}, {0.5, 0.8}}), 0.7,
+  check_law(PiecewiseLinearFrictionLaw({{0.05, 0.6}, {0.5, 0.8}}),
+            0.7,
             {0., 0.05, 0.5});
-  check_law(PiecewiseLinearFrictionLaw({{0, 1}, {0.1, 1.4}, {0.3, 0.2}}), 1.,
+  check_law(PiecewiseLinearFrictionLaw({{0, 1}, {0.1, 1.4}, {0.3, 0.2}}),
+            1.,
             {0., 0.1, 0.3});
 
   std::cout << "input checks\n";

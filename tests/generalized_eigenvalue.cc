@@ -12,10 +12,10 @@
 
 #include <hemicontact/solver/generalized_eigenvalue.h>
 
-#include "tests.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "tests.h"
 
 using namespace hemicontact;
 using namespace dealii;
@@ -87,7 +87,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const double exact = reference();
+  const double                     exact = reference();
   out() << "LAPACK: largest eigenvalue " << exact << "\n";
 
   for (const unsigned int max_iterations : {300u, 3u})
@@ -117,8 +117,8 @@ main(int argc, char **argv)
       Vector<double> x(n);
       for (unsigned int i = 0; i < n - n_contact; ++i)
         x[i] = zero ? 0. : 1.;
-      const EigenvalueEstimate estimate = largest_generalized_eigenvalue(
-        apply_n, apply_k, jacobi, x, 1e-6, 300);
+      const EigenvalueEstimate estimate =
+        largest_generalized_eigenvalue(apply_n, apply_k, jacobi, x, 1e-6, 300);
       out() << (zero ? "zero start" : "start outside the range of N")
             << ": value " << estimate.value << ", converged "
             << (estimate.converged ? "yes" : "no") << ", iterations "

@@ -16,9 +16,9 @@ namespace
   compare(const std::string &file)
   {
     const BlockRun updated = run_block<dim>(file, "");
-    const BlockRun fresh =
-      run_block<dim>(file, "subsection nonlinear solver\n"
-                           "  set line search = false\nend\n");
+    const BlockRun fresh   = run_block<dim>(file,
+                                          "subsection nonlinear solver\n"
+                                            "  set line search = false\nend\n");
     out() << "  " << dim
           << "D residual updated by the line search vs recomputed: "
           << agreement(updated.velocity, fresh.velocity) << "\n";

@@ -35,7 +35,8 @@ namespace
 
   /** 2n values in mirror-image pairs, each pair equal up to round-off. */
   std::vector<float>
-  pairs(const unsigned int n, const double relative_perturbation,
+  pairs(const unsigned int  n,
+        const double        relative_perturbation,
         const std::uint32_t seed)
   {
     std::mt19937       random(seed);
@@ -58,12 +59,14 @@ main()
   std::vector<float> v;
   for (unsigned int i = 1; i <= 100; ++i)
     v.push_back(i);
-  Counts c = count(v, marking_thresholds(v, MarkingStrategy::fixed_number, 0.2, 0.3));
+  Counts c =
+    count(v, marking_thresholds(v, MarkingStrategy::fixed_number, 0.2, 0.3));
   std::cout << "fixed number 0.2/0.3 of 100 distinct: refine " << c.refine
             << ", coarsen " << c.coarsen << "\n";
   // sum 5050: the top 29 hold 2494 < 2525, the top 30 2565; the bottom 31
   // hold 496 <= 505, the bottom 32 528
-  c = count(v, marking_thresholds(v, MarkingStrategy::fixed_fraction, 0.5, 0.1));
+  c =
+    count(v, marking_thresholds(v, MarkingStrategy::fixed_fraction, 0.5, 0.1));
   std::cout << "fixed fraction 0.5/0.1 of 1..100: refine " << c.refine
             << ", coarsen " << c.coarsen << "\n";
 
@@ -71,8 +74,7 @@ main()
   // one with fewer marked cells first
   v = {10, 9, 8, 8, 7, 6, 5, 4, 3, 2};
   c = count(v, marking_thresholds(v, MarkingStrategy::fixed_number, 0.3, 0.));
-  std::cout << "tie at the refinement cut (aim 3): refine " << c.refine
-            << "\n";
+  std::cout << "tie at the refinement cut (aim 3): refine " << c.refine << "\n";
   v = {10, 9, 8, 7, 6, 5, 4, 3, 2, 2};
   c = count(v, marking_thresholds(v, MarkingStrategy::fixed_number, 0., 0.1));
   std::cout << "tie at the coarsening cut (aim 1): coarsen " << c.coarsen

@@ -1,7 +1,7 @@
 // The warm starts of a step's Newton iteration -- the extrapolated initial
-// guess w_{n-1} + k_n/k_{n-1} (w_{n-1} - w_{n-2}) and the Krylov solve to the Newton
-// tolerance once no node changes branch -- change where Newton starts and
-// how far each linear solve goes, never the solution: 15 steps of the short
+// guess w_{n-1} + k_n/k_{n-1} (w_{n-1} - w_{n-2}) and the Krylov solve to the
+// Newton tolerance once no node changes branch -- change where Newton starts
+// and how far each linear solve goes, never the solution: 15 steps of the short
 // 2D and 3D block runs with both on (the defaults) and both off give the same
 // final velocity, and the defaults need fewer Newton iterations.
 #include "block_run.h"
@@ -32,8 +32,9 @@ namespace
     for (const auto &[name, r] :
          {std::make_pair("defaults", &warm),
           std::make_pair("extrapolated guess only", &extrapolated_only)})
-      out() << "  " << dim << "D " << name << " vs cold starts: "
-            << agreement(r->velocity, cold.velocity) << "\n";
+      out() << "  " << dim << "D " << name
+            << " vs cold starts: " << agreement(r->velocity, cold.velocity)
+            << "\n";
     out() << "  " << dim << "D defaults need fewer Newton iterations: "
           << (warm.newton_iterations < cold.newton_iterations ? "yes" : "NO")
           << "\n";

@@ -74,12 +74,13 @@ namespace
   /** Count what differs between the file @p h5 and the vectors. */
   template <int dim>
   void
-  check(const DoFHandler<dim> &dof_handler, const std::string &h5,
+  check(const DoFHandler<dim>                                   &dof_handler,
+        const std::string                                       &h5,
         const std::vector<typename NodalHdf5Writer<dim>::Field> &fields)
   {
-    const MPI_Comm      comm = MPI_COMM_WORLD;
-    const auto &        fe   = dof_handler.get_fe();
-    const unsigned int  n_vertices = fe.reference_cell().n_vertices();
+    const MPI_Comm            comm       = MPI_COMM_WORLD;
+    const auto               &fe         = dof_handler.get_fe();
+    const unsigned int        n_vertices = fe.reference_cell().n_vertices();
     std::vector<unsigned int> order(n_vertices);
     for (unsigned int v = 0; v < n_vertices; ++v)
       order[v] = v;
@@ -88,7 +89,7 @@ namespace
 
     // the owned nodes by position, and the owned cells by their vertices
     std::map<Key<dim>, std::array<types::global_dof_index, dim>> nodes;
-    std::map<std::vector<double>, unsigned int>                 cells;
+    std::map<std::vector<double>, unsigned int>                  cells;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
@@ -116,7 +117,7 @@ namespace
       file.open_dataset("nodes").template read<std::vector<double>>();
     const auto connectivity =
       file.open_dataset("cells").template read<std::vector<unsigned int>>();
-    const auto n_nodes = positions.size() / dim;
+    const auto         n_nodes       = positions.size() / dim;
     unsigned long long matched_nodes = 0, matched_cells = 0, differing = 0,
                        not_float = 0, n_values = 0;
     std::vector<std::vector<double>> values;
@@ -140,8 +141,8 @@ namespace
               const double expected = (*fields[f].values)[node->second[c]];
               const double read     = values[f][n * dim + c];
               differing += !same_bits(read, expected);
-              not_float += (static_cast<double>(static_cast<float>(expected)) !=
-                            expected);
+              not_float +=
+                (static_cast<double>(static_cast<float>(expected)) != expected);
               ++n_values;
               if (fields[f].name == "displacement")
                 differing +=
@@ -165,8 +166,8 @@ namespace
     const auto &tria = dof_handler.get_triangulation();
     out() << "  " << h5 << ": " << n_nodes << " nodes (degrees of freedom / "
           << dim << ": " << dof_handler.n_dofs() / dim << "), "
-          << connectivity.size() / n_vertices << " cells (active cells: "
-          << tria.n_global_active_cells() << ")\n"
+          << connectivity.size() / n_vertices
+          << " cells (active cells: " << tria.n_global_active_cells() << ")\n"
           << "  rows matching an owned node: " << sum(matched_nodes)
           << ", a cell of the mesh: " << sum(matched_cells) << "\n"
           << "  values compared: " << sum(n_values)
@@ -181,7 +182,7 @@ namespace
     std::ifstream      in(file);
     std::ostringstream text;
     text << in.rdbuf();
-    const std::string xdmf = text.str();
+    const std::string xdmf  = text.str();
     unsigned int      grids = 0;
     for (std::size_t p = xdmf.find("GridType=\"Uniform\"");
          p != std::string::npos;
@@ -230,29 +231,36 @@ namespace
       {
         TrilinosWrappers::MPI::Vector v(dof_handler.locally_owned_dofs(),
                                         MPI_COMM_WORLD);
-        VectorTools::interpolate(*discretization.mapping, dof_handler,
-                                 FieldValues<dim>(f), v);
-        vectors.emplace_back(dof_handler.locally_owned_dofs(), relevant,
+        VectorTools::interpolate(*discretization.mapping,
+                                 dof_handler,
+                                 FieldValues<dim>(f),
+                                 v);
+        vectors.emplace_back(dof_handler.locally_owned_dofs(),
+                             relevant,
                              MPI_COMM_WORLD);
         vectors.back() = v;
       }
     // the contact traction unghosted, as the writer is given either
     TrilinosWrappers::MPI::Vector traction(dof_handler.locally_owned_dofs(),
                                            MPI_COMM_WORLD);
-    traction = vectors[2];
+    traction                                                       = vectors[2];
     const std::vector<typename NodalHdf5Writer<dim>::Field> fields = {
       {"velocity", &vectors[0]},
       {"displacement", &vectors[1]},
       {"contact_traction", &traction}};
 
-    out() << dim << "D " << (cell_type == CellType::simplex ? "simplex" : "hypercube") << ":\n";
+    out() << dim << "D "
+          << (cell_type == CellType::simplex ? "simplex" : "hypercube")
+          << ":\n";
     NodalHdf5Writer<dim> writer(".", stem, MPI_COMM_WORLD);
     for (unsigned int step = 0; step < 3; ++step)
       writer.write(dof_handler, fields, step, 0.1 * step, "displacement");
     check(dof_handler, writer.file_name(2), fields);
     check_xdmf(writer.xdmf_file_name(),
-               {stem + "_00000.h5:/nodes", stem + "_00002.h5:/cells",
-                stem + "_00002.h5:/velocity", stem + "_00002.h5:/displacement",
+               {stem + "_00000.h5:/nodes",
+                stem + "_00002.h5:/cells",
+                stem + "_00002.h5:/velocity",
+                stem + "_00002.h5:/displacement",
                 stem + "_00002.h5:/contact_traction",
                 stem + "_00002.h5:/displaced_nodes"});
     // a resume at step 1 that writes step 2 again: three grids, not four
@@ -276,7 +284,8 @@ namespace
     // numbering of the degrees of freedom is (p4est)
     if (cell_type == CellType::hypercube)
       {
-        HDF5::File file(writer.file_name(0), HDF5::File::FileAccessMode::open,
+        HDF5::File file(writer.file_name(0),
+                        HDF5::File::FileAccessMode::open,
                         MPI_COMM_WORLD);
         const auto nodes =
           file.open_dataset("nodes").template read<std::vector<double>>();

@@ -6,11 +6,11 @@
 // the gradual normal branch changes (separating <-> damped via stick).
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <hemicontact/model/contact_node.h>
+#include <hemicontact/laws/friction/tresca.h>
+#include <hemicontact/laws/friction_disk.h>
 #include <hemicontact/laws/normal/exponential_law.h>
 #include <hemicontact/laws/normal/linear_damping_law.h>
-#include <hemicontact/laws/friction_disk.h>
-#include <hemicontact/laws/friction/tresca.h>
+#include <hemicontact/model/contact_node.h>
 
 #include <cmath>
 #include <iomanip>
@@ -54,7 +54,7 @@ namespace
   make_node()
   {
     ContactNode<dim> node;
-    node.normal         = Tensor<1, dim>();
+    node.normal          = Tensor<1, dim>();
     node.normal[dim - 1] = -1; // bottom face
     if (dim == 2)
       { // a tilted normal exercises the general case
@@ -85,8 +85,8 @@ main()
         m.w_normal = wn;
         std::cout << "  s = " << s << ", w_nu = " << wn << ": "
                   << name(nodal::normal_branch(node, m, law))
-                  << ", C_nu = "
-                  << nodal::normal_complementarity(node, m, law) << "\n";
+                  << ", C_nu = " << nodal::normal_complementarity(node, m, law)
+                  << "\n";
       }
 
   // a Newton iteration's normal branch: separating <-> damped passes through
@@ -94,18 +94,18 @@ main()
   {
     const LinearDampingLaw no_jump(2.);
     const NormalBranch     all[] = {NormalBranch::separating,
-                                NormalBranch::stick,
-                                NormalBranch::damped};
-    std::cout << "gradual normal branches (current -> predicted: a = 1 / a = 0):\n";
+                                    NormalBranch::stick,
+                                    NormalBranch::damped};
+    std::cout
+      << "gradual normal branches (current -> predicted: a = 1 / a = 0):\n";
     for (const NormalBranch current : all)
       for (const NormalBranch predicted : all)
-        std::cout << "  " << name(current) << " -> " << name(predicted)
-                  << ": "
-                  << name(nodal::gradual_normal_branch(current, predicted,
-                                                             law))
+        std::cout << "  " << name(current) << " -> " << name(predicted) << ": "
+                  << name(nodal::gradual_normal_branch(current, predicted, law))
                   << " / "
-                  << name(nodal::gradual_normal_branch(current, predicted,
-                                                             no_jump))
+                  << name(nodal::gradual_normal_branch(current,
+                                                       predicted,
+                                                       no_jump))
                   << "\n";
   }
 
@@ -116,8 +116,8 @@ main()
     for (const double wt : {0., 0.001})
       {
         NodeState<2> m;
-        m.lambda       = l * tau;
-        m.w_tangential = wt * tau;
+        m.lambda              = l * tau;
+        m.w_tangential        = wt * tau;
         const Tensor<1, 2> ct = nodal::tangential_complementarity(node, m);
         std::cout << "  |lambda| = " << l << ", |w_tau| = " << wt << ": "
                   << name(nodal::tangential_branch(node, m))
@@ -126,20 +126,22 @@ main()
 
   // the split of velocity and force into normal and tangential parts
   {
-    const Tensor<1, 2>       w({0.3, 0.1}), force({0.2, -0.5});
+    const Tensor<1, 2> w({0.3, 0.1}), force({0.2, -0.5});
     const NodeState<2> m = nodal::state(node, w, force, law, TrescaLaw());
-    const double recombined =
-      (node.mass * ((m.s + law.remainder(m.w_normal)) * node.normal + m.lambda) -
+    const double       recombined =
+      (node.mass *
+         ((m.s + law.remainder(m.w_normal)) * node.normal + m.lambda) -
        force)
         .norm();
-    std::cout << "split of force and velocity consistent: "
-              << (recombined < 1e-14 &&
-                      std::abs((m.w_normal * node.normal + m.w_tangential - w)
-                                 .norm()) < 1e-14 &&
-                      std::abs(m.lambda * node.normal) < 1e-14 ?
-                    "yes" :
-                    "no")
-              << "\n";
+    std::cout
+      << "split of force and velocity consistent: "
+      << (recombined < 1e-14 &&
+              std::abs((m.w_normal * node.normal + m.w_tangential - w).norm()) <
+                1e-14 &&
+              std::abs(m.lambda * node.normal) < 1e-14 ?
+            "yes" :
+            "no")
+      << "\n";
   }
 
   // Tresca projection in 3D
@@ -159,13 +161,13 @@ main()
         std::make_pair(NormalBranch::separating, TangentialBranch::stick),
         std::make_pair(NormalBranch::stick, TangentialBranch::stick)})
     {
-      ContactNode<3> n3 = make_node<3>();
-      n3.normal         = Tensor<1, 3>({0.36, 0.48, -0.8});
-      n3.normal_branch     = branches.first;
-      n3.tangential_branch = branches.second;
-      const auto directions = nodal::constrained_directions(n3);
-      const Tensor<2, 3> pi = nodal::free_projector(n3);
-      const Tensor<1, 3> w  = pi * Tensor<1, 3>({0.7, -1.3, 0.4});
+      ContactNode<3> n3             = make_node<3>();
+      n3.normal                     = Tensor<1, 3>({0.36, 0.48, -0.8});
+      n3.normal_branch              = branches.first;
+      n3.tangential_branch          = branches.second;
+      const auto         directions = nodal::constrained_directions(n3);
+      const Tensor<2, 3> pi         = nodal::free_projector(n3);
+      const Tensor<1, 3> w          = pi * Tensor<1, 3>({0.7, -1.3, 0.4});
       // a projector: Pi Pi = Pi
       double violation = (pi * pi - pi).norm();
       for (const auto &d : directions)
@@ -182,8 +184,8 @@ main()
     const double err = std::abs(t[0] * t[0] - 1) + std::abs(t[1] * t[1] - 1) +
                        std::abs(t[0] * t[1]) + std::abs(t[0] * nu) +
                        std::abs(t[1] * nu);
-    std::cout << "3D tangent basis orthonormal: " << (err < 1e-14 ? "yes" : "no")
-              << "\n";
+    std::cout << "3D tangent basis orthonormal: "
+              << (err < 1e-14 ? "yes" : "no") << "\n";
   }
 
   // slip linearisation in 3D at a consistent slip state (lambda = F_b t,
@@ -191,23 +193,24 @@ main()
   // m F_b/|w_tau| (I - nu nu - t t) of m F_b |w_tau| (difference quotient
   // of its gradient m F_b w/|w|); symmetric positive semidefinite
   {
-    ContactNode<3> n3 = make_node<3>();
+    ContactNode<3> n3    = make_node<3>();
     n3.tangential_branch = TangentialBranch::slip;
     const Tensor<1, 3> t({0.8, 0.6, 0});
-    NodeState<3> m;
-    m.lambda       = n3.friction_bound * t;
-    m.w_tangential = 0.05 * t;
+    NodeState<3>       m;
+    m.lambda                       = n3.friction_bound * t;
+    m.w_tangential                 = 0.05 * t;
     const NodeLinearization<3> lin = nodal::linearize(n3, m, law, TrescaLaw());
-    const auto gradient = [&](const Tensor<1, 3> &wt) {
+    const auto                 gradient = [&](const Tensor<1, 3> &wt) {
       return n3.mass * n3.friction_bound * wt / wt.norm();
     };
     double fd_error = 0, asym = 0;
     for (unsigned int j = 0; j < 2; ++j) // tangential directions
       {
         Tensor<1, 3> dw;
-        dw[j]                   = 1e-7;
-        const Tensor<1, 3> diff = (gradient(m.w_tangential + dw) -
-                                   gradient(m.w_tangential - dw)) / 2e-7;
+        dw[j] = 1e-7;
+        const Tensor<1, 3> diff =
+          (gradient(m.w_tangential + dw) - gradient(m.w_tangential - dw)) /
+          2e-7;
         for (unsigned int i = 0; i < 3; ++i)
           fd_error = std::max(fd_error, std::abs(diff[i] - lin.matrix[i][j]));
       }
@@ -221,7 +224,8 @@ main()
               << (fd_error < 1e-6 ? "yes" : "no")
               << ", symmetric: " << (asym < 1e-14 ? "yes" : "no")
               << ", positive semidefinite: "
-              << (min_quadratic_form(lin.matrix) > -1e-14 ? "yes" : "no") << "\n";
+              << (min_quadratic_form(lin.matrix) > -1e-14 ? "yes" : "no")
+              << "\n";
   }
 
   // damped linearisation: force m (a + p(w)) nu, matrix m p'(w) nu nu
@@ -229,11 +233,12 @@ main()
     ContactNode<2> n2 = make_node<2>();
     n2.normal_branch  = NormalBranch::damped;
     NodeState<2> m;
-    m.w_normal                       = 0.1;
-    const NodeLinearization<2> lin   = nodal::linearize(n2, m, law, TrescaLaw());
-    const double               expect = n2.mass * (law.jump() + law.remainder(0.1));
+    m.w_normal                     = 0.1;
+    const NodeLinearization<2> lin = nodal::linearize(n2, m, law, TrescaLaw());
+    const double expect = n2.mass * (law.jump() + law.remainder(0.1));
     std::cout << "damped force along the normal: "
-              << (std::abs(lin.force * n2.normal - expect) < 1e-14 ? "yes" : "no")
+              << (std::abs(lin.force * n2.normal - expect) < 1e-14 ? "yes" :
+                                                                     "no")
               << ", matrix = m p' nu nu: "
               << (std::abs(n2.normal * (lin.matrix * n2.normal) -
                            n2.mass * law.remainder_derivative(0.1)) < 1e-14 ?

@@ -10,8 +10,8 @@
 #include <hemicontact/laws/normal/piecewise_linear_law.h>
 
 #include <cmath>
-#include <iomanip>
 #include <functional>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <vector>
@@ -35,8 +35,8 @@ namespace
     for (const double r : points)
       {
         // p' against a one-sided difference quotient (away from kinks)
-        const double h  = 1e-7;
-        const double fd = (law.remainder(r + h) - law.remainder(r)) / h;
+        const double h         = 1e-7;
+        const double fd        = (law.remainder(r + h) - law.remainder(r)) / h;
         bool         near_kink = std::abs(r) < 2 * h;
         for (const double k : kinks)
           near_kink |= std::abs(r - k) < 2 * h;
@@ -45,12 +45,13 @@ namespace
           derivative_ok = false;
 
         // P against the trapezoidal rule on a fine grid
-        const unsigned int n = 200000;
+        const unsigned int n        = 200000;
         double             integral = 0;
         for (unsigned int i = 0; i < n; ++i)
           {
             const double s0 = r * i / n, s1 = r * (i + 1) / n;
-            integral += 0.5 * (law.remainder(s0) + law.remainder(s1)) * (s1 - s0);
+            integral +=
+              0.5 * (law.remainder(s0) + law.remainder(s1)) * (s1 - s0);
           }
         if (std::abs(integral - law.remainder_primitive(r)) > 1e-8)
           primitive_ok = false;
@@ -70,7 +71,7 @@ namespace
 
     // relaxed monotonicity: (xi1 - xi2)(r1 - r2) >= -alpha (r1 - r2)^2,
     // and alpha is attained (sharp) up to the grid
-    const double alpha      = law.relaxed_monotonicity_constant();
+    const double alpha       = law.relaxed_monotonicity_constant();
     bool         monotone_ok = true;
     double       worst       = 0;
     for (double r1 = -0.2; r1 <= 1.5; r1 += 0.0125)
@@ -80,8 +81,9 @@ namespace
           for (const double xi1 : {s1.first, s1.second})
             for (const double xi2 : {s2.first, s2.second})
               {
-                const double q = (xi1 - xi2) * (r1 - r2) / ((r1 - r2) * (r1 - r2));
-                worst          = std::min(worst, q);
+                const double q =
+                  (xi1 - xi2) * (r1 - r2) / ((r1 - r2) * (r1 - r2));
+                worst = std::min(worst, q);
                 if (q < -alpha - 1e-9)
                   monotone_ok = false;
               }
@@ -90,18 +92,16 @@ namespace
 
     std::cout << std::setprecision(6);
     for (const double r : {-0.1, 0., 0.05, 0.1, 0.3, 1.})
-      std::cout << "  r = " << r << ": j = " << law.potential(r)
-                << ", dj = [" << law.subdifferential(r).first << ", "
+      std::cout << "  r = " << r << ": j = " << law.potential(r) << ", dj = ["
+                << law.subdifferential(r).first << ", "
                 << law.subdifferential(r).second << "]"
                 << ", p' = " << law.remainder_derivative(r) << "\n";
-    std::cout << "  p' matches difference quotients: "
-              << (derivative_ok ? "yes" : "no")
-              << "\n  P matches the integral of p: "
-              << (primitive_ok ? "yes" : "no")
-              << "\n  subdifferential = d(a r+) + p: " << (split_ok ? "yes" : "no")
-              << "\n  relaxed monotone with alpha: "
-              << (monotone_ok ? "yes" : "no")
-              << "\n  alpha is sharp: " << (sharp ? "yes" : "no") << "\n";
+    std::cout
+      << "  p' matches difference quotients: " << (derivative_ok ? "yes" : "no")
+      << "\n  P matches the integral of p: " << (primitive_ok ? "yes" : "no")
+      << "\n  subdifferential = d(a r+) + p: " << (split_ok ? "yes" : "no")
+      << "\n  relaxed monotone with alpha: " << (monotone_ok ? "yes" : "no")
+      << "\n  alpha is sharp: " << (sharp ? "yes" : "no") << "\n";
   }
 
   void
@@ -135,12 +135,15 @@ main()
                      [] { ExponentialLaw(1., -1., 1.); });
   expect_input_error("exponential with beta < 0",
                      [] { ExponentialLaw(1., 0.5, -1.); });
-  expect_input_error("piecewise linear not starting at 0",
-                     [] { PiecewiseLinearLaw({{0.1, 1}}); });
-  expect_input_error("piecewise linear with decreasing r",
-                     [] { PiecewiseLinearLaw({{0, 1}, {0.2, 1}, {0.1, 1}}); });
-  expect_input_error("piecewise linear with negative response",
-                     [] { PiecewiseLinearLaw({{0, 1}, {0.2, -1}}); });
+  expect_input_error("piecewise linear not starting at 0", [] {
+    PiecewiseLinearLaw({{0.1, 1}});
+  });
+  expect_input_error("piecewise linear with decreasing r", [] {
+    PiecewiseLinearLaw({{0, 1}, {0.2, 1}, {0.1, 1}});
+  });
+  expect_input_error("piecewise linear with negative response", [] {
+    PiecewiseLinearLaw({{0, 1}, {0.2, -1}});
+  });
   expect_input_error("linear damping with negative coefficient",
                      [] { LinearDampingLaw(-1.); });
 }

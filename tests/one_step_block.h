@@ -7,8 +7,8 @@
 // one.
 #include <deal.II/numerics/vector_tools.h>
 
-#include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/problem/contact_problem.h>
 
 #include <sstream>
 #include <string>
@@ -34,8 +34,10 @@ struct BlockMaterial
  * cells of @p cell_type and the single time step @p k.
  */
 inline std::string
-one_step_block(const unsigned int dim, const std::string &cell_type,
-               const BlockMaterial &m, const double k)
+one_step_block(const unsigned int   dim,
+               const std::string   &cell_type,
+               const BlockMaterial &m,
+               const double         k)
 {
   std::ostringstream p;
   p << "set dimension = " << dim << "\n"
@@ -77,24 +79,30 @@ struct OneStepResult
 /** Run one step of @p parameter_text and compare with @p exact_w. */
 template <int dim>
 OneStepResult
-one_step(const std::string &parameter_text, const std::string &exact_w,
-         const double V)
+one_step(const std::string &parameter_text,
+         const std::string &exact_w,
+         const double       V)
 {
   using namespace hemicontact;
   dealii::ParameterHandler prm;
-  const Parameters parameters =
+  const Parameters         parameters =
     read_parameters_from_string(prm, parameter_text);
-  ContactProblem<dim> problem(parameters, create_contact_laws(prm),
+  ContactProblem<dim> problem(parameters,
+                              create_contact_laws(prm),
                               MPI_COMM_WORLD);
   problem.setup();
   OneStepResult result;
   result.stats = problem.advance();
 
-  auto exact = parse_function<dim>(exact_w, dim, "V=" + num(V) + ", H=1",
+  auto                                  exact = parse_function<dim>(exact_w,
+                                   dim,
+                                   "V=" + num(V) + ", H=1",
                                    "exact velocity");
   dealii::TrilinosWrappers::MPI::Vector w(problem.get_velocity());
   dealii::VectorTools::interpolate(problem.get_mapping(),
-                                   problem.get_dof_handler(), *exact, w);
+                                   problem.get_dof_handler(),
+                                   *exact,
+                                   w);
   w -= problem.get_velocity();
   result.error           = w.linfty_norm() / V;
   result.convexity_bound = problem.state().convexity.bound;

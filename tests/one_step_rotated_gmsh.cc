@@ -4,8 +4,8 @@
 // discrete solution must be reproduced to solver tolerance.
 #include <deal.II/numerics/vector_tools.h>
 
-#include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/problem/contact_problem.h>
 
 #include <cmath>
 #include <fstream>
@@ -18,8 +18,8 @@ using namespace hemicontact;
 namespace
 {
   const double theta = 0.5, c = std::cos(theta), s = std::sin(theta);
-  const double rho = 2, mu_v = 1.5, lambda_v = 0.7, k = 0.1, V = 0.3,
-               Fb = 0.4, a = 1, b = 0.4, beta = 3, L = 2, H = 1;
+  const double rho = 2, mu_v = 1.5, lambda_v = 0.7, k = 0.1, V = 0.3, Fb = 0.4,
+               a = 1, b = 0.4, beta = 3, L = 2, H = 1;
 
   /** A structured 8 x 4 quad mesh of the rotated block, boundary ids
    *  0 (xi = 0), 1 (xi = L), 2 (eta = 0, contact), 3 (eta = H). */
@@ -30,7 +30,9 @@ namespace
     std::ofstream      f(name);
     f << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"
       << (nx + 1) * (ny + 1) << "\n";
-    const auto id = [&](unsigned i, unsigned j) { return j * (nx + 1) + i + 1; };
+    const auto id = [&](unsigned i, unsigned j) {
+      return j * (nx + 1) + i + 1;
+    };
     f.precision(17);
     for (unsigned int j = 0; j <= ny; ++j)
       for (unsigned int i = 0; i <= nx; ++i)
@@ -57,7 +59,8 @@ namespace
   }
 
   std::string
-  parameter_file(const std::string &f0, const std::string &f2,
+  parameter_file(const std::string &f0,
+                 const std::string &f2,
                  const std::string &f3)
   {
     std::ostringstream p;
@@ -72,8 +75,8 @@ namespace
       << "\n    set lambda = " << lambda_v << "\n  end\n"
       << "  subsection elasticity\n    set mu = 10\n    set lambda = 5\n  end\n"
       << "end\n"
-      << "subsection time\n  set end time = " << k << "\n  set time step = " << k
-      << "\nend\n"
+      << "subsection time\n  set end time = " << k
+      << "\n  set time step = " << k << "\nend\n"
       << "subsection data\n"
       << "  set constants = V=" << V << ", rho=" << rho << ", k=" << k
       << ", mv=" << mu_v << ", lv=" << lambda_v << ", Fb=" << Fb << ", a=" << a
@@ -95,18 +98,22 @@ namespace
   std::string
   frame(const std::string &along_t, const std::string &along_n)
   {
-    return "(" + along_t + ")*c - (" + along_n + ")*s; (" + along_t + ")*s + (" +
-           along_n + ")*c";
+    return "(" + along_t + ")*c - (" + along_n + ")*s; (" + along_t +
+           ")*s + (" + along_n + ")*c";
   }
 
   void
-  check(const std::string &name, const std::string &f0, const std::string &f2,
-        const std::string &f3, const std::string &exact_w)
+  check(const std::string &name,
+        const std::string &f0,
+        const std::string &f2,
+        const std::string &f3,
+        const std::string &exact_w)
   {
     ParameterHandler prm;
     const Parameters parameters =
       read_parameters_from_string(prm, parameter_file(f0, f2, f3));
-    ContactProblem<2> problem(parameters, create_contact_laws(prm),
+    ContactProblem<2> problem(parameters,
+                              create_contact_laws(prm),
                               MPI_COMM_WORLD);
     problem.setup();
     const StepStatistics stats = problem.advance();
@@ -116,15 +123,17 @@ namespace
     constants << "V=" << V << ", H=" << H << ", c=" << c << ", s=" << s;
     auto exact = parse_function<2>(exact_w, 2, constants.str(), "exact");
     TrilinosWrappers::MPI::Vector w(problem.get_velocity());
-    VectorTools::interpolate(problem.get_mapping(), problem.get_dof_handler(),
-                             *exact, w);
+    VectorTools::interpolate(problem.get_mapping(),
+                             problem.get_dof_handler(),
+                             *exact,
+                             w);
     w -= problem.get_velocity();
     const double error = w.linfty_norm() / V;
 
     double normal_error = 0;
     for (const auto &node : problem.state().contact_nodes)
-      normal_error = std::max(normal_error,
-                              (node.normal - Tensor<1, 2>({s, -c})).norm());
+      normal_error =
+        std::max(normal_error, (node.normal - Tensor<1, 2>({s, -c})).norm());
 
     out() << name << ": nodal normals = (sin, -cos)(0.5): "
           << (normal_error < 1e-12 ? "yes" : "no")
@@ -145,22 +154,26 @@ main(int argc, char **argv)
     write_mesh("rotated_block.msh");
   MPI_Barrier(MPI_COMM_WORLD);
 
-  const std::string xi   = "(c*x + s*y)";  // along the contact boundary
-  const std::string eta  = "(-s*x + c*y)"; // thickness coordinate
-  const std::string side = "(" + xi + " < 1e-9 ? -1 : (" + xi +
-                           " > 2 - 1e-9 ? 1 : 0))";
+  const std::string xi  = "(c*x + s*y)";  // along the contact boundary
+  const std::string eta = "(-s*x + c*y)"; // thickness coordinate
+  const std::string side =
+    "(" + xi + " < 1e-9 ? -1 : (" + xi + " > 2 - 1e-9 ? 1 : 0))";
 
   // slip along t: w = V (1 - eta/H) t
-  check("slip", frame("rho/k*V*(1-" + eta + "/H)", "0"),
-        frame("0", "-" + side + "*mv*V/H"), frame("mv*V/H + Fb", "-a/2"),
+  check("slip",
+        frame("rho/k*V*(1-" + eta + "/H)", "0"),
+        frame("0", "-" + side + "*mv*V/H"),
+        frame("mv*V/H + Fb", "-a/2"),
         frame("V*(1-" + eta + "/H)", "0"));
 
   // damped: w = -V (1 - eta/H) n, xi_nu = (a-b) exp(-beta V) + b
-  const double xi_nu = (a - b) * std::exp(-beta * V) + b;
+  const double       xi_nu = (a - b) * std::exp(-beta * V) + b;
   std::ostringstream f3;
   f3.precision(17);
   f3 << "-(2*mv+lv)*V/H - " << xi_nu;
-  check("damped", frame("0", "-rho/k*V*(1-" + eta + "/H)"),
-        frame(side + "*lv*V/H", "0"), frame("0", f3.str()),
+  check("damped",
+        frame("0", "-rho/k*V*(1-" + eta + "/H)"),
+        frame(side + "*lv*V/H", "0"),
+        frame("0", f3.str()),
         frame("0", "-V*(1-" + eta + "/H)"));
 }

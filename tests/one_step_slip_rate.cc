@@ -13,8 +13,8 @@
 // on the friction disk), hexahedra and simplices.
 #include <deal.II/numerics/vector_tools.h>
 
-#include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/problem/contact_problem.h>
 
 #include <cmath>
 #include <sstream>
@@ -27,8 +27,8 @@ using namespace hemicontact;
 namespace
 {
   const double rho = 2, mu_v = 1.5, lambda_v = 0.7, mu_e = 10, lambda_e = 5,
-               k = 0.1, V = 0.3, Fb = 0.4, a = 1, H = 1, mu_s = 0.6,
-               mu_d = 0.3, v0 = 0.5, cp = 3, d = 0.02;
+               k = 0.1, V = 0.3, Fb = 0.4, a = 1, H = 1, mu_s = 0.6, mu_d = 0.3,
+               v0 = 0.5, cp = 3, d = 0.02;
 
   /** The law's friction force at slip speed V for the bound @p bound. */
   double
@@ -40,12 +40,18 @@ namespace
   std::string cell_type = "hypercube";
 
   std::string
-  parameter_file(const unsigned int dim, const std::string &f0,
-                 const std::string &f2, const std::string &f3,
-                 const std::string &u0, const std::string &bound)
+  parameter_file(const unsigned int dim,
+                 const std::string &f0,
+                 const std::string &f2,
+                 const std::string &f3,
+                 const std::string &u0,
+                 const std::string &bound)
   {
     std::ostringstream p;
-    p << one_step_block(dim, cell_type, {rho, mu_v, lambda_v, mu_e, lambda_e}, k)
+    p << one_step_block(dim,
+                        cell_type,
+                        {rho, mu_v, lambda_v, mu_e, lambda_e},
+                        k)
       << "subsection data\n"
       << "  set constants = V=" << num(V) << ", rho=" << rho << ", k=" << k
       << ", mv=" << mu_v << ", le=" << lambda_e << ", me=" << mu_e
@@ -71,18 +77,22 @@ namespace
 
   template <int dim>
   void
-  check(const std::string &name, const std::string &f0, const std::string &f2,
-        const std::string &f3, const std::string &u0, const std::string &bound,
+  check(const std::string &name,
+        const std::string &f0,
+        const std::string &f2,
+        const std::string &f3,
+        const std::string &u0,
+        const std::string &bound,
         const std::string &exact_w)
   {
-    const OneStepResult result = one_step<dim>(
-      parameter_file(dim, f0, f2, f3, u0, bound), exact_w, V);
+    const OneStepResult result =
+      one_step<dim>(parameter_file(dim, f0, f2, f3, u0, bound), exact_w, V);
     const StepStatistics &stats = result.stats;
     const double          error = result.error;
 
-    out() << cell_type << " " << name << ": relative max error < 1e-9: "
-          << (error < 1e-9 ? "yes" : "no") << "; convex: "
-          << (result.convexity_bound > 1 ? "yes" : "no")
+    out() << cell_type << " " << name
+          << ": relative max error < 1e-9: " << (error < 1e-9 ? "yes" : "no")
+          << "; convex: " << (result.convexity_bound > 1 ? "yes" : "no")
           << "; contact nodes sep/stick/damped " << stats.n_separating << "/"
           << stats.n_normal_stick << "/" << stats.n_damped << ", stick/slip "
           << stats.n_stick << "/" << stats.n_slip << std::endl;
@@ -98,34 +108,44 @@ main(int argc, char **argv)
 
   for (const std::string type : {"hypercube", "simplex"})
     {
-      cell_type = type;
+      cell_type              = type;
       const std::string side = "(x < 1e-9 ? -1 : (x > 2 - 1e-9 ? 1 : 0))";
 
       // slip at speed V with a constant bound: F(V) < F_b at the bottom
-      check<2>("slip, bound Fb", "rho/k*V*(1-y/H); 0",
+      check<2>("slip, bound Fb",
+               "rho/k*V*(1-y/H); 0",
                "0; -" + side + "*mv*V/H",
-               "mv*V/H + " + num(friction_force(Fb)) + "; -a/2", "0", "Fb",
+               "mv*V/H + " + num(friction_force(Fb)) + "; -a/2",
+               "0",
+               "Fb",
                "V*(1-y); 0");
 
       // the same with the bound Fb + cp u_nu, the block pressed in by d:
       // u0 = (0, -d(1-y)) has the constant elastic stress
       // sigma_B = le d I + 2 me d e_y e_y: side tractions side*le*d e_x,
       // at the bottom (nu = -e_y) -(le + 2 me) d e_y
-      check<2>("slip, bound Fb + cp u_nu", "rho/k*V*(1-y/H); 0",
+      check<2>("slip, bound Fb + cp u_nu",
+               "rho/k*V*(1-y/H); 0",
                side + "*le*d; -" + side + "*mv*V/H",
                "mv*V/H + " + num(friction_force(Fb + cp * d)) +
                  "; -a/2 - (le + 2*me)*d",
-               "0; -d*(1-y)", "Fb + cp*u_nu", "V*(1-y); 0");
+               "0; -d*(1-y)",
+               "Fb + cp*u_nu",
+               "V*(1-y); 0");
 
       // stick under a tangential load below the static bound
-      check<2>("stick, bound Fb + cp u_nu", "0", side + "*le*d; 0",
-               "0.9*(Fb + cp*d); -a/2 - (le + 2*me)*d", "0; -d*(1-y)",
-               "Fb + cp*u_nu", "0; 0");
+      check<2>("stick, bound Fb + cp u_nu",
+               "0",
+               side + "*le*d; 0",
+               "0.9*(Fb + cp*d); -a/2 - (le + 2*me)*d",
+               "0; -d*(1-y)",
+               "Fb + cp*u_nu",
+               "0; 0");
 
       // 3D: slip along (cos q, sin q), q = 0.6, on the friction disk
       const double      c = std::cos(0.6), s = std::sin(0.6);
-      const std::string sx = "(x < 1e-9 ? -1 : (x > 1 - 1e-9 ? 1 : 0))";
-      const std::string sy = "(y < 1e-9 ? -1 : (y > 1 - 1e-9 ? 1 : 0))";
+      const std::string sx    = "(x < 1e-9 ? -1 : (x > 1 - 1e-9 ? 1 : 0))";
+      const std::string sy    = "(y < 1e-9 ? -1 : (y > 1 - 1e-9 ? 1 : 0))";
       const double      force = friction_force(Fb + cp * d);
       check<3>("slip 3D, bound Fb + cp u_nu",
                "rho/k*V*(1-z)*" + num(c) + "; rho/k*V*(1-z)*" + num(s) + "; 0",
@@ -133,7 +153,8 @@ main(int argc, char **argv)
                  " + " + num(s) + "*" + sy + ")",
                "(mv*V/H + " + num(force) + ")*" + num(c) + "; (mv*V/H + " +
                  num(force) + ")*" + num(s) + "; -a/2 - (le + 2*me)*d",
-               "0; 0; -d*(1-z)", "Fb + cp*u_nu",
+               "0; 0; -d*(1-z)",
+               "Fb + cp*u_nu",
                "V*(1-z)*" + num(c) + "; V*(1-z)*" + num(s) + "; 0");
     }
 }

@@ -35,7 +35,8 @@ namespace
 
   /** truncate_table() on @p text, reported with the table it leaves. */
   void
-  truncate(const std::string &what, const std::string &text,
+  truncate(const std::string &what,
+           const std::string &text,
            const unsigned int step)
   {
     write("table.csv", text);
@@ -72,15 +73,20 @@ main(int argc, char **argv)
   truncate("rows after step 2 go", header + "1,0.1,5\n2,0.2,6\n3,0.3,7\n", 2);
   truncate("nothing to cut", header + "1,0.1,5\n2,0.2,6\n", 2);
   truncate("a last row cut short after the step",
-           header + "1,0.1,5\n2,0.2,6\n3,0.3", 2);
+           header + "1,0.1,5\n2,0.2,6\n3,0.3",
+           2);
   truncate("a last row cut short at the step",
-           header + "1,0.1,5\n2,0.2,6\n3,0.3,", 3);
+           header + "1,0.1,5\n2,0.2,6\n3,0.3,",
+           3);
   truncate("a last row without its line end", header + "1,0.1,5\n2,0.2,6", 2);
   truncate("a line that is not numbers in the middle",
-           header + "1,0.1,5\nnot a row\n2,0.2,6\n", 2);
+           header + "1,0.1,5\nnot a row\n2,0.2,6\n",
+           2);
   truncate("a row with a field too many in the middle",
-           header + "1,0.1,5,9\n2,0.2,6\n", 2);
-  truncate("non-finite values are numbers", header + "1,nan,inf\n2,-nan,-inf\n",
+           header + "1,0.1,5,9\n2,0.2,6\n",
+           2);
+  truncate("non-finite values are numbers",
+           header + "1,nan,inf\n2,-nan,-inf\n",
            2);
   truncate("no header", "", 2);
 }

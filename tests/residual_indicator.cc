@@ -12,8 +12,8 @@
 // 2. u = (0, 2x) for x < 2 and (0, 4) for x > 2 (a kink at x = 2): sigma_12
 //    jumps by 2 mu = 4 there. An interior cell next to x = 2 has
 //    eta_K^2 = 1/2 h_F |F| 16 = 8 h^2, every other interior cell 0.
-#include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/problem/contact_problem.h>
 
 #include "tests.h"
 
@@ -43,8 +43,9 @@ end
    *  numbers of cells with a hanging face and with a nonzero expectation. */
   template <typename Expected>
   void
-  compare(const ContactProblem<2> &problem, const Expected &expected,
-          const std::string &label)
+  compare(const ContactProblem<2> &problem,
+          const Expected          &expected,
+          const std::string       &label)
   {
     const Vector<float> eta   = problem.residual_indicators();
     double              error = 0, largest = 0;
@@ -53,13 +54,12 @@ end
       if (cell->is_locally_owned())
         {
           const double e = expected(cell);
-          error   = std::max(error,
-                           std::abs(eta[cell->active_cell_index()] - e));
+          error = std::max(error, std::abs(eta[cell->active_cell_index()] - e));
           largest = std::max(largest, e);
           nonzero += (e > 0);
           for (const unsigned int f : cell->face_indices())
-            if (!cell->at_boundary(f) && (cell->neighbor_is_coarser(f) ||
-                                          cell->face(f)->has_children()))
+            if (!cell->at_boundary(f) &&
+                (cell->neighbor_is_coarser(f) || cell->face(f)->has_children()))
               {
                 ++hanging;
                 break;
@@ -82,8 +82,9 @@ end
   {
     ParameterHandler prm;
     const Parameters parameters = read_parameters_from_string(prm, text);
-    auto             problem    = std::make_unique<ContactProblem<2>>(
-      parameters, create_contact_laws(prm), MPI_COMM_WORLD);
+    auto             problem = std::make_unique<ContactProblem<2>>(parameters,
+                                                       create_contact_laws(prm),
+                                                       MPI_COMM_WORLD);
     problem->setup();
     return problem;
   }
@@ -113,7 +114,7 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
   {
-    const std::string text = common + R"(
+    const std::string  text            = common + R"(
 subsection boundary
   set clamped boundary ids  = 0
   set traction boundary ids = 1, 3
@@ -135,9 +136,9 @@ subsection adaptivity
   set max level        = 5
 end
 )";
-    const auto problem_pointer = set_up(text);
-    ContactProblem<2> &problem = *problem_pointer;
-    const auto expected = [](const auto &cell) {
+    const auto         problem_pointer = set_up(text);
+    ContactProblem<2> &problem         = *problem_pointer;
+    const auto         expected        = [](const auto &cell) {
       return expected_contact_term(cell);
     };
     compare(problem, expected, "bilinear u, start mesh");
@@ -145,13 +146,14 @@ end
       {
         StepStatistics stats;
         problem.adapt_mesh(stats);
-        compare(problem, expected,
+        compare(problem,
+                expected,
                 "bilinear u, adaptation " + std::to_string(cycle));
       }
   }
 
   {
-    const std::string text = common + R"(
+    const std::string  text            = common + R"(
 subsection boundary
   set clamped boundary ids  = 0
   set traction boundary ids = 3
@@ -161,17 +163,17 @@ subsection data
   set initial displacement = 0; x - abs(x - 2) + 2
 end
 )";
-    const auto problem_pointer = set_up(text);
-    ContactProblem<2> &problem = *problem_pointer;
-    const auto expected = [](const auto &cell) {
+    const auto         problem_pointer = set_up(text);
+    ContactProblem<2> &problem         = *problem_pointer;
+    const auto         expected        = [](const auto &cell) {
       const double h = cell->face(0)->diameter();
       return std::abs(std::abs(cell->center()[0] - 2) - h / 2) < 1e-12 ?
-               std::sqrt(8.) * h :
-               0.;
+                              std::sqrt(8.) * h :
+                              0.;
     };
     // boundary cells carry boundary terms: compare interior cells only
-    const Vector<float> eta = problem.residual_indicators();
-    double              error = 0;
+    const Vector<float> eta    = problem.residual_indicators();
+    double              error  = 0;
     unsigned int        n_kink = 0;
     for (const auto &cell : problem.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned() && !cell->at_boundary())

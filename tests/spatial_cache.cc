@@ -7,10 +7,10 @@
 #include <hemicontact/expressions/expression_tape.h>
 #include <hemicontact/expressions/spatial_cache.h>
 
-#include "tests.h"
-
 #include <cmath>
 #include <thread>
+
+#include "tests.h"
 
 using namespace hemicontact;
 
@@ -34,7 +34,8 @@ namespace
 
   /** Whether the cache gives the bits of the tape for @p batch. */
   bool
-  same_bits(const ExpressionTape &tape, SpatialCache &cache,
+  same_bits(const ExpressionTape      &tape,
+            SpatialCache              &cache,
             const std::vector<double> &batch)
   {
     const unsigned int  n_points = batch.size() / 3;
@@ -50,14 +51,15 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const std::vector<std::string> variables = {"x", "y", "t"};
-  const std::map<std::string, double> constants = {{"A", 4},
-                                                   {"pi", M_PI}};
+  const std::vector<std::string>           variables = {"x", "y", "t"};
+  const std::map<std::string, double>      constants = {{"A", 4}, {"pi", M_PI}};
   // a manufactured displacement and its derivatives, and terms mixing x
   // and t inside functions
-  const Expression u("(1-y)*A*pos(x-0.4)^3*sin(t) + "
-                     "0.2*y*(1-y)*sin(pi*x)*t^2 - exp(-t*x)*cos(2*y)",
-                     variables, constants, "test");
+  const Expression        u("(1-y)*A*pos(x-0.4)^3*sin(t) + "
+                            "0.2*y*(1-y)*sin(pi*x)*t^2 - exp(-t*x)*cos(2*y)",
+                     variables,
+                     constants,
+                     "test");
   std::vector<Expression> derived;
   derived.push_back(u.derivative(2));
   derived.push_back(derived[0].derivative(2));
@@ -71,8 +73,7 @@ main(int argc, char **argv)
     all.push_back(&e);
   const ExpressionTape tape(all, /*uniform_variables=*/{2});
   out() << "values per point kept by the cache fewer than instructions: "
-        << (tape.n_cached() > 0 && tape.n_cached() < tape.size() ? "yes" :
-                                                                  "NO")
+        << (tape.n_cached() > 0 && tape.n_cached() < tape.size() ? "yes" : "NO")
         << "\n";
 
   {
@@ -94,13 +95,13 @@ main(int argc, char **argv)
     const std::size_t hits = cache.n_hits();
     for (const auto &batch : moved(0.4))
       equal = equal && same_bits(tape, cache, batch);
-    out() << "a moved batch: same bits " << (equal ? "yes" : "NO")
-          << ", found " << cache.n_hits() - hits << " of 3\n";
+    out() << "a moved batch: same bits " << (equal ? "yes" : "NO") << ", found "
+          << cache.n_hits() - hits << " of 3\n";
     const std::size_t after_move = cache.n_hits();
     for (const auto &batch : moved(0.5))
       equal = equal && same_bits(tape, cache, batch);
-    out() << "the next pass: same bits " << (equal ? "yes" : "NO")
-          << ", found " << cache.n_hits() - after_move << " of 3\n";
+    out() << "the next pass: same bits " << (equal ? "yes" : "NO") << ", found "
+          << cache.n_hits() - after_move << " of 3\n";
 
     // another loop at the same time as the last pass, with other points
     const std::size_t before_other = cache.n_hits();
@@ -123,8 +124,8 @@ main(int argc, char **argv)
   }
 
   {
-    SpatialCache      shared(tape);
-    std::vector<char> equal(2, 1);
+    SpatialCache             shared(tape);
+    std::vector<char>        equal(2, 1);
     std::vector<std::thread> threads;
     for (unsigned int i = 0; i < 2; ++i)
       threads.emplace_back([&, i]() {

@@ -17,9 +17,9 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <hemicontact/problem/contact_problem.h>
-#include <hemicontact/model/kelvin_voigt.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/model/kelvin_voigt.h>
+#include <hemicontact/problem/contact_problem.h>
 
 #include "tests.h"
 
@@ -27,17 +27,20 @@ using namespace hemicontact;
 
 namespace
 {
-  const std::string test_functions[] = {"x; 0", "0; x", "x*y; 0", "0; x*y",
+  const std::string test_functions[] = {"x; 0",
+                                        "0; x",
+                                        "x*y; 0",
+                                        "0; x*y",
                                         "x*y; x"};
 
   /** int rho w.v and a_B(u + k w, v) for each of the test functions v. */
   std::vector<double>
   functionals(const ContactProblem<2> &problem, const Parameters &parameters)
   {
-    const KelvinVoigtMaterial<2> material(parameters.material);
-    const DoFHandler<2> &        dofs = problem.get_dof_handler();
+    const KelvinVoigtMaterial<2>  material(parameters.material);
+    const DoFHandler<2>          &dofs = problem.get_dof_handler();
     TrilinosWrappers::MPI::Vector w, u_next;
-    IndexSet relevant;
+    IndexSet                      relevant;
     DoFTools::extract_locally_relevant_dofs(dofs, relevant);
     w.reinit(dofs.locally_owned_dofs(), relevant, MPI_COMM_WORLD);
     u_next.reinit(w);
@@ -51,14 +54,15 @@ namespace
       {
         FunctionParser<2> v(2);
         v.initialize("x,y", expression, {});
-        FEValues<2> fe_values(problem.get_mapping(), dofs.get_fe(),
+        FEValues<2>                        fe_values(problem.get_mapping(),
+                              dofs.get_fe(),
                               QGauss<2>(3),
                               update_values | update_gradients |
                                 update_quadrature_points | update_JxW_values);
-        const FEValuesExtractors::Vector  field(0);
-        std::vector<Tensor<1, 2>>         w_q(fe_values.n_quadrature_points);
+        const FEValuesExtractors::Vector   field(0);
+        std::vector<Tensor<1, 2>>          w_q(fe_values.n_quadrature_points);
         std::vector<SymmetricTensor<2, 2>> eps_u(fe_values.n_quadrature_points);
-        double                            mass = 0, elastic = 0;
+        double                             mass = 0, elastic = 0;
         for (const auto &cell : dofs.active_cell_iterators())
           if (cell->is_locally_owned())
             {
@@ -72,10 +76,11 @@ namespace
                   Tensor<2, 2>    grad_v;
                   for (unsigned int c = 0; c < 2; ++c)
                     {
-                      v_q[c]      = v.value(p, c);
+                      v_q[c]    = v.value(p, c);
                       grad_v[c] = v.gradient(p, c);
                     }
-                  mass += material.density() * (w_q[q] * v_q) * fe_values.JxW(q);
+                  mass +=
+                    material.density() * (w_q[q] * v_q) * fe_values.JxW(q);
                   elastic += material.elastic_stress(eps_u[q]) *
                              symmetrize(grad_v) * fe_values.JxW(q);
                 }
@@ -87,8 +92,10 @@ namespace
   }
 
   std::string
-  settings(const std::string &transfer, const std::string &w,
-           const std::string &u, const std::string &refine)
+  settings(const std::string &transfer,
+           const std::string &w,
+           const std::string &u,
+           const std::string &refine)
   {
     return R"(
 set dimension = 2
@@ -128,17 +135,20 @@ end
   coarsen_smooth_fields(const std::string &transfer)
   {
     ParameterHandler prm;
-    const Parameters parameters = read_parameters_from_string(
-      prm,
-      settings(transfer, "sin(3*x)*(1+y*y); x*cos(2*y)", "x*exp(y)/4; sin(x)",
-               "0"));
-    ContactProblem<2> problem(parameters, create_contact_laws(prm),
+    const Parameters parameters =
+      read_parameters_from_string(prm,
+                                  settings(transfer,
+                                           "sin(3*x)*(1+y*y); x*cos(2*y)",
+                                           "x*exp(y)/4; sin(x)",
+                                           "0"));
+    ContactProblem<2> problem(parameters,
+                              create_contact_laws(prm),
                               MPI_COMM_WORLD);
     problem.setup();
-    const std::vector<double> before = functionals(problem, parameters);
-    double max_change = 0, scale = 0;
-    bool   energy_grew = false;
-    const auto &tria = problem.get_dof_handler().get_triangulation();
+    const std::vector<double> before     = functionals(problem, parameters);
+    double                    max_change = 0, scale = 0;
+    bool                      energy_grew = false;
+    const auto &tria         = problem.get_dof_handler().get_triangulation();
     const auto  cells_before = tria.n_global_active_cells();
     for (unsigned int cycle = 0; cycle < 3; ++cycle)
       {
@@ -150,28 +160,31 @@ end
             max_change = std::max(max_change, std::abs(after[i] - before[i]));
             scale      = std::max(scale, std::abs(before[i]));
           }
-        energy_grew = energy_grew || stats.kinetic_after_adaptation >
-                                       stats.kinetic_before_adaptation ||
-                      stats.elastic_after_adaptation >
-                        stats.elastic_before_adaptation;
+        energy_grew =
+          energy_grew ||
+          stats.kinetic_after_adaptation > stats.kinetic_before_adaptation ||
+          stats.elastic_after_adaptation > stats.elastic_before_adaptation;
       }
-    out() << transfer << ", coarsening only: "
-          << cells_before << " -> " << tria.n_global_active_cells()
-          << " cells in 3 adaptations; int rho w.v and a_B(u_{n+1}, v) kept (to 1e-8 "
-          << "relative): " << (max_change < 1e-8 * scale ? "yes" : "no")
-          << "; stored energy grew: " << (energy_grew ? "yes" : "no") << "\n";
+    out()
+      << transfer << ", coarsening only: " << cells_before << " -> "
+      << tria.n_global_active_cells()
+      << " cells in 3 adaptations; int rho w.v and a_B(u_{n+1}, v) kept (to 1e-8 "
+      << "relative): " << (max_change < 1e-8 * scale ? "yes" : "no")
+      << "; stored energy grew: " << (energy_grew ? "yes" : "no") << "\n";
   }
 
   double
-  max_difference(const ContactProblem<2> &            problem,
+  max_difference(const ContactProblem<2>             &problem,
                  const TrilinosWrappers::MPI::Vector &field,
-                 const std::string &                  expression)
+                 const std::string                   &expression)
   {
     FunctionParser<2> exact(2);
     exact.initialize("x,y", expression, {});
     TrilinosWrappers::MPI::Vector interpolant(field);
-    VectorTools::interpolate(problem.get_mapping(), problem.get_dof_handler(),
-                             exact, interpolant);
+    VectorTools::interpolate(problem.get_mapping(),
+                             problem.get_dof_handler(),
+                             exact,
+                             interpolant);
     interpolant -= field;
     return interpolant.linfty_norm();
   }
@@ -179,10 +192,11 @@ end
   void
   fields_in_the_space()
   {
-    ParameterHandler  prm;
-    const Parameters  parameters = read_parameters_from_string(
+    ParameterHandler prm;
+    const Parameters parameters = read_parameters_from_string(
       prm, settings("projection", "x; 2*x + x*y", "x/2; -x", "0.3"));
-    ContactProblem<2> problem(parameters, create_contact_laws(prm),
+    ContactProblem<2> problem(parameters,
+                              create_contact_laws(prm),
                               MPI_COMM_WORLD);
     problem.setup();
     double max_dw = 0, max_du = 0;
@@ -190,11 +204,14 @@ end
       {
         StepStatistics stats;
         problem.adapt_mesh(stats);
-        max_dw = std::max(max_dw, max_difference(problem, problem.get_velocity(),
-                                                 "x; 2*x + x*y"));
-        max_du = std::max(max_du, max_difference(problem,
-                                                 problem.get_displacement(),
-                                                 "x/2; -x"));
+        max_dw = std::max(max_dw,
+                          max_difference(problem,
+                                         problem.get_velocity(),
+                                         "x; 2*x + x*y"));
+        max_du = std::max(max_du,
+                          max_difference(problem,
+                                         problem.get_displacement(),
+                                         "x/2; -x"));
       }
     out() << "projection, refining and coarsening: fields in the space "
           << "unchanged (to 1e-8): w " << (max_dw < 1e-8 ? "yes" : "no")

@@ -14,11 +14,12 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const double k = 0.04;
-  for (const ProblemClass c : {ProblemClass::dynamic, ProblemClass::quasistatic})
+  const double                             k = 0.04;
+  for (const ProblemClass c :
+       {ProblemClass::dynamic, ProblemClass::quasistatic})
     for (const TimeScheme s : {TimeScheme::left_point, TimeScheme::implicit})
       {
-        const StepScheme scheme(c, s);
+        const StepScheme             scheme(c, s);
         const StepMatrixCoefficients m = scheme.step_matrix(k);
         out() << scheme.name() << ": K = " << scheme.step_matrix_name()
               << " (mass " << m.mass << ", viscous " << m.viscous
@@ -29,9 +30,9 @@ main(int argc, char **argv)
 
         // u = 1, w_old = 2, w = 3 (one entry): before, after, held
         dealii::Vector<double> u(1), w_old(1), w(1);
-        u = 1;
+        u     = 1;
         w_old = 2;
-        w = 3;
+        w     = 3;
         scheme.displacement_before_step(u, w_old, k);
         const double before = u[0];
         scheme.displacement_after_step(u, w, k);

@@ -1,9 +1,9 @@
 // The stiff-direction split of the projected preconditioner
-// (SolverTuning::stiff_contact_threshold): the contact directions much stiffer than rho/k M + A (the
-// slip stiffness next to a stick-slip front) are inverted node by node
-// instead of being left to the AMG of rho/k M + A. It changes how fast CG
-// converges, never the solution: 15 steps of the short 3D block run with
-// the split (the default) and without it give the same final velocity, and
+// (SolverTuning::stiff_contact_threshold): the contact directions much stiffer
+// than rho/k M + A (the slip stiffness next to a stick-slip front) are inverted
+// node by node instead of being left to the AMG of rho/k M + A. It changes how
+// fast CG converges, never the solution: 15 steps of the short 3D block run
+// with the split (the default) and without it give the same final velocity, and
 // the split needs fewer Krylov iterations. In 2D it must not hurt.
 #include "block_run.h"
 #include "tests.h"
@@ -17,10 +17,9 @@ namespace
   compare(const std::string &file)
   {
     const BlockRun split = run_block<dim>(file, "");
-    const BlockRun plain =
-      run_block<dim>(file, "", [](SolverTuning &tuning) {
-        tuning.stiff_contact_threshold = 0;
-      });
+    const BlockRun plain = run_block<dim>(file, "", [](SolverTuning &tuning) {
+      tuning.stiff_contact_threshold = 0;
+    });
 
     out() << "  " << dim << "D split vs plain AMG: "
           << agreement(split.velocity, plain.velocity) << "\n";

@@ -19,13 +19,15 @@ namespace
    * m (w_n - w_{n-1})/k + a w_n + b u_n = 0, u_{n+1} = u_n + k w_n.
    */
   double
-  spectral_radius(const double m, const double a, const double b,
+  spectral_radius(const double m,
+                  const double a,
+                  const double b,
                   const double k)
   {
     const double c = m / k + a;
     // [[m/(k c), -b/c], [m/c, 1 - k b/c]]
     const double m11 = m / (k * c), m12 = -b / c, m21 = m / c,
-                 m22 = 1 - k * b / c;
+                 m22                 = 1 - k * b / c;
     const double               trace = m11 + m22;
     const double               det   = m11 * m22 - m12 * m21;
     const std::complex<double> root =
@@ -37,13 +39,17 @@ namespace
 int
 main()
 {
-  const double modes[][3] = {{1, 1, 100},  {1e-3, 1, 100}, {0, 1, 100},
-                             {1, 0.01, 1}, {5, 2, 1e4},    {1e-6, 0.3, 7}};
-  bool all_ok = true;
+  const double modes[][3] = {{1, 1, 100},
+                             {1e-3, 1, 100},
+                             {0, 1, 100},
+                             {1, 0.01, 1},
+                             {5, 2, 1e4},
+                             {1e-6, 0.3, 7}};
+  bool         all_ok     = true;
   for (const auto &mode : modes)
     {
       const double m = mode[0], a = mode[1], b = mode[2];
-      const double k = stable_time_step_of_mode(m, a, b);
+      const double k     = stable_time_step_of_mode(m, a, b);
       const double below = spectral_radius(m, a, b, 0.999 * k);
       const double above = spectral_radius(m, a, b, 1.001 * k);
       const bool   ok    = below <= 1 + 1e-12 && above > 1;

@@ -54,7 +54,7 @@ namespace
   cholmod_sparse *
   to_cholmod(const SparseMatrix<double> &matrix, cholmod_common &common)
   {
-    const int   n = matrix.m();
+    const int   n   = matrix.m();
     std::size_t nnz = 0;
     for (int row = 0; row < n; ++row)
       for (auto e = matrix.begin(row); e != matrix.end(row); ++e)
@@ -62,10 +62,10 @@ namespace
     // stype 1: the upper triangle by columns, i.e. the lower one by rows
     cholmod_sparse *result =
       cholmod_allocate_sparse(n, n, nnz, 1, 1, 1, CHOLMOD_REAL, &common);
-    int *   start  = static_cast<int *>(result->p);
-    int *   index  = static_cast<int *>(result->i);
-    double *values = static_cast<double *>(result->x);
-    std::size_t k  = 0;
+    int        *start  = static_cast<int *>(result->p);
+    int        *index  = static_cast<int *>(result->i);
+    double     *values = static_cast<double *>(result->x);
+    std::size_t k      = 0;
     for (int column = 0; column < n; ++column)
       {
         start[column] = k;
@@ -88,7 +88,9 @@ namespace
   measure(const unsigned int refinements)
   {
     Triangulation<2> mesh;
-    GridGenerator::subdivided_hyper_rectangle(mesh, {4u, 1u}, Point<2>(0, 0),
+    GridGenerator::subdivided_hyper_rectangle(mesh,
+                                              {4u, 1u},
+                                              Point<2>(0, 0),
                                               Point<2>(4, 1));
     mesh.refine_global(refinements);
     const FESystem<2> fe(FE_Q<2>(1), 2);
@@ -124,7 +126,7 @@ namespace
     for (unsigned int r = 0; r < n_repeats; ++r)
       {
         x = 0.;
-        SolverControl                           control(1000, 1e-10 * b.l2_norm());
+        SolverControl control(1000, 1e-10 * b.l2_norm());
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
         cg.solve(trilinos_matrix, x, b, amg);
         cg_iterations = control.last_step();
@@ -137,7 +139,8 @@ namespace
     LAPACKFullMatrix<double> boundary(n_boundary, n_boundary);
     for (unsigned int i = 0; i < n_boundary; ++i)
       for (unsigned int j = 0; j < n_boundary; ++j)
-        boundary(i, j) = (i == j ? n_boundary : 1. / (1. + std::abs(int(i) - int(j))));
+        boundary(i, j) =
+          (i == j ? n_boundary : 1. / (1. + std::abs(int(i) - int(j))));
     boundary.set_property(LAPACKSupport::symmetric);
     timer.restart();
     boundary.compute_cholesky_factorization();
@@ -149,10 +152,10 @@ namespace
       {
         cholmod_common common;
         cholmod_start(&common);
-        common.supernodal          = CHOLMOD_SIMPLICIAL;
-        common.nmethods            = 1;
-        common.method[0].ordering  = ordering.second;
-        cholmod_sparse *a          = to_cholmod(matrix, common);
+        common.supernodal         = CHOLMOD_SIMPLICIAL;
+        common.nmethods           = 1;
+        common.method[0].ordering = ordering.second;
+        cholmod_sparse *a         = to_cholmod(matrix, common);
         timer.restart();
         cholmod_factor *factor = cholmod_analyze(a, &common);
         cholmod_factorize(a, factor, &common);
@@ -168,12 +171,10 @@ namespace
           }
         const double solve_seconds = timer.wall_time() / n_repeats;
         std::cout << refinements << ',' << n << ',' << ordering.first << ','
-                  << common.lnz << ',' << factor_seconds << ','
-                  << solve_seconds << ',' << cg_iterations << ','
-                  << cg_iteration_seconds << ','
-                  << solve_seconds / cg_iteration_seconds << ','
-                  << n_boundary << ',' << boundary_cholesky_seconds
-                  << std::endl;
+                  << common.lnz << ',' << factor_seconds << ',' << solve_seconds
+                  << ',' << cg_iterations << ',' << cg_iteration_seconds << ','
+                  << solve_seconds / cg_iteration_seconds << ',' << n_boundary
+                  << ',' << boundary_cholesky_seconds << std::endl;
         cholmod_free_dense(&rhs, &common);
         cholmod_free_factor(&factor, &common);
         cholmod_free_sparse(&a, &common);

@@ -30,8 +30,8 @@
  */
 #include <deal.II/base/mpi.h>
 
-#include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/problem/contact_problem.h>
 
 #include <fstream>
 #include <iostream>
@@ -52,8 +52,9 @@ main(int argc, char **argv)
   const int         refinements = std::stoi(argv[2]);
   std::ifstream     in(HEMICONTACT_SOURCE_DIR "/prm/block_2d.prm");
   std::stringstream text;
-  text << in.rdbuf() << "subsection geometry\n  set global refinements = "
-       << refinements << "\nend\n"
+  text << in.rdbuf()
+       << "subsection geometry\n  set global refinements = " << refinements
+       << "\nend\n"
        << "subsection output\n  set directory = output-solver-variants\n"
        << "  set terminal = quiet\n  set output interval = 0\n"
        << "  set probe points =\nend\n";
@@ -76,7 +77,8 @@ main(int argc, char **argv)
       return 1;
     }
 
-  ContactProblem<2> problem(parameters, create_contact_laws(prm),
+  ContactProblem<2> problem(parameters,
+                            create_contact_laws(prm),
                             MPI_COMM_WORLD);
   problem.setup();
   unsigned int newton = 0, krylov = 0, steps = 0;

@@ -47,9 +47,11 @@ main(int argc, char **argv)
                "h5_ms,free_ms\n";
   for (int a = 1; a < argc; ++a)
     {
-      const unsigned int r = std::stoi(argv[a]);
+      const unsigned int                      r = std::stoi(argv[a]);
       parallel::distributed::Triangulation<2> mesh(MPI_COMM_WORLD);
-      GridGenerator::subdivided_hyper_rectangle(mesh, {4, 1}, Point<2>(0, 0),
+      GridGenerator::subdivided_hyper_rectangle(mesh,
+                                                {4, 1},
+                                                Point<2>(0, 0),
                                                 Point<2>(4, 1));
       mesh.refine_global(r);
       DoFHandler<2> dof_handler(mesh);
@@ -79,15 +81,23 @@ main(int argc, char **argv)
             scalars(2, DataComponentInterpretation::component_is_scalar);
           for (const std::string name :
                {"velocity", "displacement", "contact_traction"})
-            data_out->add_data_vector(field, std::vector<std::string>(2, name),
-                                      DataOut<2>::type_dof_data, vector);
-          data_out->add_data_vector(field,
-                                    std::vector<std::string>{"normal_branch",
-                                                             "tangential_branch"},
-                                    DataOut<2>::type_dof_data, scalars);
-          for (const std::string name : {"stress_xx", "stress_xy", "stress_yy",
-                                         "von_mises", "subdomain", "level"})
-            data_out->add_data_vector(cell_field, name,
+            data_out->add_data_vector(field,
+                                      std::vector<std::string>(2, name),
+                                      DataOut<2>::type_dof_data,
+                                      vector);
+          data_out->add_data_vector(
+            field,
+            std::vector<std::string>{"normal_branch", "tangential_branch"},
+            DataOut<2>::type_dof_data,
+            scalars);
+          for (const std::string name : {"stress_xx",
+                                         "stress_xy",
+                                         "stress_yy",
+                                         "von_mises",
+                                         "subdomain",
+                                         "level"})
+            data_out->add_data_vector(cell_field,
+                                      name,
                                       DataOut<2>::type_cell_data);
           record("add", timer);
 
@@ -109,7 +119,8 @@ main(int argc, char **argv)
           data_out->write_filtered_data(*filter);
           record("filter", timer);
 
-          data_out->write_hdf5_parallel(*filter, "write_cost.h5",
+          data_out->write_hdf5_parallel(*filter,
+                                        "write_cost.h5",
                                         MPI_COMM_WORLD);
           record("h5", timer);
 

@@ -1,7 +1,7 @@
 #include <deal.II/base/utilities.h>
 
-#include <hemicontact/expressions/expression.h>
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/expressions/expression.h>
 
 #include <algorithm>
 #include <cctype>
@@ -11,16 +11,18 @@ namespace hemicontact
   namespace
   {
     /** Recursive-descent parser, loosest first: expr = disjunction [?
-     *  expr : expr], disjunction = conjunction {|| conjunction}, conjunction = comparison {&& comparison}, comparison =
-     *  sum [(<|>|<=|>=|==|!=) sum], sum = term {(+|-) term}, term = unary
+     *  expr : expr], disjunction = conjunction {|| conjunction}, conjunction =
+     * comparison {&& comparison}, comparison = sum [(<|>|<=|>=|==|!=) sum], sum
+     * = term {(+|-) term}, term = unary
      *  {(*|/) unary}, unary = (-|+) unary | power, power = primary [^
      *  unary]: as in muparser, -x^2 is -(x^2) and 2^3^2 is 2^9. */
     class Parser
     {
     public:
-      Parser(const std::string &text, const std::vector<std::string> &variables,
+      Parser(const std::string                   &text,
+             const std::vector<std::string>      &variables,
              const std::map<std::string, double> &constants,
-             const std::string &parameter_name)
+             const std::string                   &parameter_name)
         : text(text)
         , variables(variables)
         , constants(constants)
@@ -31,9 +33,9 @@ namespace hemicontact
       parse()
       {
         if (text.size() > max_length)
-          throw InputError("cannot parse '" + parameter_name + "' = " +
-                           quoted_expression(text) + ": it is longer than " +
-                           std::to_string(max_length) +
+          throw InputError("cannot parse '" + parameter_name +
+                           "' = " + quoted_expression(text) +
+                           ": it is longer than " + std::to_string(max_length) +
                            " characters, the most an expression may have.");
         auto node = expression();
         skip_space();
@@ -50,8 +52,8 @@ namespace hemicontact
       [[noreturn]] void
       fail(const std::string &what, const std::string &hint = "") const
       {
-        throw InputError("cannot parse '" + parameter_name + "' = " +
-                         quoted_expression(text) + ": " + what +
+        throw InputError("cannot parse '" + parameter_name +
+                         "' = " + quoted_expression(text) + ": " + what +
                          " at position " + std::to_string(position + 1) + "." +
                          (hint.empty() ? "" : " " + hint));
       }
@@ -76,8 +78,9 @@ namespace hemicontact
       }
 
       static NodePtr
-      make(Expression::Node::Kind kind, const std::string &op,
-           std::vector<NodePtr> args)
+      make(Expression::Node::Kind kind,
+           const std::string     &op,
+           std::vector<NodePtr>   args)
       {
         auto node  = std::make_unique<Expression::Node>();
         node->kind = kind;
@@ -101,9 +104,9 @@ namespace hemicontact
       NodePtr
       operation(const std::string &op, NodePtr a, NodePtr b)
       {
-        NodePtr node     = binary(op, std::move(a), std::move(b));
-        node->kind        = Expression::Node::function;
-        node->fn          = Expression::function_of(op);
+        NodePtr node = binary(op, std::move(a), std::move(b));
+        node->kind   = Expression::Node::function;
+        node->fn     = Expression::function_of(op);
         return node;
       }
 
@@ -114,10 +117,11 @@ namespace hemicontact
         if (!accept('?'))
           return condition;
         const Nested nested(*this);
-        NodePtr if_true = expression();
+        NodePtr      if_true = expression();
         if (!accept(':'))
           fail("missing ':' of 'c ? a : b'");
-        NodePtr node = operation("?:", std::move(condition), std::move(if_true));
+        NodePtr node =
+          operation("?:", std::move(condition), std::move(if_true));
         node->args.push_back(expression());
         return node;
       }
@@ -195,7 +199,7 @@ namespace hemicontact
       {
         if (accept('-'))
           {
-            const Nested nested(*this);
+            const Nested         nested(*this);
             std::vector<NodePtr> args;
             args.push_back(unary());
             return make(Expression::Node::unary, "-", std::move(args));
@@ -258,7 +262,7 @@ namespace hemicontact
         if (accept('('))
           {
             const Nested nested(*this);
-            NodePtr inner = expression();
+            NodePtr      inner = expression();
             if (!accept(')'))
               fail("missing ')'");
             return inner;
@@ -266,8 +270,8 @@ namespace hemicontact
         const char c = text[position];
         if (std::isdigit(c) || c == '.')
           {
-            std::size_t length = 0;
-            const double value = std::stod(text.substr(position), &length);
+            std::size_t  length = 0;
+            const double value  = std::stod(text.substr(position), &length);
             position += length;
             auto node   = std::make_unique<Expression::Node>();
             node->kind  = Expression::Node::constant;
@@ -314,7 +318,7 @@ namespace hemicontact
           fail("unknown function '" + name + "'");
         const auto function =
           static_cast<Expression::Function>(found - names.begin());
-        const bool two_argument = Expression::is_binary(function);
+        const bool           two_argument = Expression::is_binary(function);
         std::vector<NodePtr> args;
         args.push_back(expression());
         if (two_argument)
@@ -325,8 +329,8 @@ namespace hemicontact
           }
         if (!accept(')'))
           fail("missing ')' after the arguments of '" + name + "'");
-        NodePtr node      = make(Expression::Node::function, name, std::move(args));
-        node->fn = function;
+        NodePtr node = make(Expression::Node::function, name, std::move(args));
+        node->fn     = function;
         return node;
       }
 
@@ -340,7 +344,8 @@ namespace hemicontact
         NodePtr if_true = expression();
         if (!accept(','))
           fail("'if' needs three arguments, if(condition, a, b)");
-        NodePtr node = operation("?:", std::move(condition), std::move(if_true));
+        NodePtr node =
+          operation("?:", std::move(condition), std::move(if_true));
         node->args.push_back(expression());
         if (!accept(')'))
           fail("missing ')' after the arguments of 'if'");
@@ -352,11 +357,11 @@ namespace hemicontact
       /** The deepest nesting read. */
       static constexpr unsigned int max_depth = 500;
 
-      inline static const std::vector<std::string> comparison_operators = {
-        "<=", ">=", "==", "!=", "<", ">"};
+      inline static const std::vector<std::string> comparison_operators =
+        {"<=", ">=", "==", "!=", "<", ">"};
 
       const std::string                    text;
-      const std::vector<std::string> &     variables;
+      const std::vector<std::string>      &variables;
       const std::map<std::string, double> &constants;
       const std::string                    parameter_name;
       std::size_t                          position = 0;
@@ -368,9 +373,9 @@ namespace hemicontact
   Expression::function_names()
   {
     static const std::vector<std::string> names = {
-      "sin",  "cos",  "tan",  "exp", "log", "sqrt", "abs", "tanh",
-      "sinh", "cosh", "atan", "pos", "step", "sign", "pow", "max", "min",
-      "<",    ">",    "<=",   ">=",  "==",  "!=",   "&&",  "||",  "?:"};
+      "sin",  "cos",  "tan", "exp",  "log",  "sqrt", "abs", "tanh", "sinh",
+      "cosh", "atan", "pos", "step", "sign", "pow",  "max", "min",  "<",
+      ">",    "<=",   ">=",  "==",   "!=",   "&&",   "||",  "?:"};
     return names;
   }
 
@@ -396,10 +401,10 @@ namespace hemicontact
            std::to_string(text.size()) + " characters)";
   }
 
-  Expression::Expression(const std::string &                  text,
-                         const std::vector<std::string> &     variables,
+  Expression::Expression(const std::string                   &text,
+                         const std::vector<std::string>      &variables,
                          const std::map<std::string, double> &constants,
-                         const std::string &                  parameter_name)
+                         const std::string                   &parameter_name)
     : root(Parser(text, variables, constants, parameter_name).parse())
   {}
   bool

@@ -32,12 +32,12 @@ namespace hemicontact
     NodePtr
     clone(const Node &node)
     {
-      auto copy         = std::make_unique<Node>();
-      copy->kind        = node.kind;
-      copy->value       = node.value;
-      copy->index       = node.index;
-      copy->op          = node.op;
-      copy->fn          = node.fn;
+      auto copy   = std::make_unique<Node>();
+      copy->kind  = node.kind;
+      copy->value = node.value;
+      copy->index = node.index;
+      copy->op    = node.op;
+      copy->fn    = node.fn;
       for (const auto &arg : node.args)
         copy->args.push_back(clone(*arg));
       return copy;
@@ -57,10 +57,10 @@ namespace hemicontact
     NodePtr
     function(const std::string &name, NodePtr a, NodePtr b = nullptr)
     {
-      auto node         = std::make_unique<Node>();
-      node->kind        = Node::function;
-      node->op          = name;
-      node->fn          = Expression::function_of(name);
+      auto node  = std::make_unique<Node>();
+      node->kind = Node::function;
+      node->op   = name;
+      node->fn   = Expression::function_of(name);
       node->args.push_back(std::move(a));
       if (b)
         node->args.push_back(std::move(b));
@@ -161,38 +161,39 @@ namespace hemicontact
         {
           // b a^(b-1) a'
           if (b.kind != Node::constant)
-            return multiply(
-              multiply(clone(b),
-                       function("pow", clone(a),
-                                subtract(clone(b), constant(1)))),
-              std::move(da));
-          const double n = b.value;
-          NodePtr      lower =
-            is_small_integer(b) ?
-                   power(clone(a), n - 1) :
-                   function("pow", clone(a), constant(n - 1));
+            return multiply(multiply(clone(b),
+                                     function("pow",
+                                              clone(a),
+                                              subtract(clone(b), constant(1)))),
+                            std::move(da));
+          const double n     = b.value;
+          NodePtr      lower = is_small_integer(b) ?
+                                 power(clone(a), n - 1) :
+                                 function("pow", clone(a), constant(n - 1));
           return multiply(multiply(constant(n), std::move(lower)),
                           std::move(da));
         }
       // a^b (b' log a + b a'/a)
-      return multiply(
-        function("pow", clone(a), clone(b)),
-        add(multiply(std::move(db), function("log", clone(a))),
-            divide(multiply(clone(b), std::move(da)), clone(a))));
+      return multiply(function("pow", clone(a), clone(b)),
+                      add(multiply(std::move(db), function("log", clone(a))),
+                          divide(multiply(clone(b), std::move(da)), clone(a))));
     }
 
-    /** d/dx max(a, b) (@p greater) or min(a, b): the branch evaluate() takes. */
+    /** d/dx max(a, b) (@p greater) or min(a, b): the branch evaluate() takes.
+     */
     NodePtr
-    selection_derivative(const Node &a, const Node &b, const bool greater,
+    selection_derivative(const Node        &a,
+                         const Node        &b,
+                         const bool         greater,
                          const unsigned int index)
     {
       NodePtr da = derivative(a, index);
       NodePtr db = derivative(b, index);
       if (is_constant(da, 0) && is_constant(db, 0))
         return constant(0);
-      NodePtr a_taken = function(
-        "step", greater ? subtract(clone(a), clone(b)) :
-                          subtract(clone(b), clone(a)));
+      NodePtr a_taken = function("step",
+                                 greater ? subtract(clone(a), clone(b)) :
+                                           subtract(clone(b), clone(a)));
       NodePtr b_taken = subtract(constant(1), clone(*a_taken));
       return add(multiply(std::move(a_taken), std::move(da)),
                  multiply(std::move(b_taken), std::move(db)));
@@ -218,17 +219,16 @@ namespace hemicontact
                   case '+':
                     return add(derivative(a, index), derivative(b, index));
                   case '-':
-                    return subtract(derivative(a, index),
-                                    derivative(b, index));
+                    return subtract(derivative(a, index), derivative(b, index));
                   case '*':
                     return add(multiply(derivative(a, index), clone(b)),
                                multiply(clone(a), derivative(b, index)));
                   case '/':
                     // a'/b - a b'/b^2
-                    return subtract(
-                      divide(derivative(a, index), clone(b)),
-                      divide(multiply(clone(a), derivative(b, index)),
-                             power(clone(b), 2)));
+                    return subtract(divide(derivative(a, index), clone(b)),
+                                    divide(multiply(clone(a),
+                                                    derivative(b, index)),
+                                           power(clone(b), 2)));
                   default: // '^'
                     return power_derivative(a, b, index);
                 }
@@ -237,13 +237,15 @@ namespace hemicontact
             break;
         }
 
-      using Function = Expression::Function;
+      using Function   = Expression::Function;
       const Node    &a = *node.args[0];
       const Function f = node.fn;
       if (f == Function::pow)
         return power_derivative(a, *node.args[1], index);
       if (f == Function::max || f == Function::min)
-        return selection_derivative(a, *node.args[1], f == Function::max,
+        return selection_derivative(a,
+                                    *node.args[1],
+                                    f == Function::max,
                                     index);
       if (f == Function::conditional)
         {
@@ -286,8 +288,7 @@ namespace hemicontact
             outer = function("sign", clone(a));
             break;
           case Function::tanh:
-            outer =
-              subtract(constant(1), power(function("tanh", clone(a)), 2));
+            outer = subtract(constant(1), power(function("tanh", clone(a)), 2));
             break;
           case Function::sinh:
             outer = function("cosh", clone(a));
@@ -296,8 +297,7 @@ namespace hemicontact
             outer = function("sinh", clone(a));
             break;
           case Function::atan:
-            return divide(std::move(da),
-                          add(constant(1), power(clone(a), 2)));
+            return divide(std::move(da), add(constant(1), power(clone(a), 2)));
           default: // pos
             outer = function("step", clone(a));
         }
@@ -309,8 +309,8 @@ namespace hemicontact
   Expression::function_of(const std::string &name)
   {
     const auto &names = function_names();
-    return static_cast<Function>(
-      std::find(names.begin(), names.end(), name) - names.begin());
+    return static_cast<Function>(std::find(names.begin(), names.end(), name) -
+                                 names.begin());
   }
 
   Expression::Expression(std::unique_ptr<Node> root)

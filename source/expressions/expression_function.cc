@@ -10,16 +10,18 @@ namespace hemicontact
      *  ExpressionFunction<dim>, with t uniform. */
     template <int dim>
     ExpressionTape
-    make_tape(const std::vector<std::string> &     texts,
+    make_tape(const std::vector<std::string>      &texts,
               const std::map<std::string, double> &constants,
-              const std::string &                  parameter_name)
+              const std::string                   &parameter_name)
     {
       std::vector<std::unique_ptr<Expression>> expressions;
       std::vector<const Expression *>          pointers;
       for (const std::string &text : texts)
         {
           expressions.push_back(std::make_unique<Expression>(
-            text, ExpressionFunction<dim>::variable_names(), constants,
+            text,
+            ExpressionFunction<dim>::variable_names(),
+            constants,
             parameter_name));
           pointers.push_back(expressions.back().get());
         }
@@ -29,9 +31,9 @@ namespace hemicontact
 
   template <int dim>
   ExpressionFunction<dim>::ExpressionFunction(
-    const std::vector<std::string> &     expressions,
+    const std::vector<std::string>      &expressions,
     const std::map<std::string, double> &constants,
-    const std::string &                  parameter_name)
+    const std::string                   &parameter_name)
     : dealii::AutoDerivativeFunction<dim>(1e-8, expressions.size())
     , tape(make_tape<dim>(expressions, constants, parameter_name))
   {}
@@ -49,7 +51,7 @@ namespace hemicontact
   void
   ExpressionFunction<dim>::evaluate(
     const std::vector<dealii::Point<dim>> &points,
-    std::vector<double> &                  results) const
+    std::vector<double>                   &results) const
   {
     // per thread: deal.II evaluates Functions from several threads
     thread_local std::vector<double> variables;
@@ -79,7 +81,7 @@ namespace hemicontact
   template <int dim>
   void
   ExpressionFunction<dim>::vector_value(const dealii::Point<dim> &p,
-                                        dealii::Vector<double> &  values) const
+                                        dealii::Vector<double>   &values) const
   {
     AssertDimension(values.size(), this->n_components);
     thread_local std::vector<double> results;
@@ -92,7 +94,7 @@ namespace hemicontact
   void
   ExpressionFunction<dim>::value_list(
     const std::vector<dealii::Point<dim>> &points,
-    std::vector<double> &                  values,
+    std::vector<double>                   &values,
     const unsigned int                     component) const
   {
     AssertIndexRange(component, this->n_components);
@@ -107,7 +109,7 @@ namespace hemicontact
   void
   ExpressionFunction<dim>::vector_value_list(
     const std::vector<dealii::Point<dim>> &points,
-    std::vector<dealii::Vector<double>> &  values) const
+    std::vector<dealii::Vector<double>>   &values) const
   {
     AssertDimension(values.size(), points.size());
     thread_local std::vector<double> results;

@@ -19,7 +19,7 @@ namespace hemicontact
 
   ExpressionTape::ExpressionTape(
     const std::vector<const Expression *> &expressions,
-    const std::vector<unsigned int> &      uniform_variables)
+    const std::vector<unsigned int>       &uniform_variables)
     : uniform_variables(uniform_variables)
   {
     for (const Expression *e : expressions)
@@ -74,8 +74,8 @@ namespace hemicontact
           break;
         default:
           {
-            const bool binary   = instruction.n_operands > 1;
-            const Instruction &a = code[instruction.a];
+            const bool         binary = instruction.n_operands > 1;
+            const Instruction &a      = code[instruction.a];
             const Instruction &b = code[binary ? instruction.b : instruction.a];
             const Instruction &c =
               code[instruction.n_operands > 2 ? instruction.c : instruction.a];
@@ -85,9 +85,12 @@ namespace hemicontact
       }
     instruction.spatial = !instruction.uniform && !instruction.timed;
     // the same operation on the same operands is the same subexpression
-    const Key key{static_cast<int>(instruction.op),
+    const Key  key{static_cast<int>(instruction.op),
                   static_cast<int>(instruction.function),
-                  instruction.a, instruction.b, instruction.c, instruction.n,
+                  instruction.a,
+                  instruction.b,
+                  instruction.c,
+                  instruction.n,
                   bits(instruction.value)};
     const auto found = known.find(key);
     if (found != known.end())
@@ -129,7 +132,7 @@ namespace hemicontact
                 instruction.op         = Op::integer_power;
                 instruction.a          = compile(*node.args[0]);
                 instruction.n_operands = 1;
-                instruction.n  = static_cast<unsigned int>(exponent.value);
+                instruction.n = static_cast<unsigned int>(exponent.value);
                 return append(instruction);
               }
             instruction.a          = compile(*node.args[0]);
@@ -150,16 +153,16 @@ namespace hemicontact
                   instruction.op = Op::divide;
                   break;
                 default: // '^' with a general exponent
-                  instruction.op          = Op::function;
+                  instruction.op       = Op::function;
                   instruction.function = Expression::Function::pow;
               }
             return append(instruction);
           }
         default:
-          instruction.op          = Op::function;
-          instruction.function    = node.fn;
-          instruction.a           = compile(*node.args[0]);
-          instruction.n_operands  = node.args.size();
+          instruction.op         = Op::function;
+          instruction.function   = node.fn;
+          instruction.a          = compile(*node.args[0]);
+          instruction.n_operands = node.args.size();
           if (node.args.size() > 1)
             instruction.b = compile(*node.args[1]);
           if (node.args.size() > 2)
@@ -170,51 +173,55 @@ namespace hemicontact
 
   void
   ExpressionTape::evaluate(const std::vector<double> &variables,
-                           std::vector<double> &      results) const
+                           std::vector<double>       &results) const
   {
     results.resize(outputs.size());
     evaluate(variables.data(), variables.size(), 1, results.data());
   }
 
   void
-  ExpressionTape::evaluate(const double *     variables,
+  ExpressionTape::evaluate(const double      *variables,
                            const unsigned int n_variables,
                            const unsigned int n_points,
-                           double *           results) const
+                           double            *results) const
   {
     gather(execute(variables, n_variables, n_points, Pass::all, nullptr),
-           n_points, results);
+           n_points,
+           results);
   }
 
   void
-  ExpressionTape::evaluate_spatial(const double *     variables,
+  ExpressionTape::evaluate_spatial(const double      *variables,
                                    const unsigned int n_variables,
                                    const unsigned int n_points,
-                                   double *           spatial) const
+                                   double            *spatial) const
   {
     const double *const r =
       execute(variables, n_variables, n_points, Pass::time_free, nullptr);
     for (unsigned int i = 0; i < code.size(); ++i)
       if (code[i].cached >= 0)
-        std::copy_n(r + std::size_t(i) * n_points, n_points,
+        std::copy_n(r + std::size_t(i) * n_points,
+                    n_points,
                     spatial + std::size_t(code[i].cached) * n_points);
   }
 
   void
-  ExpressionTape::evaluate_cached(const double *     variables,
+  ExpressionTape::evaluate_cached(const double      *variables,
                                   const unsigned int n_variables,
                                   const unsigned int n_points,
-                                  const double *     spatial,
-                                  double *           results) const
+                                  const double      *spatial,
+                                  double            *results) const
   {
-    gather(execute(variables, n_variables, n_points, Pass::given_spatial,
-                   spatial),
-           n_points, results);
+    gather(
+      execute(variables, n_variables, n_points, Pass::given_spatial, spatial),
+      n_points,
+      results);
   }
 
   void
-  ExpressionTape::gather(const double *r, const unsigned int n_points,
-                         double *results) const
+  ExpressionTape::gather(const double      *r,
+                         const unsigned int n_points,
+                         double            *results) const
   {
     const unsigned int n_results = outputs.size();
     for (unsigned int p = 0; p < n_points; ++p)
@@ -224,11 +231,11 @@ namespace hemicontact
   }
 
   double *
-  ExpressionTape::execute(const double *     variables,
+  ExpressionTape::execute(const double      *variables,
                           const unsigned int n_variables,
                           const unsigned int n_points,
                           const Pass         pass,
-                          const double *     spatial) const
+                          const double      *spatial) const
   {
     // one register per instruction and point; per thread, as deal.II may
     // evaluate functions from several threads
@@ -245,7 +252,8 @@ namespace hemicontact
         double *const      out = r + std::size_t(i) * n_points;
         if (pass == Pass::given_spatial && c.spatial)
           {
-            std::copy_n(spatial + std::size_t(c.cached) * n_points, n_points,
+            std::copy_n(spatial + std::size_t(c.cached) * n_points,
+                        n_points,
                         out);
             continue;
           }
@@ -297,8 +305,7 @@ namespace hemicontact
                   out[p] = a[p] != 0 ? b[p] : d[p];
               else
                 for (unsigned int p = 0; p < n; ++p)
-                  out[p] =
-                    Expression::apply_function(c.function, a[p], b[p]);
+                  out[p] = Expression::apply_function(c.function, a[p], b[p]);
           }
         if (c.uniform)
           std::fill(out + 1, out + n_points, out[0]);

@@ -9,8 +9,8 @@ namespace hemicontact
   {}
 
   bool
-  SpatialCache::same_points(const Batch &      batch,
-                            const double *     variables,
+  SpatialCache::same_points(const Batch       &batch,
+                            const double      *variables,
                             const unsigned int n_variables,
                             const unsigned int n_points) const
   {
@@ -26,10 +26,10 @@ namespace hemicontact
   }
 
   void
-  SpatialCache::evaluate(const double *     variables,
+  SpatialCache::evaluate(const double      *variables,
                          const unsigned int n_variables,
                          const unsigned int n_points,
-                         double *           results)
+                         double            *results)
   {
     std::unique_lock<std::mutex> lock(mutex, std::try_to_lock);
     if (!lock.owns_lock() || n_points == 0)
@@ -70,7 +70,9 @@ namespace hemicontact
         same_points(batches[at], variables, n_variables, n_points))
       {
         ++hits;
-        tape.evaluate_cached(variables, n_variables, n_points,
+        tape.evaluate_cached(variables,
+                             n_variables,
+                             n_points,
                              batches[at].data() +
                                point_variables.size() * n_points,
                              results);

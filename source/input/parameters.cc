@@ -27,15 +27,13 @@ namespace hemicontact
     const SelectionNames<MeshType> mesh_types = {{"rectangle",
                                                   MeshType::rectangle},
                                                  {"gmsh", MeshType::gmsh}};
-    const SelectionNames<CellType> cell_types = {{"hypercube",
-                                                  CellType::hypercube},
-                                                 {"simplex", CellType::simplex}};
+    const SelectionNames<CellType> cell_types =
+      {{"hypercube", CellType::hypercube}, {"simplex", CellType::simplex}};
     const SelectionNames<LameParametrisation> parametrisations = {
       {"lame", LameParametrisation::lame},
       {"young", LameParametrisation::young}};
-    const SelectionNames<SolutionFormat> solution_formats = {
-      {"vtu", SolutionFormat::vtu},
-      {"hdf5", SolutionFormat::hdf5}};
+    const SelectionNames<SolutionFormat> solution_formats =
+      {{"vtu", SolutionFormat::vtu}, {"hdf5", SolutionFormat::hdf5}};
     const SelectionNames<DataOutBase::VtkFlags::ZlibCompressionLevel>
       compression_levels = {
         {"best speed", DataOutBase::VtkFlags::best_speed},
@@ -49,11 +47,11 @@ namespace hemicontact
       {"progress", TerminalOutput::progress},
       {"quiet", TerminalOutput::quiet},
       {"test", TerminalOutput::test}};
-    const SelectionNames<StudyType> study_types = {{"single", StudyType::single},
-                                                   {"h", StudyType::h},
-                                                   {"k", StudyType::k},
-                                                   {"coupled",
-                                                    StudyType::coupled}};
+    const SelectionNames<StudyType> study_types = {
+      {"single", StudyType::single},
+      {"h", StudyType::h},
+      {"k", StudyType::k},
+      {"coupled", StudyType::coupled}};
     const SelectionNames<RefinementIndicator> indicators = {
       {"kelly", RefinementIndicator::kelly},
       {"kelly contact", RefinementIndicator::kelly_contact},
@@ -80,33 +78,45 @@ namespace hemicontact
   GeometryParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("geometry");
-    prm.declare_entry("mesh", "rectangle", selection_pattern(mesh_types),
-                      "'rectangle' builds a rectangle (2D) or box (3D) from the "
-                      "corners below, with boundary ids 0 (x = x0), 1 (x = x1), "
-                      "2 (y = y0), 3 (y = y1), 4 (z = z0), 5 (z = z1). 'gmsh' "
-                      "reads 'mesh file' (physical tags become boundary ids).");
-    prm.declare_entry("cell type", "hypercube",
-                      selection_pattern(cell_types),
-                      "'hypercube': quadrilaterals/hexahedra, FE_Q(1)^d on a "
-                      "p4est distributed mesh. 'simplex': triangles/tetrahedra, "
-                      "FE_SimplexP(1)^d on a fully distributed mesh (uniform "
-                      "refinement only).");
-    prm.declare_entry("lower left corner", "0, 0, 0",
+    prm.declare_entry(
+      "mesh",
+      "rectangle",
+      selection_pattern(mesh_types),
+      "'rectangle' builds a rectangle (2D) or box (3D) from the "
+      "corners below, with boundary ids 0 (x = x0), 1 (x = x1), "
+      "2 (y = y0), 3 (y = y1), 4 (z = z0), 5 (z = z1). 'gmsh' "
+      "reads 'mesh file' (physical tags become boundary ids).");
+    prm.declare_entry(
+      "cell type",
+      "hypercube",
+      selection_pattern(cell_types),
+      "'hypercube': quadrilaterals/hexahedra, FE_Q(1)^d on a "
+      "p4est distributed mesh. 'simplex': triangles/tetrahedra, "
+      "FE_SimplexP(1)^d on a fully distributed mesh (uniform "
+      "refinement only).");
+    prm.declare_entry("lower left corner",
+                      "0, 0, 0",
                       Patterns::List(Patterns::Double(), 2, 3),
                       "Corner (x0, y0[, z0]) of the rectangle/box; only the "
                       "first 'dimension' entries are used.");
-    prm.declare_entry("upper right corner", "4, 1, 1",
+    prm.declare_entry("upper right corner",
+                      "4, 1, 1",
                       Patterns::List(Patterns::Double(), 2, 3),
                       "Opposite corner (x1, y1[, z1]).");
-    prm.declare_entry("subdivisions", "4, 1, 1",
+    prm.declare_entry("subdivisions",
+                      "4, 1, 1",
                       Patterns::List(Patterns::Integer(1), 2, 3),
                       "Number of coarse cells in each direction.");
-    prm.declare_entry("mesh file", "", Patterns::Anything(),
+    prm.declare_entry("mesh file",
+                      "",
+                      Patterns::Anything(),
                       "Gmsh .msh file (relative to the working directory) for "
                       "mesh = gmsh. Its cells must all be of 'cell type', in "
                       "2D its nodes in z = 0, without duplicated nodes or "
                       "self-intersecting cells.");
-    prm.declare_entry("global refinements", "3", Patterns::Integer(0, 20),
+    prm.declare_entry("global refinements",
+                      "3",
+                      Patterns::Integer(0, 20),
                       "Number of uniform refinements of the coarse mesh. For "
                       "a simplex rectangle/box the mesh is instead built "
                       "with 2^r times the subdivisions (same mesh size, "
@@ -140,14 +150,17 @@ namespace hemicontact
   BoundaryParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("boundary");
-    prm.declare_entry("clamped boundary ids", "0",
+    prm.declare_entry("clamped boundary ids",
+                      "0",
                       Patterns::List(Patterns::Integer(0, 255)),
                       "Boundary ids of Gamma_1 (u = 0). Must not be empty.");
-    prm.declare_entry("traction boundary ids", "1, 3",
+    prm.declare_entry("traction boundary ids",
+                      "1, 3",
                       Patterns::List(Patterns::Integer(0, 255)),
                       "Boundary ids of Gamma_2 (sigma nu = f2); may be empty. "
                       "Boundary parts in no list are traction free.");
-    prm.declare_entry("contact boundary ids", "2",
+    prm.declare_entry("contact boundary ids",
+                      "2",
                       Patterns::List(Patterns::Integer(0, 255)),
                       "Boundary ids of Gamma_3 (contact). Must not be empty.");
     prm.leave_subsection();
@@ -170,14 +183,15 @@ namespace hemicontact
     // Gamma_1, Gamma_2 and Gamma_3 are disjoint parts of the boundary
     const auto require_disjoint = [](const std::vector<unsigned int> &a,
                                      const std::vector<unsigned int> &b,
-                                     const std::string &what) {
+                                     const std::string               &what) {
       for (const unsigned int i : a)
         for (const unsigned int j : b)
-          require(i != j, "boundary: id " + std::to_string(i) +
-                            " is listed both as " + what +
-                            "; Gamma_1 (clamped), Gamma_2 (traction) and "
-                            "Gamma_3 (contact) are disjoint parts of the "
-                            "boundary, so each id belongs to one list.");
+          require(i != j,
+                  "boundary: id " + std::to_string(i) + " is listed both as " +
+                    what +
+                    "; Gamma_1 (clamped), Gamma_2 (traction) and "
+                    "Gamma_3 (contact) are disjoint parts of the "
+                    "boundary, so each id belongs to one list.");
     };
     require_disjoint(contact_ids, clamped_ids, "clamped and as contact");
     require_disjoint(traction_ids, contact_ids, "traction and as contact");
@@ -187,16 +201,23 @@ namespace hemicontact
   void
   LamePair::declare(ParameterHandler &prm)
   {
-    prm.declare_entry("parametrisation", "lame",
+    prm.declare_entry("parametrisation",
+                      "lame",
                       selection_pattern(parametrisations),
                       "'lame': use 'mu' and 'lambda'; 'young': use 'young "
                       "modulus' and 'poisson ratio'.");
     prm.declare_entry("mu", "1", Patterns::Double(), "Lame parameter mu.");
-    prm.declare_entry("lambda", "1", Patterns::Double(),
+    prm.declare_entry("lambda",
+                      "1",
+                      Patterns::Double(),
                       "Lame parameter lambda.");
-    prm.declare_entry("young modulus", "1", Patterns::Double(),
+    prm.declare_entry("young modulus",
+                      "1",
+                      Patterns::Double(),
                       "Young's modulus E > 0.");
-    prm.declare_entry("poisson ratio", "0.3", Patterns::Double(),
+    prm.declare_entry("poisson ratio",
+                      "0.3",
+                      Patterns::Double(),
                       "Poisson's ratio, -1 < nu < 0.5.");
   }
 
@@ -213,8 +234,9 @@ namespace hemicontact
       {
         const double E  = prm.get_double("young modulus");
         const double nu = prm.get_double("poisson ratio");
-        require(E > 0, "material/" + name + ": 'young modulus' = " +
-                         std::to_string(E) + " must be positive.");
+        require(E > 0,
+                "material/" + name + ": 'young modulus' = " +
+                  std::to_string(E) + " must be positive.");
         require(nu > -1 && nu < 0.5,
                 "material/" + name + ": 'poisson ratio' = " +
                   std::to_string(nu) + " must lie in (-1, 0.5).");
@@ -227,7 +249,10 @@ namespace hemicontact
   MaterialParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("material");
-    prm.declare_entry("density", "1", Patterns::Double(), "Mass density rho > 0.");
+    prm.declare_entry("density",
+                      "1",
+                      Patterns::Double(),
+                      "Mass density rho > 0.");
     prm.enter_subsection("viscosity");
     LamePair::declare(prm);
     prm.leave_subsection();
@@ -250,8 +275,9 @@ namespace hemicontact
     prm.leave_subsection();
     prm.leave_subsection();
 
-    require(density > 0, "material: 'density' = " + std::to_string(density) +
-                           " must be positive.");
+    require(density > 0,
+            "material: 'density' = " + std::to_string(density) +
+              " must be positive.");
     require(viscosity.mu > 0,
             "material/viscosity: 'mu' = " + std::to_string(viscosity.mu) +
               " must be positive (the viscosity A must be coercive, m_A > 0).");
@@ -273,11 +299,15 @@ namespace hemicontact
   {
     prm.enter_subsection("time");
     prm.declare_entry("end time", "1", Patterns::Double(), "Final time T > 0.");
-    prm.declare_entry("time step", "0.01", Patterns::Double(),
+    prm.declare_entry("time step",
+                      "0.01",
+                      Patterns::Double(),
                       "Time step k > 0; it must divide the end time (the run "
                       "takes T/k uniform steps).");
     prm.declare_entry(
-      "allow unstable time step", "false", Patterns::Bool(),
+      "allow unstable time step",
+      "false",
+      Patterns::Bool(),
       "The left-point rule is stable only for k below a limit set by the "
       "viscosity, the elasticity and the mesh; a larger time step is "
       "refused at start-up. 'true' runs it anyway, with a warning.");
@@ -288,14 +318,16 @@ namespace hemicontact
   TimeParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("time");
-    end_time  = prm.get_double("end time");
-    time_step = prm.get_double("time step");
+    end_time                 = prm.get_double("end time");
+    time_step                = prm.get_double("time step");
     allow_unstable_time_step = prm.get_bool("allow unstable time step");
     prm.leave_subsection();
-    require(end_time > 0, "time: 'end time' = " + std::to_string(end_time) +
-                            " must be positive.");
-    require(time_step > 0, "time: 'time step' = " + std::to_string(time_step) +
-                             " must be positive.");
+    require(end_time > 0,
+            "time: 'end time' = " + std::to_string(end_time) +
+              " must be positive.");
+    require(time_step > 0,
+            "time: 'time step' = " + std::to_string(time_step) +
+              " must be positive.");
     require(time_step <= end_time,
             "time: 'time step' = " + std::to_string(time_step) +
               " is larger than 'end time' = " + std::to_string(end_time) + ".");
@@ -318,8 +350,9 @@ namespace hemicontact
       {
         std::ostringstream message;
         message << std::setprecision(12) << "time: 'end time' = " << end_time
-                << " takes " << n_steps << " steps of 'time step' = "
-                << time_step << ", more than the program counts (at most "
+                << " takes " << n_steps
+                << " steps of 'time step' = " << time_step
+                << ", more than the program counts (at most "
                 << std::numeric_limits<unsigned int>::max()
                 << "); choose a larger time step or a shorter end time.";
         throw InputError(message.str());
@@ -331,13 +364,17 @@ namespace hemicontact
   {
     prm.enter_subsection("problem");
     prm.declare_entry(
-      "class", "dynamic", Patterns::Selection("dynamic|quasistatic"),
+      "class",
+      "dynamic",
+      Patterns::Selection("dynamic|quasistatic"),
       "The problem class (doc/theory.md, section 9): 'dynamic' (rho dw/dt "
       "= Div sigma + f0) or 'quasistatic' (0 = Div sigma + f0: no inertia; "
       "'material/density' and 'data/initial velocity' are not used, the "
       "initial velocity is the step problem at t = 0).");
     prm.declare_entry(
-      "time scheme", "left point", Patterns::Selection("left point|implicit"),
+      "time scheme",
+      "left point",
+      Patterns::Selection("left point|implicit"),
       "The rule for the displacement: 'left point' (u_{n+1} = u_n + k w_n, "
       "the elastic term explicit, stable below a time-step limit) or "
       "'implicit' (u_n = u_{n-1} + k w_n, the elastic term in the step "
@@ -361,7 +398,9 @@ namespace hemicontact
   DataParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("data");
-    prm.declare_entry("constants", "", Patterns::Anything(),
+    prm.declare_entry("constants",
+                      "",
+                      Patterns::Anything(),
                       "User constants for the expressions below, e.g. "
                       "'g=9.81, v=0.1': finite numbers, each name once and "
                       "none of a variable (x, y, z, t, u_nu) or a function "
@@ -370,15 +409,24 @@ namespace hemicontact
       " Vector-valued: 'dimension' expressions (doc/parameters.md, "
       "Expressions) separated by ';' in x, y, z and t. A single number (e.g. "
       "0) means that value in every component.";
-    prm.declare_entry("body force", "0", Patterns::Anything(),
+    prm.declare_entry("body force",
+                      "0",
+                      Patterns::Anything(),
                       "Body force density f0(x,t)." + vec_help);
-    prm.declare_entry("surface traction", "0", Patterns::Anything(),
+    prm.declare_entry("surface traction",
+                      "0",
+                      Patterns::Anything(),
                       "Traction f2(x,t) on Gamma_2." + vec_help);
-    prm.declare_entry("contact traction", "0", Patterns::Anything(),
+    prm.declare_entry("contact traction",
+                      "0",
+                      Patterns::Anything(),
                       "An additional given traction f3(x,t) on Gamma_3 "
                       "(zero in physical runs; used by manufactured "
-                      "solutions)." + vec_help);
-    prm.declare_entry("friction bound", "0", Patterns::Anything(),
+                      "solutions)." +
+                        vec_help);
+    prm.declare_entry("friction bound",
+                      "0",
+                      Patterns::Anything(),
                       "Friction bound F_b >= 0 on Gamma_3: the radius of the "
                       "friction disk (the static bound of a weakening law). A "
                       "scalar expression (doc/parameters.md, Expressions) in "
@@ -387,9 +435,13 @@ namespace hemicontact
                       "start of each step with the known u_n; e.g. "
                       "mu*cp*pos(u_nu) for normal compliance with friction, "
                       "or x < 0.5 ? 0.3 : 0.2.");
-    prm.declare_entry("initial displacement", "0", Patterns::Anything(),
+    prm.declare_entry("initial displacement",
+                      "0",
+                      Patterns::Anything(),
                       "u0(x); must vanish on Gamma_1." + vec_help);
-    prm.declare_entry("initial velocity", "0", Patterns::Anything(),
+    prm.declare_entry("initial velocity",
+                      "0",
+                      Patterns::Anything(),
                       "w0(x); must vanish on Gamma_1." + vec_help);
     prm.leave_subsection();
   }
@@ -412,48 +464,64 @@ namespace hemicontact
   OutputParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("output");
-    prm.declare_entry("directory", "output", Patterns::Anything(),
+    prm.declare_entry("directory",
+                      "output",
+                      Patterns::Anything(),
                       "Directory for all output (created if missing).");
-    prm.declare_entry("output interval", "10", Patterns::Integer(0),
+    prm.declare_entry("output interval",
+                      "10",
+                      Patterns::Integer(0),
                       "Write the solution files (VTU or HDF5) and the rows "
                       "of the contact CSV files every this many steps; 0 "
                       "writes none.");
     // 'vtu interval' is read as 'output interval'
     prm.declare_alias("output interval", "vtu interval");
-    prm.declare_entry("format", "vtu", selection_pattern(solution_formats),
+    prm.declare_entry("format",
+                      "vtu",
+                      selection_pattern(solution_formats),
                       "Solution files: 'vtu' (.vtu per rank and .pvtu per "
                       "output time, series solution.pvd) or 'hdf5' (one .h5 "
                       "per output time written by all ranks, series "
                       "solution.xdmf). ParaView opens either series.");
-    prm.declare_entry("precision", "float", selection_pattern(output_precisions),
+    prm.declare_entry("precision",
+                      "float",
+                      selection_pattern(output_precisions),
                       "'float': the solution files only, whose values are "
                       "single precision; 'double': at the same output times "
                       "also nodal_NNNNN.h5 with the nodes, the cells and w, u "
                       "and the contact traction per node in double "
                       "precision, series nodal.xdmf (either 'format').");
-    prm.declare_entry("compression", "best speed",
+    prm.declare_entry("compression",
+                      "best speed",
                       selection_pattern(compression_levels),
                       "zlib compression of VTU files: 'best speed' "
                       "(fast, files somewhat larger), 'default', 'best "
                       "compression' (smallest files, slowest) or 'none'. "
                       "Lossless at every level.");
-    prm.declare_entry("probe points", "", Patterns::Anything(),
+    prm.declare_entry("probe points",
+                      "",
+                      Patterns::Anything(),
                       "Points whose w and u are written to probes.csv each "
                       "step, separated by ';', coordinates by ',' (e.g. "
                       "'1, 0.5; 2, 1').");
-    prm.declare_entry("terminal", "progress",
+    prm.declare_entry("terminal",
+                      "progress",
                       selection_pattern(terminal_outputs),
                       "'progress': one line per step; 'quiet': start and end "
                       "only; 'test': rounded, machine-independent lines for "
                       "the test suite.");
     prm.declare_entry(
-      "performance summary", "false", Patterns::Bool(),
+      "performance summary",
+      "false",
+      Patterns::Bool(),
       "At the end, time one solve of the step matrix rho/k M + A with the "
       "same solver (fresh AMG set-up plus CG from zero to 'relative "
       "tolerance') and write performance.csv: iteration counts, wall time "
       "per step, the time split, peak memory and bytes per dof (bench/ uses "
       "it).");
-    prm.declare_entry("timing summary", "true", Patterns::Bool(),
+    prm.declare_entry("timing summary",
+                      "true",
+                      Patterns::Bool(),
                       "Print the TimerOutput summary at the end.");
     prm.leave_subsection();
   }
@@ -462,14 +530,14 @@ namespace hemicontact
   OutputParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("output");
-    directory      = prm.get("directory");
-    output_interval = prm.get_integer("output interval");
-    format         = get_selection(prm, "format", solution_formats);
-    precision      = get_selection(prm, "precision", output_precisions);
-    probe_points   = prm.get("probe points");
-    terminal       = get_selection(prm, "terminal", terminal_outputs);
-    compression    = get_selection(prm, "compression", compression_levels);
-    timing_summary = prm.get_bool("timing summary");
+    directory           = prm.get("directory");
+    output_interval     = prm.get_integer("output interval");
+    format              = get_selection(prm, "format", solution_formats);
+    precision           = get_selection(prm, "precision", output_precisions);
+    probe_points        = prm.get("probe points");
+    terminal            = get_selection(prm, "terminal", terminal_outputs);
+    compression         = get_selection(prm, "compression", compression_levels);
+    timing_summary      = prm.get_bool("timing summary");
     performance_summary = prm.get_bool("performance summary");
     prm.leave_subsection();
     require(!directory.empty(), "output: 'directory' must not be empty.");
@@ -479,23 +547,31 @@ namespace hemicontact
   ManufacturedParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("manufactured solution");
-    prm.declare_entry("enabled", "false", Patterns::Bool(),
+    prm.declare_entry("enabled",
+                      "false",
+                      Patterns::Bool(),
                       "Verify against a manufactured solution: the body force, "
                       "the tractions on Gamma_2 and Gamma_3 and the initial "
                       "data are derived from 'exact displacement' (exact "
                       "derivatives); the expressions in subsection 'data' "
                       "except 'friction bound' are ignored, and the errors "
                       "E_H, E_V, E_u are computed.");
-    prm.declare_entry("exact displacement", "0", Patterns::Anything(),
+    prm.declare_entry("exact displacement",
+                      "0",
+                      Patterns::Anything(),
                       "u(x,t): 'dimension' expressions (doc/parameters.md, "
                       "Expressions) separated by ';' in x, y, z, t and the "
                       "data constants. It must vanish on Gamma_1.");
-    prm.declare_entry("normal multiplier", "0", Patterns::Anything(),
+    prm.declare_entry("normal multiplier",
+                      "0",
+                      Patterns::Anything(),
                       "The choice xi_nu = s*(x,t) in dj(0) = [0,a] where the "
                       "normal velocity vanishes, an expression "
                       "(doc/parameters.md, Expressions); should lie strictly "
                       "inside (0, a).");
-    prm.declare_entry("tangential multiplier", "0", Patterns::Anything(),
+    prm.declare_entry("tangential multiplier",
+                      "0",
+                      Patterns::Anything(),
                       "The choice xi_tau = lambda*(x,t) (projected on the "
                       "tangent plane) where the tangential velocity vanishes, "
                       "'dimension' expressions (doc/parameters.md, "
@@ -519,7 +595,8 @@ namespace hemicontact
   ConvergenceStudyParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("convergence study");
-    prm.declare_entry("type", "single",
+    prm.declare_entry("type",
+                      "single",
                       selection_pattern(study_types),
                       "With a manufactured solution: 'single' runs once; 'h' "
                       "refines the mesh once per level at a fixed time step; "
@@ -527,7 +604,9 @@ namespace hemicontact
                       "'coupled' does both (k = c h). Level 0 uses "
                       "'geometry/global refinements' and 'time/time step'; "
                       "adaptive studies are described in doc/adaptivity.md.");
-    prm.declare_entry("levels", "4", Patterns::Integer(1, 12),
+    prm.declare_entry("levels",
+                      "4",
+                      Patterns::Integer(1, 12),
                       "Number of levels.");
     prm.leave_subsection();
   }
@@ -545,26 +624,34 @@ namespace hemicontact
   AdaptivityParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("adaptivity");
-    prm.declare_entry("interval", "0", Patterns::Integer(0),
+    prm.declare_entry("interval",
+                      "0",
+                      Patterns::Integer(0),
                       "Adapt the mesh after every this many time steps "
                       "(0: never). Needs 'geometry/cell type = hypercube'.");
     prm.declare_entry(
-      "indicator", "kelly",
+      "indicator",
+      "kelly",
       selection_pattern(indicators),
       "Cell indicator: 'kelly' (jumps of the normal derivative of w_n), "
       "'kelly contact' (plus the jumps of the nodal contact traction on "
       "Gamma_3) or 'residual' (the step's residual in cells, on faces and "
       "on Gamma_3). Formulas in doc/adaptivity.md.");
-    prm.declare_entry("contact weight", "1", Patterns::Double(0),
+    prm.declare_entry("contact weight",
+                      "1",
+                      Patterns::Double(0),
                       "Weight of the contact term of 'kelly contact' and "
                       "'residual'.");
     prm.declare_entry(
-      "pre-refinement steps", "0", Patterns::Integer(0),
+      "pre-refinement steps",
+      "0",
+      Patterns::Integer(0),
       "After this many steps, restart once from t = 0 on the mesh reached "
       "(as deal.II's step-26), so that the early steps' coarse-mesh errors "
       "do not stay in the solution; 0: never. Needs 'interval' > 0; not "
       "with checkpoints or manufactured solutions.");
-    prm.declare_entry("strategy", "fixed fraction",
+    prm.declare_entry("strategy",
+                      "fixed fraction",
                       selection_pattern(strategies),
                       "'fixed fraction': refine the cells that hold 'refine "
                       "fraction' of the summed indicator and coarsen those "
@@ -572,19 +659,29 @@ namespace hemicontact
                       "refine/coarsen these fractions of the cells. Cuts "
                       "avoid near-ties, so the mesh is the same on any number "
                       "of ranks (doc/adaptivity.md).");
-    prm.declare_entry("refine fraction", "0.3", Patterns::Double(0, 1),
+    prm.declare_entry("refine fraction",
+                      "0.3",
+                      Patterns::Double(0, 1),
                       "See 'strategy'.");
-    prm.declare_entry(
-      "coarsen fraction", "0.05", Patterns::Double(0, 1),
-      "See 'strategy'; 0 refines only.");
-    prm.declare_entry("max cells", "0", Patterns::Integer(0),
+    prm.declare_entry("coarsen fraction",
+                      "0.05",
+                      Patterns::Double(0, 1),
+                      "See 'strategy'; 0 refines only.");
+    prm.declare_entry("max cells",
+                      "0",
+                      Patterns::Integer(0),
                       "Upper limit of the number of cells (0: none).");
-    prm.declare_entry("min level", "0", Patterns::Integer(0, 30),
+    prm.declare_entry("min level",
+                      "0",
+                      Patterns::Integer(0, 30),
                       "No cell is coarsened below this refinement level.");
-    prm.declare_entry("max level", "8", Patterns::Integer(0, 30),
+    prm.declare_entry("max level",
+                      "8",
+                      Patterns::Integer(0, 30),
                       "No cell is refined beyond this refinement level.");
     prm.declare_entry(
-      "state transfer", "interpolation",
+      "state transfer",
+      "interpolation",
       selection_pattern(state_transfers),
       "How w_n and u_n move to the new mesh: 'interpolation' (deal.II's "
       "SolutionTransfer) or 'projection' (M- and a_B-projections that keep "
@@ -597,17 +694,17 @@ namespace hemicontact
   AdaptivityParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("adaptivity");
-    interval         = prm.get_integer("interval");
-    indicator        = get_selection(prm, "indicator", indicators);
-    contact_weight   = prm.get_double("contact weight");
+    interval             = prm.get_integer("interval");
+    indicator            = get_selection(prm, "indicator", indicators);
+    contact_weight       = prm.get_double("contact weight");
     pre_refinement_steps = prm.get_integer("pre-refinement steps");
-    strategy         = get_selection(prm, "strategy", strategies);
-    refine_fraction  = prm.get_double("refine fraction");
-    coarsen_fraction = prm.get_double("coarsen fraction");
-    state_transfer   = get_selection(prm, "state transfer", state_transfers);
-    max_cells        = prm.get_integer("max cells");
-    min_level        = prm.get_integer("min level");
-    max_level        = prm.get_integer("max level");
+    strategy             = get_selection(prm, "strategy", strategies);
+    refine_fraction      = prm.get_double("refine fraction");
+    coarsen_fraction     = prm.get_double("coarsen fraction");
+    state_transfer = get_selection(prm, "state transfer", state_transfers);
+    max_cells      = prm.get_integer("max cells");
+    min_level      = prm.get_integer("min level");
+    max_level      = prm.get_integer("max level");
     prm.leave_subsection();
     require(refine_fraction + coarsen_fraction <= 1,
             "adaptivity: 'refine fraction' + 'coarsen fraction' must not "
@@ -620,24 +717,33 @@ namespace hemicontact
   CheckpointParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("checkpoint");
-    prm.declare_entry("interval", "0", Patterns::Integer(0),
+    prm.declare_entry("interval",
+                      "0",
+                      Patterns::Integer(0),
                       "Write a checkpoint (mesh and state, to "
                       "OUTPUT/checkpoint/) after every this many steps; 0: "
                       "never. The last two checkpoints are kept; each is "
                       "written aside, then renamed. A simplex mesh resumes "
                       "on the number of MPI ranks that wrote it.");
-    prm.declare_entry("wall interval", "0", Patterns::Double(0),
+    prm.declare_entry("wall interval",
+                      "0",
+                      Patterns::Double(0),
                       "Also write one when this many wall-clock seconds have "
                       "passed since the last; 0: never.");
-    prm.declare_entry("stop after", "0", Patterns::Integer(0),
+    prm.declare_entry("stop after",
+                      "0",
+                      Patterns::Integer(0),
                       "Stop after this many steps of this run with a "
                       "checkpoint, as SIGTERM does (exit code 5); for job "
                       "chunks under batch time limits. 0: run to the end.");
-    prm.declare_entry("resume", "false", Patterns::Bool(),
-                      "Continue from the newest checkpoint in OUTPUT/checkpoint "
-                      "(also: hemicontact --resume FILE.prm). steps.csv, "
-                      "probes.csv and solution.pvd are continued; the number "
-                      "of MPI ranks may differ from the interrupted run's.");
+    prm.declare_entry(
+      "resume",
+      "false",
+      Patterns::Bool(),
+      "Continue from the newest checkpoint in OUTPUT/checkpoint "
+      "(also: hemicontact --resume FILE.prm). steps.csv, "
+      "probes.csv and solution.pvd are continued; the number "
+      "of MPI ranks may differ from the interrupted run's.");
     prm.leave_subsection();
   }
 
@@ -655,7 +761,9 @@ namespace hemicontact
   void
   Parameters::declare(ParameterHandler &prm)
   {
-    prm.declare_entry("dimension", "2", Patterns::Integer(2, 3),
+    prm.declare_entry("dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
                       "Space dimension, 2 or 3.");
     GeometryParameters::declare(prm);
     BoundaryParameters::declare(prm);
@@ -730,13 +838,14 @@ namespace hemicontact
     // the number of steps of the run (TimeParameters::parse() made sure
     // that the time step divides the end time)
     const unsigned int n_steps = std::max<unsigned int>(
-      1, static_cast<unsigned int>(std::llround(parameters.time.end_time /
-                                                parameters.time.time_step)));
+      1,
+      static_cast<unsigned int>(
+        std::llround(parameters.time.end_time / parameters.time.time_step)));
     require(adaptivity.pre_refinement_steps <= n_steps,
             "adaptivity: 'pre-refinement steps' (" +
               std::to_string(adaptivity.pre_refinement_steps) +
-              ") exceeds the number of time steps (" +
-              std::to_string(n_steps) + ").");
+              ") exceeds the number of time steps (" + std::to_string(n_steps) +
+              ").");
 
     require(geometry.mesh_type != MeshType::rectangle ||
               (geometry.lower_left.size() >= dimension &&

@@ -2,21 +2,21 @@
 // string) and turn deal.II's exceptions into one-paragraph InputErrors.
 #include <deal.II/base/exceptions.h>
 
-#include <hemicontact/laws/friction_law.h>
-#include <hemicontact/base/exceptions.h>
-#include <hemicontact/laws/normal_law.h>
-#include <hemicontact/input/parameters.h>
-
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
+
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/input/parameters.h>
+#include <hemicontact/laws/friction_law.h>
+#include <hemicontact/laws/normal_law.h>
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <fstream>
 #include <iterator>
 #include <map>
 #include <set>
-#include <fstream>
 #include <sstream>
 
 namespace hemicontact
@@ -38,10 +38,12 @@ namespace hemicontact
     std::vector<std::string>
     problem_definition(const ParameterHandler &prm)
     {
-      static const std::set<std::string> not_defining = {
-        "output", "checkpoint", "linear solver", "nonlinear solver",
-        "convergence study"};
-      std::ostringstream listing;
+      static const std::set<std::string> not_defining = {"output",
+                                                         "checkpoint",
+                                                         "linear solver",
+                                                         "nonlinear solver",
+                                                         "convergence study"};
+      std::ostringstream                 listing;
       prm.print_parameters(listing, ParameterHandler::ShortPRM);
       std::istringstream       in(listing.str());
       std::vector<std::string> path, entries;
@@ -96,7 +98,7 @@ namespace hemicontact
       std::vector<std::string> path;
       // per open block: the line of each entry set in it
       std::vector<std::map<std::string, unsigned int>> blocks(1);
-      std::string  line, statement;
+      std::string                                      line, statement;
       unsigned int line_number = 0, start = 0;
       while (std::getline(in, line))
         {
@@ -135,7 +137,8 @@ namespace hemicontact
               for (const std::string &p : path)
                 entry += p + "/";
               throw InputError("the parameter file '" + filename + "' sets '" +
-                               entry + name + "' twice in one subsection, on line " +
+                               entry + name +
+                               "' twice in one subsection, on line " +
                                std::to_string(known.first->second) +
                                " and on line " + std::to_string(start) +
                                "; keep one (neither is chosen silently).");
@@ -147,7 +150,8 @@ namespace hemicontact
      *  a key that occurs twice in one object of the JSON @p tree. */
     void
     require_each_key_once(const boost::property_tree::ptree &tree,
-                          const std::string &prefix, const std::string &filename)
+                          const std::string                 &prefix,
+                          const std::string                 &filename)
     {
       std::set<std::string> seen;
       for (const auto &child : tree)
@@ -158,7 +162,8 @@ namespace hemicontact
                   "the parameter file '" + filename + "' has the key '" +
                     prefix + child.first +
                     "' twice; keep one (neither is chosen silently).");
-          require_each_key_once(child.second, prefix + child.first + "/",
+          require_each_key_once(child.second,
+                                prefix + child.first + "/",
                                 filename);
         }
     }
@@ -188,7 +193,9 @@ namespace hemicontact
     format_of(const std::string &filename)
     {
       std::string extension = std::filesystem::path(filename).extension();
-      std::transform(extension.begin(), extension.end(), extension.begin(),
+      std::transform(extension.begin(),
+                     extension.end(),
+                     extension.begin(),
                      [](const unsigned char c) { return std::tolower(c); });
       if (extension == ".json")
         return "json";
@@ -199,7 +206,8 @@ namespace hemicontact
 
     template <typename ParseFunction>
     Parameters
-    read_with(ParameterHandler &prm, const std::string &source,
+    read_with(ParameterHandler    &prm,
+              const std::string   &source,
               const ParseFunction &parse)
     {
       declare_all_parameters(prm);
@@ -234,7 +242,8 @@ namespace hemicontact
   }
 
   Parameters
-  read_parameters(ParameterHandler &prm, const std::string &filename,
+  read_parameters(ParameterHandler  &prm,
+                  const std::string &filename,
                   const std::string &overrides)
   {
     std::string text;
@@ -256,7 +265,8 @@ namespace hemicontact
     }
     {
       const std::string head = text.substr(0, 4096);
-      require(std::none_of(head.begin(), head.end(),
+      require(std::none_of(head.begin(),
+                           head.end(),
                            [](const char c) {
                              const auto u = static_cast<unsigned char>(c);
                              return u < 32 && c != '\t' && c != '\n' &&
@@ -293,7 +303,8 @@ namespace hemicontact
   Parameters
   read_parameters_from_string(ParameterHandler &prm, const std::string &text)
   {
-    return read_with(prm, "(string)",
-                     [&]() { prm.parse_input_from_string(text); });
+    return read_with(prm, "(string)", [&]() {
+      prm.parse_input_from_string(text);
+    });
   }
 } // namespace hemicontact

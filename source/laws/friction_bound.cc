@@ -1,5 +1,5 @@
-#include <hemicontact/laws/friction_bound.h>
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/laws/friction_bound.h>
 #include <hemicontact/model/problem_data.h>
 
 #include <cmath>
@@ -25,8 +25,10 @@ namespace hemicontact
     const std::map<std::string, double> values = parse_constants(constants);
     try
       {
-        expression = std::make_unique<Expression>(text, bound_variables(dim),
-                                                  values, "friction bound");
+        expression = std::make_unique<Expression>(text,
+                                                  bound_variables(dim),
+                                                  values,
+                                                  "friction bound");
       }
     catch (const InputError &e)
       {
@@ -41,8 +43,9 @@ namespace hemicontact
 
   template <int dim>
   double
-  FrictionBound<dim>::value(const Point<dim> &p, const double t,
-                            const double u_nu) const
+  FrictionBound<dim>::value(const Point<dim> &p,
+                            const double      t,
+                            const double      u_nu) const
   {
     std::vector<double> at(dim + 2);
     for (int d = 0; d < dim; ++d)

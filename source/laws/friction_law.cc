@@ -1,8 +1,8 @@
-#include <hemicontact/laws/friction_law.h>
+#include <hemicontact/base/exceptions.h>
 #include <hemicontact/laws/friction/piecewise_linear_friction.h>
 #include <hemicontact/laws/friction/slip_rate_weakening.h>
 #include <hemicontact/laws/friction/tresca.h>
-#include <hemicontact/base/exceptions.h>
+#include <hemicontact/laws/friction_law.h>
 
 namespace hemicontact
 {
@@ -33,7 +33,8 @@ namespace hemicontact
     registry()
     {
       static LawRegistry<FrictionLaw> laws(
-        "friction law", TrescaLaw::law_name,
+        "friction law",
+        TrescaLaw::law_name,
         "Friction law -sigma_tau in dphi(w_tau) on the contact boundary: the "
         "Tresca disk of radius 'data/friction bound' plus the law's "
         "remainder in the slip speed. Each law has its own subsection "

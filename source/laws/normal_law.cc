@@ -1,9 +1,9 @@
 #include <hemicontact/base/exceptions.h>
-#include <hemicontact/laws/normal_law.h>
 #include <hemicontact/laws/normal/exponential_law.h>
 #include <hemicontact/laws/normal/linear_damping_law.h>
 #include <hemicontact/laws/normal/no_normal_resistance.h>
 #include <hemicontact/laws/normal/piecewise_linear_law.h>
+#include <hemicontact/laws/normal_law.h>
 
 #include <algorithm>
 #include <cmath>
@@ -39,7 +39,8 @@ namespace hemicontact
     registry()
     {
       static LawRegistry<NormalLaw> laws(
-        "normal law", "exponential",
+        "normal law",
+        "exponential",
         "Normal damped response law -sigma_nu in dj(w_nu) on the contact "
         "boundary. Each law has its own subsection below.",
         {

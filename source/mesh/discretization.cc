@@ -13,8 +13,8 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria_description.h>
 
-#include <hemicontact/mesh/discretization.h>
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/mesh/discretization.h>
 
 #include <unistd.h>
 
@@ -78,10 +78,10 @@ namespace hemicontact
       MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
       const bool node_root = Utilities::MPI::this_mpi_process(node) == 0;
       MPI_Comm_free(&node);
-      const double local =
-        node_root ? static_cast<double>(sysconf(_SC_PHYS_PAGES)) *
-                      static_cast<double>(sysconf(_SC_PAGESIZE)) :
-                    0.;
+      const double local = node_root ?
+                             static_cast<double>(sysconf(_SC_PHYS_PAGES)) *
+                               static_cast<double>(sysconf(_SC_PAGESIZE)) :
+                             0.;
       return Utilities::MPI::sum(local, comm);
     }
 
@@ -106,9 +106,9 @@ namespace hemicontact
       while (fitting > 0 && needed(fitting) > available)
         --fitting;
       std::ostringstream s;
-      s << std::setprecision(2) << "geometry: 'global refinements' = "
-        << refinements << " gives about " << n_dofs(refinements)
-        << " degrees of freedom, which need about "
+      s << std::setprecision(2)
+        << "geometry: 'global refinements' = " << refinements << " gives about "
+        << n_dofs(refinements) << " degrees of freedom, which need about "
         << memory_text(needed(refinements)) << " of memory (about "
         << bytes_per_dof(dim) / 1e3 << " kB per degree of freedom in " << dim
         << "D, doc/performance.md), but the machine has "
@@ -145,8 +145,7 @@ namespace hemicontact
     {
       std::string section, version;
       int         file_type = 0;
-      file >> std::setw(64) >> section >> std::setw(64) >> version >>
-        file_type;
+      file >> std::setw(64) >> section >> std::setw(64) >> version >> file_type;
       const bool binary = section == "$MeshFormat" && file_type == 1;
       file.clear();
       file.seekg(0);
@@ -220,9 +219,9 @@ namespace hemicontact
     cells_name(const ReferenceCell &type)
     {
       const std::string name = cell_name(type);
-      return type == ReferenceCells::Hexahedron ?
-               "hexahedra" :
-               type == ReferenceCells::Tetrahedron ? "tetrahedra" : name + "s";
+      return type == ReferenceCells::Hexahedron  ? "hexahedra" :
+             type == ReferenceCells::Tetrahedron ? "tetrahedra" :
+                                                   name + "s";
     }
 
     /**
@@ -233,7 +232,7 @@ namespace hemicontact
     template <int dim>
     void
     check_cell_types(const Triangulation<dim> &mesh,
-                     const std::string &       name,
+                     const std::string        &name,
                      const CellType            cell_type)
     {
       std::map<ReferenceCell, unsigned int> count;
@@ -241,8 +240,8 @@ namespace hemicontact
         ++count[cell->reference_cell()];
       const bool          simplex = cell_type == CellType::simplex;
       const ReferenceCell wanted  = simplex ?
-                                     ReferenceCells::get_simplex<dim>() :
-                                     ReferenceCells::get_hypercube<dim>();
+                                      ReferenceCells::get_simplex<dim>() :
+                                      ReferenceCells::get_hypercube<dim>();
       if (count.size() == 1 && count.count(wanted) == 1)
         return;
       std::string found;
@@ -252,13 +251,11 @@ namespace hemicontact
       const ReferenceCell other = simplex ?
                                     ReferenceCells::get_hypercube<dim>() :
                                     ReferenceCells::get_simplex<dim>();
-      const bool fits_other =
-        count.size() == 1 && count.count(other) == 1;
+      const bool fits_other     = count.size() == 1 && count.count(other) == 1;
       throw InputError(
         "geometry: the mesh file '" + name + "' holds " + found +
-        " but 'geometry/cell type' = " +
-        (simplex ? "simplex" : "hypercube") + " reads " +
-        cells_name(wanted) + " only. " +
+        " but 'geometry/cell type' = " + (simplex ? "simplex" : "hypercube") +
+        " reads " + cells_name(wanted) + " only. " +
         (fits_other ? "Set 'cell type = " +
                         std::string(simplex ? "hypercube" : "simplex") +
                         "' in subsection geometry." :
@@ -276,9 +273,8 @@ namespace hemicontact
       Triangulation<2, 3> mesh;
       read_gmsh(mesh, name);
       const BoundingBox<3> box = GridTools::compute_bounding_box(mesh);
-      const double         tolerance =
-        1e-10 * box.get_boundary_points().first.distance(
-                  box.get_boundary_points().second);
+      const double tolerance = 1e-10 * box.get_boundary_points().first.distance(
+                                         box.get_boundary_points().second);
       for (const Point<3> &p : mesh.get_vertices())
         require(std::abs(p[2]) <= tolerance,
                 "geometry: the mesh file '" + name + "' has the node " +
@@ -297,7 +293,7 @@ namespace hemicontact
     template <int dim>
     void
     check_duplicated_vertices(const Triangulation<dim> &mesh,
-                              const std::string &       name)
+                              const std::string        &name)
     {
       const std::vector<Point<dim>> &vertices = mesh.get_vertices();
       std::vector<unsigned int>      order;
@@ -308,9 +304,8 @@ namespace hemicontact
         return vertices[a][0] < vertices[b][0];
       });
       const BoundingBox<dim> box = GridTools::compute_bounding_box(mesh);
-      const double           tolerance =
-        1e-10 * box.get_boundary_points().first.distance(
-                  box.get_boundary_points().second);
+      const double tolerance = 1e-10 * box.get_boundary_points().first.distance(
+                                         box.get_boundary_points().second);
       for (unsigned int i = 0; i < order.size(); ++i)
         for (unsigned int j = i + 1;
              j < order.size() &&
@@ -365,9 +360,8 @@ namespace hemicontact
           for (const unsigned int v : cell->vertex_indices())
             {
               const unsigned int gmsh_v =
-                cell->reference_cell().is_hyper_cube() && v % 4 >= 2 ?
-                  v ^ 1 :
-                  v;
+                cell->reference_cell().is_hyper_cube() && v % 4 >= 2 ? v ^ 1 :
+                                                                       v;
               corners += (v == 0 ? "" : ", ") + to_text(cell->vertex(gmsh_v));
             }
           throw InputError(
@@ -391,7 +385,7 @@ namespace hemicontact
         triangulation =
           std::make_unique<parallel::fullydistributed::Triangulation<dim>>(
             comm);
-        fe = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(1), dim);
+        fe      = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(1), dim);
         mapping = std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
       }
     else
@@ -447,7 +441,7 @@ namespace hemicontact
 
   template <int dim>
   void
-  Discretization<dim>::build_mesh(Triangulation<dim> &       mesh,
+  Discretization<dim>::build_mesh(Triangulation<dim>       &mesh,
                                   const GeometryParameters &geometry,
                                   const bool                refine) const
   {
@@ -462,7 +456,8 @@ namespace hemicontact
                 n_dofs *= std::ldexp(geometry.subdivisions[d], r) + 1;
               return n_dofs;
             },
-            refinements, mpi_communicator);
+            refinements,
+            mpi_communicator);
         Point<dim>                p0, p1;
         std::vector<unsigned int> repetitions(dim);
         for (unsigned int d = 0; d < dim; ++d)
@@ -499,7 +494,9 @@ namespace hemicontact
           }
         else
           GridGenerator::subdivided_hyper_rectangle(mesh,
-                                                    repetitions, p0, p1,
+                                                    repetitions,
+                                                    p0,
+                                                    p1,
                                                     /*colorize=*/true);
       }
     else
@@ -516,7 +513,8 @@ namespace hemicontact
               [&](const unsigned int r) {
                 return dim * vertices_per_cell * std::ldexp(n_cells, dim * r);
               },
-              refinements, mpi_communicator);
+              refinements,
+              mpi_communicator);
           }
       }
     if (refine)
@@ -526,7 +524,7 @@ namespace hemicontact
   template <int dim>
   void
   Discretization<dim>::read_checked_gmsh(
-    Triangulation<dim> &       mesh,
+    Triangulation<dim>       &mesh,
     const GeometryParameters &geometry) const
   {
     const std::string &name = geometry.mesh_file;
@@ -555,12 +553,12 @@ namespace hemicontact
                                         mpi_communicator);
     const std::set<types::boundary_id> present(present_ids.begin(),
                                                present_ids.end());
-    std::string present_list;
+    std::string                        present_list;
     for (const auto id : present)
       present_list += (present_list.empty() ? "" : ", ") + std::to_string(id);
 
     const auto check = [&](const std::vector<unsigned int> &ids,
-                           const std::string &           name) {
+                           const std::string               &name) {
       for (const unsigned int id : ids)
         require(present.count(id) == 1,
                 "boundary: '" + name + "' names boundary id " +

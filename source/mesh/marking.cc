@@ -29,8 +29,9 @@ namespace hemicontact
   } // namespace
 
   std::size_t
-  untied_cut(const std::vector<float> &descending, const std::size_t n,
-             const bool prefer_smaller)
+  untied_cut(const std::vector<float> &descending,
+             const std::size_t         n,
+             const bool                prefer_smaller)
   {
     const std::size_t N = descending.size();
     if (n >= N)
@@ -81,10 +82,10 @@ namespace hemicontact
   }
 
   MarkingThresholds
-  marking_thresholds(std::vector<float> indicators,
+  marking_thresholds(std::vector<float>    indicators,
                      const MarkingStrategy strategy,
-                     const double refine_fraction,
-                     const double coarsen_fraction)
+                     const double          refine_fraction,
+                     const double          coarsen_fraction)
   {
     std::sort(indicators.begin(), indicators.end(), std::greater<float>());
     const std::vector<float> &v = indicators;

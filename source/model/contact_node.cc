@@ -1,7 +1,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <hemicontact/model/contact_node.h>
 #include <hemicontact/laws/friction_disk.h>
+#include <hemicontact/model/contact_node.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,28 +12,31 @@ namespace hemicontact
   {
     template <int dim>
     NodeState<dim>
-    state(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
-                const Tensor<1, dim> &force, const NormalLaw &law,
-                const FrictionLaw &friction)
+    state(const ContactNode<dim> &node,
+          const Tensor<1, dim>   &velocity,
+          const Tensor<1, dim>   &force,
+          const NormalLaw        &law,
+          const FrictionLaw      &friction)
     {
-      NodeState<dim> m;
-      const Tensor<1, dim> &nu = node.normal;
-      m.w_normal               = velocity * nu;
-      m.w_tangential           = velocity - m.w_normal * nu;
+      NodeState<dim>        m;
+      const Tensor<1, dim> &nu      = node.normal;
+      m.w_normal                    = velocity * nu;
+      m.w_tangential                = velocity - m.w_normal * nu;
       const Tensor<1, dim> traction = force / node.mass;
-      m.s      = traction * nu - law.remainder(m.w_normal);
-      m.lambda = traction - (traction * nu) * nu;
-      const double slip = m.w_tangential.norm();
+      m.s                           = traction * nu - law.remainder(m.w_normal);
+      m.lambda                      = traction - (traction * nu) * nu;
+      const double slip             = m.w_tangential.norm();
       if (slip > 0)
-        m.lambda -= friction.remainder(node.friction_bound, slip) / slip *
-                    m.w_tangential;
+        m.lambda -=
+          friction.remainder(node.friction_bound, slip) / slip * m.w_tangential;
       return m;
     }
 
     template <int dim>
     NormalBranch
-    normal_branch(const ContactNode<dim> &node, const NodeState<dim> &m,
-                  const NormalLaw &law)
+    normal_branch(const ContactNode<dim> &node,
+                  const NodeState<dim>   &m,
+                  const NormalLaw        &law)
     {
       const double q = m.s + node.c * m.w_normal;
       if (q < 0)
@@ -46,24 +49,22 @@ namespace hemicontact
     NormalBranch
     gradual_normal_branch(const NormalBranch current,
                           const NormalBranch predicted,
-                          const NormalLaw &  law)
+                          const NormalLaw   &law)
     {
       const bool jumps =
-        law.jump() > 0 &&
-        ((current == NormalBranch::separating &&
-         predicted == NormalBranch::damped) ||
-        (current == NormalBranch::damped &&
-         predicted == NormalBranch::separating));
+        law.jump() > 0 && ((current == NormalBranch::separating &&
+                            predicted == NormalBranch::damped) ||
+                           (current == NormalBranch::damped &&
+                            predicted == NormalBranch::separating));
       return jumps ? NormalBranch::stick : predicted;
     }
 
     template <int dim>
     TangentialBranch
-    tangential_branch(const ContactNode<dim> &node,
-                      const NodeState<dim> &m)
+    tangential_branch(const ContactNode<dim> &node, const NodeState<dim> &m)
     {
       return FrictionDisk::sticks(m.lambda + node.c * m.w_tangential,
-                                    node.friction_bound) ?
+                                  node.friction_bound) ?
                TangentialBranch::stick :
                TangentialBranch::slip;
     }
@@ -71,7 +72,8 @@ namespace hemicontact
     template <int dim>
     double
     normal_complementarity(const ContactNode<dim> &node,
-                           const NodeState<dim> &m, const NormalLaw &law)
+                           const NodeState<dim>   &m,
+                           const NormalLaw        &law)
     {
       const double q = m.s + node.c * m.w_normal;
       return m.s - std::clamp(q, 0., law.jump());
@@ -80,31 +82,34 @@ namespace hemicontact
     template <int dim>
     Tensor<1, dim>
     tangential_complementarity(const ContactNode<dim> &node,
-                               const NodeState<dim> &m)
+                               const NodeState<dim>   &m)
     {
       return m.lambda -
              FrictionDisk::project(m.lambda + node.c * m.w_tangential,
-                                     node.friction_bound);
+                                   node.friction_bound);
     }
 
     template <int dim>
     NodeLinearization<dim>
-    linearize(const ContactNode<dim> &node, const NodeState<dim> &m,
-              const NormalLaw &law, const FrictionLaw &friction)
+    linearize(const ContactNode<dim> &node,
+              const NodeState<dim>   &m,
+              const NormalLaw        &law,
+              const FrictionLaw      &friction)
     {
       NodeLinearization<dim> lin;
-      const Tensor<1, dim> &nu = node.normal;
+      const Tensor<1, dim>  &nu = node.normal;
       if (node.normal_branch == NormalBranch::damped)
         {
-          lin.force += node.mass * (law.jump() + law.remainder(m.w_normal)) * nu;
+          lin.force +=
+            node.mass * (law.jump() + law.remainder(m.w_normal)) * nu;
           lin.matrix += node.mass * law.remainder_derivative(m.w_normal) *
                         outer_product(nu, nu);
         }
       if (node.tangential_branch == TangentialBranch::slip)
         {
-          const Tensor<1, dim> q    = m.lambda + node.c * m.w_tangential;
-          const double         qn   = q.norm();
-          const Tensor<1, dim> d    = q / qn;
+          const Tensor<1, dim> q  = m.lambda + node.c * m.w_tangential;
+          const double         qn = q.norm();
+          const Tensor<1, dim> d  = q / qn;
           // Newton for lambda = F_b q/|q| (q = lambda + c w_tau), with lambda
           // condensed out: lambda_new = F_b d + T/m_i w_tau, where
           // T = m_i F_b c/(|q| - F_b) (I - nu nu - d d). At a solution
@@ -112,22 +117,22 @@ namespace hemicontact
           // F_b/|w_tau| (I - t t) of F_b |w_tau| and the force is F_b t.
           // T is symmetric positive semidefinite; the floor on |q| - F_b
           // bounds it by 100 m_i c for nodes that barely slip.
-          const double excess = std::max(qn - node.friction_bound, 1e-2 * qn);
+          const double   excess = std::max(qn - node.friction_bound, 1e-2 * qn);
           Tensor<2, dim> tangent_projector = unit_symmetric_tensor<dim>();
           tangent_projector -= outer_product(nu, nu) + outer_product(d, d);
           const Tensor<2, dim> tangent = node.mass * node.friction_bound *
                                          node.c / excess * tangent_projector;
           lin.matrix += tangent;
-          lin.force += node.mass * node.friction_bound * d +
-                       tangent * m.w_tangential;
+          lin.force +=
+            node.mass * node.friction_bound * d + tangent * m.w_tangential;
 
           // the law's remainder r(s) e, s = |w_tau|, e = w_tau/s (d while
           // w_tau = 0): force m_i r(s) e, Hessian
           // m_i [r'(s) e e + r(s)/s (I - nu nu - e e)]
-          const double   slip = m.w_tangential.norm();
-          const Tensor<1, dim> e = slip > 0 ? m.w_tangential / slip : d;
-          const double   bound = node.friction_bound;
-          Tensor<2, dim> across = unit_symmetric_tensor<dim>();
+          const double         slip   = m.w_tangential.norm();
+          const Tensor<1, dim> e      = slip > 0 ? m.w_tangential / slip : d;
+          const double         bound  = node.friction_bound;
+          Tensor<2, dim>       across = unit_symmetric_tensor<dim>();
           across -= outer_product(nu, nu) + outer_product(e, e);
           lin.matrix +=
             node.mass *
@@ -140,8 +145,10 @@ namespace hemicontact
 
     template <int dim>
     double
-    energy(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
-           const NormalLaw &law, const FrictionLaw &friction)
+    energy(const ContactNode<dim> &node,
+           const Tensor<1, dim>   &velocity,
+           const NormalLaw        &law,
+           const FrictionLaw      &friction)
     {
       const double         wn = velocity * node.normal;
       const Tensor<1, dim> wt = velocity - wn * node.normal;
@@ -151,8 +158,10 @@ namespace hemicontact
 
     template <int dim>
     std::pair<double, double>
-    contact_work(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
-                 const NormalLaw &law, const FrictionLaw &friction)
+    contact_work(const ContactNode<dim> &node,
+                 const Tensor<1, dim>   &velocity,
+                 const NormalLaw        &law,
+                 const FrictionLaw      &friction)
     {
       const double wn   = velocity * node.normal;
       const double slip = (velocity - wn * node.normal).norm();
@@ -211,35 +220,38 @@ namespace hemicontact
       return projector;
     }
 
-#define HEMICONTACT_INSTANTIATE(dim)                                           \
-  template NodeState<dim> state(const ContactNode<dim> &,         \
-                                            const Tensor<1, dim> &,            \
-                                            const Tensor<1, dim> &,            \
-                                            const NormalLaw &,                 \
-                                            const FrictionLaw &);              \
-  template NormalBranch         normal_branch(const ContactNode<dim> &,       \
-                                      const NodeState<dim> &,            \
-                                      const NormalLaw &);                      \
-  template TangentialBranch     tangential_branch(const ContactNode<dim> &,   \
-                                              const NodeState<dim> &);   \
-  template double normal_complementarity(const ContactNode<dim> &,            \
-                                         const NodeState<dim> &,         \
-                                         const NormalLaw &);                   \
-  template Tensor<1, dim> tangential_complementarity(                         \
-    const ContactNode<dim> &, const NodeState<dim> &);                   \
-  template NodeLinearization<dim> linearize(const ContactNode<dim> &,         \
-                                            const NodeState<dim> &,      \
-                                            const NormalLaw &,                 \
-                                            const FrictionLaw &);              \
-  template double energy(const ContactNode<dim> &, const Tensor<1, dim> &,    \
-                         const NormalLaw &, const FrictionLaw &);              \
-  template std::pair<double, double> contact_work(                            \
-    const ContactNode<dim> &, const Tensor<1, dim> &, const NormalLaw &,       \
-    const FrictionLaw &);                                                      \
-  template std::array<Tensor<1, dim>, dim - 1> tangent_basis(                 \
-    const Tensor<1, dim> &);                                                   \
-  template std::vector<Tensor<1, dim>> constrained_directions(                \
-    const ContactNode<dim> &);                                                 \
+#define HEMICONTACT_INSTANTIATE(dim)                                             \
+  template NodeState<dim>   state(const ContactNode<dim> &,                      \
+                                  const Tensor<1, dim> &,                        \
+                                  const Tensor<1, dim> &,                        \
+                                  const NormalLaw &,                             \
+                                  const FrictionLaw &);                          \
+  template NormalBranch     normal_branch(const ContactNode<dim> &,              \
+                                          const NodeState<dim> &,                \
+                                          const NormalLaw &);                    \
+  template TangentialBranch tangential_branch(const ContactNode<dim> &,          \
+                                              const NodeState<dim> &);           \
+  template double           normal_complementarity(const ContactNode<dim> &,     \
+                                                   const NodeState<dim> &,       \
+                                                   const NormalLaw &);           \
+  template Tensor<1, dim>   tangential_complementarity(const ContactNode<dim> &, \
+                                                       const NodeState<dim> &);  \
+  template NodeLinearization<dim>    linearize(const ContactNode<dim> &,         \
+                                               const NodeState<dim> &,           \
+                                               const NormalLaw &,                \
+                                               const FrictionLaw &);             \
+  template double                    energy(const ContactNode<dim> &,            \
+                                            const Tensor<1, dim> &,              \
+                                            const NormalLaw &,                   \
+                                            const FrictionLaw &);                \
+  template std::pair<double, double> contact_work(const ContactNode<dim> &,      \
+                                                  const Tensor<1, dim> &,        \
+                                                  const NormalLaw &,             \
+                                                  const FrictionLaw &);          \
+  template std::array<Tensor<1, dim>, dim - 1> tangent_basis(                    \
+    const Tensor<1, dim> &);                                                     \
+  template std::vector<Tensor<1, dim>> constrained_directions(                   \
+    const ContactNode<dim> &);                                                   \
   template Tensor<2, dim> free_projector(const ContactNode<dim> &);
 
     HEMICONTACT_INSTANTIATE(2)

@@ -9,20 +9,20 @@ namespace hemicontact
 {
   template <int dim>
   ContactStep<dim>::ContactStep(const StepSystem<dim> &system,
-                                const Parameters &     parameters)
+                                const Parameters      &parameters)
     : system(system)
     , solver_type(parameters.linear_solver.type)
     , linear_relative_tolerance(parameters.linear_solver.relative_tolerance)
-    , gradual_normal_branches(
-        parameters.solver_tuning.gradual_normal_branches)
-    , w_ghosted(system.locally_owned_dofs, system.locally_relevant_dofs,
+    , gradual_normal_branches(parameters.solver_tuning.gradual_normal_branches)
+    , w_ghosted(system.locally_owned_dofs,
+                system.locally_relevant_dofs,
                 system.mpi_communicator)
     , residual_ghosted(w_ghosted)
   {}
 
   TrilinosWrappers::MPI::Vector
   without_constrained(const TrilinosWrappers::MPI::Vector &v,
-                      const AffineConstraints<double> &    constraints)
+                      const AffineConstraints<double>     &constraints)
   {
     TrilinosWrappers::MPI::Vector result(v);
     constraints.set_zero(result);
@@ -50,8 +50,8 @@ namespace hemicontact
 
   template <int dim>
   unsigned int
-  ContactStep<dim>::update_branches(const VectorType &w,
-                                    const VectorType &residual,
+  ContactStep<dim>::update_branches(const VectorType  &w,
+                                    const VectorType  &residual,
                                     const unsigned int iteration)
   {
     {
@@ -71,16 +71,15 @@ namespace hemicontact
             velocity[c] = w_ghosted[node.dofs[c]];
             force[c]    = -residual_ghosted[node.dofs[c]];
           }
-        node_states[k] = nodal::state(node, velocity, force,
-                                                  system.law, system.friction);
+        node_states[k] =
+          nodal::state(node, velocity, force, system.law, system.friction);
 
         NormalBranch nb =
           nodal::normal_branch(node, node_states[k], system.law);
         // not in the first iteration: its "current" branches are the
         // previous step's, or the default of a new mesh
         if (gradual_normal_branches && iteration > 0)
-          nb = nodal::gradual_normal_branch(node.normal_branch, nb,
-                                                  system.law);
+          nb = nodal::gradual_normal_branch(node.normal_branch, nb, system.law);
         const TangentialBranch tb =
           nodal::tangential_branch(node, node_states[k]);
         if (node.locally_owned &&
@@ -112,8 +111,7 @@ namespace hemicontact
         {
           const ContactNode<dim> &node = system.contact_nodes[k];
           const double            cn =
-            nodal::normal_complementarity(node, node_states[k],
-                                                system.law);
+            nodal::normal_complementarity(node, node_states[k], system.law);
           const Tensor<1, dim> ct =
             nodal::tangential_complementarity(node, node_states[k]);
           local += node.mass * node.mass * (cn * cn + ct.norm_square());
@@ -127,7 +125,7 @@ namespace hemicontact
   ContactStep<dim>::solve_linearized(const VectorType &w,
                                      const double      reduction,
                                      const double      absolute_tolerance,
-                                     VectorType &      trial)
+                                     VectorType       &trial)
   {
     // the constrained quadratic problem of this iteration: minimise
     // 1/2 x.K x - g.x over range(Pi), with K = K0 + sum L_i and
@@ -139,11 +137,10 @@ namespace hemicontact
       for (unsigned int k = 0; k < system.contact_nodes.size(); ++k)
         if (system.contact_nodes[k].locally_owned)
           {
-            const ContactNode<dim> &     node = system.contact_nodes[k];
+            const ContactNode<dim>      &node = system.contact_nodes[k];
             const NodeLinearization<dim> lin  = nodal::linearize(
               node, node_states[k], system.law, system.friction);
-            op.add_node(node.dofs, nodal::free_projector(node),
-                        lin.matrix);
+            op.add_node(node.dofs, nodal::free_projector(node), lin.matrix);
 
             Tensor<1, dim> w_node;
             for (unsigned int c = 0; c < dim; ++c)
@@ -170,10 +167,15 @@ namespace hemicontact
         trial = w;
         system.base_constraints.set_zero(trial);
         op.project(trial);
-        n_iterations = system.linear_solver.solve_cg(
-          op, system.preconditioner, trial, rhs, reduction,
-          std::max(absolute_tolerance,
-                   linear_relative_tolerance * rhs.l2_norm()));
+        n_iterations =
+          system.linear_solver.solve_cg(op,
+                                        system.preconditioner,
+                                        trial,
+                                        rhs,
+                                        reduction,
+                                        std::max(absolute_tolerance,
+                                                 linear_relative_tolerance *
+                                                   rhs.l2_norm()));
       }
     system.base_constraints.distribute(trial);
     return n_iterations;
@@ -206,7 +208,7 @@ namespace hemicontact
   ActiveSetNewton::Settings
   newton_settings(const Parameters &parameters)
   {
-    const SolverTuning &      tuning = parameters.solver_tuning;
+    const SolverTuning       &tuning = parameters.solver_tuning;
     ActiveSetNewton::Settings settings;
     settings.tolerance           = parameters.nonlinear_solver.tolerance;
     settings.absolute_tolerance  = tuning.absolute_tolerance;

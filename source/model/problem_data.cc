@@ -4,10 +4,9 @@
 #include <deal.II/lac/vector.h>
 
 #include <hemicontact/base/exceptions.h>
-#include <hemicontact/model/problem_data.h>
-
 #include <hemicontact/expressions/expression.h>
 #include <hemicontact/expressions/expression_function.h>
+#include <hemicontact/model/problem_data.h>
 
 #include <algorithm>
 #include <cctype>
@@ -50,8 +49,8 @@ namespace hemicontact
           }))
         return "is not a name (letters, digits and '_', not starting with "
                "a digit)";
-      static const std::set<std::string> variables = {"x", "y", "z", "t",
-                                                      "u_nu"};
+      static const std::set<std::string> variables = {
+        "x", "y", "z", "t", "u_nu"};
       if (variables.count(name) != 0)
         return "is a variable of the expressions (x, y, z, t, and u_nu in "
                "the friction bound)";
@@ -60,9 +59,9 @@ namespace hemicontact
       // muparser's functions besides those of the grammar
       // (Expression::function_names()), kept free for its users
       static const std::set<std::string> parser_functions = {
-        "asin", "acos",  "asinh", "acosh", "atanh", "log2", "log10", "ln",
-        "rint", "sum",   "avg",   "if",    "int",   "ceil", "floor", "cot",
-        "csc",  "sec",   "erfc",  "rand",  "rand_seed",    "atan2", "fmod"};
+        "asin", "acos", "asinh", "acosh", "atanh",     "log2",  "log10", "ln",
+        "rint", "sum",  "avg",   "if",    "int",       "ceil",  "floor", "cot",
+        "csc",  "sec",  "erfc",  "rand",  "rand_seed", "atan2", "fmod"};
       const auto &functions = Expression::function_names();
       if (parser_functions.count(name) != 0 ||
           std::find(functions.begin(), functions.end(), name) !=
@@ -86,13 +85,13 @@ namespace hemicontact
                   "' is not of the form name=value.");
         const std::string &name = kv[0];
         const std::string  why  = reserved_because(name);
-        require(why.empty(), "data: the constant '" + name +
-                               "' of 'constants' " + why +
-                               "; choose another name.");
+        require(why.empty(),
+                "data: the constant '" + name + "' of 'constants' " + why +
+                  "; choose another name.");
         const auto earlier = definition.find(name);
         if (earlier != definition.end())
-          throw InputError("data: 'constants' defines '" + name +
-                           "' twice: '" + earlier->second + "' and '" + item +
+          throw InputError("data: 'constants' defines '" + name + "' twice: '" +
+                           earlier->second + "' and '" + item +
                            "'; keep one (neither is chosen silently).");
         double value;
         try
@@ -104,8 +103,9 @@ namespace hemicontact
             throw InputError("data: 'constants' entry '" + item +
                              "' does not give a number.");
           }
-        require(std::isfinite(value), "data: 'constants' entry '" + item +
-                                        "' is not a finite number.");
+        require(std::isfinite(value),
+                "data: 'constants' entry '" + item +
+                  "' is not a finite number.");
         constants[name]  = value;
         definition[name] = item;
       }
@@ -117,7 +117,8 @@ namespace hemicontact
 
   template <int dim>
   std::unique_ptr<Function<dim>>
-  parse_function(const std::string &expression, const unsigned int n_components,
+  parse_function(const std::string &expression,
+                 const unsigned int n_components,
                  const std::string &constants_text,
                  const std::string &parameter_name)
   {
@@ -127,14 +128,15 @@ namespace hemicontact
         is_number(expressions[0]))
       expressions.assign(n_components, expressions[0]);
     require(expressions.size() == n_components,
-            "data: '" + parameter_name + "' = " + quoted_expression(expression) + " has " +
+            "data: '" + parameter_name +
+              "' = " + quoted_expression(expression) + " has " +
               std::to_string(expressions.size()) +
               " components separated by ';' but needs " +
               std::to_string(n_components) + ".");
     for (const std::string &e : expressions)
-      require(!e.empty(), "data: '" + parameter_name +
-                            "' has an empty component in " +
-                            quoted_expression(expression) + ".");
+      require(!e.empty(),
+              "data: '" + parameter_name + "' has an empty component in " +
+                quoted_expression(expression) + ".");
 
     // constant data (e.g. the default zero body force) need no expression:
     // a ZeroFunction lets the assembly skip the integral
@@ -143,8 +145,9 @@ namespace hemicontact
         std::vector<double> values;
         for (const std::string &e : expressions)
           values.push_back(Utilities::string_to_double(e));
-        if (std::all_of(values.begin(), values.end(),
-                        [](const double v) { return v == 0; }))
+        if (std::all_of(values.begin(), values.end(), [](const double v) {
+              return v == 0;
+            }))
           return std::make_unique<Functions::ZeroFunction<dim>>(n_components);
         return std::make_unique<Functions::ConstantFunction<dim>>(values);
       }
@@ -156,30 +159,31 @@ namespace hemicontact
         {
           const Expression check(expressions[c],
                                  ExpressionFunction<dim>::variable_names(),
-                                 constants, parameter_name);
+                                 constants,
+                                 parameter_name);
         }
       catch (const InputError &e)
         {
           // the reason after Expression's "cannot parse 'name' = 'text': "
-          const std::string prefix = "cannot parse '" + parameter_name +
-                                     "' = " + quoted_expression(expressions[c]) +
-                                     ": ";
+          const std::string prefix =
+            "cannot parse '" + parameter_name +
+            "' = " + quoted_expression(expressions[c]) + ": ";
           const std::string what = e.what();
           const std::string reason =
             what.compare(0, prefix.size(), prefix) == 0 ?
               what.substr(prefix.size()) :
               what;
-          throw InputError("data: cannot parse '" + parameter_name + "' = " +
-                           quoted_expression(expression) +
-                           (n_components > 1 ? " in its component " +
-                                                 std::to_string(c + 1) :
-                                               std::string()) +
-                           " (variables " +
-                           (dim == 2 ? "x, y, t" : "x, y, z, t") +
-                           " and the constants): " + reason);
+          throw InputError(
+            "data: cannot parse '" + parameter_name +
+            "' = " + quoted_expression(expression) +
+            (n_components > 1 ? " in its component " + std::to_string(c + 1) :
+                                std::string()) +
+            " (variables " + (dim == 2 ? "x, y, t" : "x, y, z, t") +
+            " and the constants): " + reason);
         }
-    auto function = std::make_unique<ExpressionFunction<dim>>(
-      expressions, constants, parameter_name);
+    auto function = std::make_unique<ExpressionFunction<dim>>(expressions,
+                                                              constants,
+                                                              parameter_name);
     return function;
   }
 
@@ -188,10 +192,11 @@ namespace hemicontact
   ProblemData<dim>::set_time(const double t)
   {
     time = t;
-    for (Function<dim> *f :
-         {body_force.get(), surface_traction.get(), contact_traction.get(),
-          initial_displacement.get(),
-          initial_velocity.get()})
+    for (Function<dim> *f : {body_force.get(),
+                             surface_traction.get(),
+                             contact_traction.get(),
+                             initial_displacement.get(),
+                             initial_velocity.get()})
       if (f != nullptr)
         f->set_time(t);
   }
@@ -200,13 +205,12 @@ namespace hemicontact
   void
   ProblemData<dim>::boundary_traction(
     const bool                         on_traction,
-    const std::vector<Point<dim>> &    points,
+    const std::vector<Point<dim>>     &points,
     const std::vector<Tensor<1, dim>> &normals,
-    std::vector<Vector<double>> &      values) const
+    std::vector<Vector<double>>       &values) const
   {
-    const NormalTraction &with_normal = on_traction ?
-                                          surface_traction_with_normal :
-                                          contact_traction_with_normal;
+    const NormalTraction &with_normal =
+      on_traction ? surface_traction_with_normal : contact_traction_with_normal;
     if (!with_normal)
       {
         (on_traction ? surface_traction : contact_traction)
@@ -225,17 +229,20 @@ namespace hemicontact
   ProblemData<dim>
   make_problem_data(const DataParameters &data)
   {
-    ProblemData<dim> result;
+    ProblemData<dim>   result;
     const std::string &c = data.constants;
-    result.body_force = parse_function<dim>(data.body_force, dim, c, "body force");
+    result.body_force =
+      parse_function<dim>(data.body_force, dim, c, "body force");
     result.surface_traction =
       parse_function<dim>(data.surface_traction, dim, c, "surface traction");
     result.contact_traction =
       parse_function<dim>(data.contact_traction, dim, c, "contact traction");
     result.friction_bound =
       std::make_shared<FrictionBound<dim>>(data.friction_bound, c);
-    result.initial_displacement = parse_function<dim>(
-      data.initial_displacement, dim, c, "initial displacement");
+    result.initial_displacement = parse_function<dim>(data.initial_displacement,
+                                                      dim,
+                                                      c,
+                                                      "initial displacement");
     result.initial_velocity =
       parse_function<dim>(data.initial_velocity, dim, c, "initial velocity");
     return result;
@@ -248,9 +255,13 @@ namespace hemicontact
   template ProblemData<3>
   make_problem_data<3>(const DataParameters &);
   template std::unique_ptr<Function<2>>
-  parse_function<2>(const std::string &, const unsigned int,
-                    const std::string &, const std::string &);
+  parse_function<2>(const std::string &,
+                    const unsigned int,
+                    const std::string &,
+                    const std::string &);
   template std::unique_ptr<Function<3>>
-  parse_function<3>(const std::string &, const unsigned int,
-                    const std::string &, const std::string &);
+  parse_function<3>(const std::string &,
+                    const unsigned int,
+                    const std::string &,
+                    const std::string &);
 } // namespace hemicontact

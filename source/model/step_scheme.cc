@@ -48,16 +48,18 @@ namespace hemicontact
   }
 
   StepScheme::StepEnergy
-  StepScheme::step_energy(const double k, const double w_A_w,
-                          const double dw_M_dw, const double w_B_w) const
+  StepScheme::step_energy(const double k,
+                          const double w_A_w,
+                          const double dw_M_dw,
+                          const double w_B_w) const
   {
     // doc/theory.md, section 9.3
     StepEnergy e;
-    e.viscous = k * w_A_w;
+    e.viscous            = k * w_A_w;
     const double kinetic = has_inertia() ? 0.5 * dw_M_dw : 0.;
-    e.numerical = the_scheme == TimeScheme::implicit ?
-                    kinetic + 0.5 * k * k * w_B_w :
-                    kinetic - 0.5 * k * k * w_B_w;
+    e.numerical          = the_scheme == TimeScheme::implicit ?
+                             kinetic + 0.5 * k * k * w_B_w :
+                             kinetic - 0.5 * k * k * w_B_w;
     return e;
   }
 

@@ -42,10 +42,9 @@ namespace hemicontact
   {
     if (retirement.valid())
       retirement.wait();
-    retirement = std::async(std::launch::async,
-                            [buffers = std::move(buffers)]() mutable {
-                              buffers.clear();
-                            });
+    retirement =
+      std::async(std::launch::async,
+                 [buffers = std::move(buffers)]() mutable { buffers.clear(); });
   }
 
   std::string

@@ -2,327 +2,26 @@
 #include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
 
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/output/checkpoint_directory.h>
 #include <hemicontact/output/checkpointer.h>
+#include <hemicontact/output/output_file.h>
 #include <hemicontact/output/run_output.h>
 #include <hemicontact/problem/contact_problem.h>
-#include <hemicontact/base/exceptions.h>
-#include <hemicontact/output/output_file.h>
 #include <hemicontact/solver/projected_operator.h>
 
-#include <boost/archive/text_iarchive.hpp>
-#include <boost/archive/text_oarchive.hpp>
-#include <boost/crc.hpp>
-#include <boost/serialization/string.hpp>
-#include <boost/serialization/utility.hpp>
-#include <boost/serialization/vector.hpp>
-
 #include <csignal>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
-#include <cctype>
-#include <limits>
 #include <map>
-#include <random>
 #include <sstream>
 
 namespace hemicontact
 {
+  using namespace checkpoint_directory;
+
   namespace
   {
-    namespace fs = std::filesystem;
-
-    /** The number of values of EnergyBalance in a checkpoint. */
-    constexpr std::size_t n_energy_values = 9;
-
-    /** The last line of a .state file: the CRC-32 of everything before it. */
-    const std::string state_checksum_label = "crc32 ";
-
-    /** CRC-32 of @p text. */
-    std::uint32_t
-    crc32_of(const std::string &text)
-    {
-      boost::crc_32_type crc;
-      crc.process_bytes(text.data(), text.size());
-      return crc.checksum();
-    }
-
-    /**
-     * @p state as a text archive followed by the line "crc32 N" of that
-     * text (so that a change of any entry is seen).
-     */
-    std::string
-    state_text(const CheckpointState &state)
-    {
-      std::ostringstream out;
-      {
-        boost::archive::text_oarchive archive(out);
-        archive << state;
-      }
-      out << "\n";
-      return out.str() + state_checksum_label +
-             std::to_string(crc32_of(out.str())) + "\n";
-    }
-
-    /**
-     * Read the .state file @p file into @p state; the reason why it cannot
-     * be used (unreadable, its checksum or content not as written), or an
-     * empty string.
-     */
-    std::string
-    read_state(const fs::path &file, CheckpointState &state)
-    {
-      const std::string name = "'" + file.string() + "'";
-      std::ifstream     in(file, std::ios::binary);
-      if (!in)
-        return "cannot read " + name;
-      std::ostringstream content;
-      content << in.rdbuf();
-      const std::string text = content.str();
-      const std::size_t last =
-        text.size() < 2 ? std::string::npos : text.rfind('\n', text.size() - 2);
-      if (last == std::string::npos ||
-          text.compare(last + 1, state_checksum_label.size(),
-                       state_checksum_label) != 0)
-        return name + " is cut short (no checksum line)";
-      const std::string body = text.substr(0, last + 1);
-      if (text.substr(last + 1 + state_checksum_label.size()) !=
-          std::to_string(crc32_of(body)) + "\n")
-        return name + " has been changed (its CRC-32 is not the one recorded "
-                      "in it)";
-      try
-        {
-          std::istringstream            body_in(body);
-          boost::archive::text_iarchive archive(body_in);
-          archive >> state;
-        }
-      catch (const std::exception &e)
-        {
-          return "cannot read " + name + ": " + e.what();
-        }
-      if (state.energy.size() != n_energy_values || state.n_ranks == 0 ||
-          !(state.time_step > 0) || state.step_number > state.n_steps ||
-          state.constrained_amg > 2)
-        return name + " holds an invalid state (" +
-               std::to_string(state.energy.size()) + " energy values of " +
-               std::to_string(n_energy_values) + ", step " +
-               std::to_string(state.step_number) + " of " +
-               std::to_string(state.n_steps) + ")";
-      return "";
-    }
-
-    /**
-     * The fields of a simplex-mesh checkpoint on one rank: the owned
-     * entries of w_n, u_n and the branches, each with its global dof index
-     * (the mesh itself is rebuilt from the parameters, partitioned the same
-     * way on the same number of ranks). Returns the reason of a failure.
-     */
-    std::string
-    write_rank_fields(const fs::path &file, const IndexSet &owned,
-                      const std::vector<const TrilinosWrappers::MPI::Vector *>
-                        &fields)
-    {
-      std::ofstream       out(file, std::ios::binary);
-      const std::uint64_t n = owned.n_elements();
-      out.write(reinterpret_cast<const char *>(&n), sizeof n);
-      for (const types::global_dof_index i : owned)
-        {
-          const std::uint64_t index = i;
-          out.write(reinterpret_cast<const char *>(&index), sizeof index);
-          for (const TrilinosWrappers::MPI::Vector *v : fields)
-            {
-              const double value = (*v)[i];
-              out.write(reinterpret_cast<const char *>(&value), sizeof value);
-            }
-        }
-      out.close();
-      return out ? "" : "cannot write '" + file.string() + "'";
-    }
-
-    /** Read write_rank_fields()'s file; the reason if it does not fit. */
-    std::string
-    read_rank_fields(const fs::path &file, const IndexSet &owned,
-                     const std::vector<TrilinosWrappers::MPI::Vector *> &fields)
-    {
-      const std::string other_partition =
-        "'" + file.string() +
-        "' holds the fields of another mesh partition than this run builds";
-      std::ifstream in(file, std::ios::binary);
-      std::uint64_t n = 0;
-      in.read(reinterpret_cast<char *>(&n), sizeof n);
-      if (!in || n != owned.n_elements())
-        return other_partition;
-      for (std::uint64_t k = 0; k < n; ++k)
-        {
-          std::uint64_t index = 0;
-          in.read(reinterpret_cast<char *>(&index), sizeof index);
-          if (!in || !owned.is_element(index))
-            return other_partition;
-          for (TrilinosWrappers::MPI::Vector *v : fields)
-            {
-              double value = 0;
-              in.read(reinterpret_cast<char *>(&value), sizeof value);
-              (*v)[index] = value;
-            }
-        }
-      return in ? "" : "'" + file.string() + "' is cut short";
-    }
-
-    /** "name size crc32" of @p file ("name missing" if it cannot be read). */
-    std::string
-    file_signature(const fs::path &file)
-    {
-      std::ifstream in(file, std::ios::binary);
-      if (!in)
-        return file.filename().string() + " missing";
-      boost::crc_32_type crc;
-      std::vector<char>  buffer(1 << 20);
-      std::uintmax_t     size = 0;
-      while (in)
-        {
-          in.read(buffer.data(), buffer.size());
-          crc.process_bytes(buffer.data(), in.gcount());
-          size += in.gcount();
-        }
-      return file.filename().string() + " " + std::to_string(size) + " " +
-             std::to_string(crc.checksum());
-    }
-
-    std::string
-    checkpoint_name(const unsigned int step)
-    {
-      std::ostringstream s;
-      s << "step-" << std::setw(6) << std::setfill('0') << step;
-      return s.str();
-    }
-
-    /**
-     * Read the state of the checkpoint of @p step in @p dir into @p state
-     * and check it (it records that step) and every file against the
-     * signature it records. Returns why the checkpoint cannot be used, or
-     * an empty string.
-     */
-    std::string
-    checkpoint_damage(const fs::path &dir, const unsigned int step,
-                      CheckpointState &state)
-    {
-      const fs::path    state_file = dir / (checkpoint_name(step) + ".state");
-      const std::string why        = read_state(state_file, state);
-      if (!why.empty())
-        return why;
-      if (state.step_number != step)
-        return "'" + state_file.string() + "' holds the checkpoint of step " +
-               std::to_string(state.step_number) +
-               ", not of the step its name says (renamed?)";
-      if (state.file_signatures.empty())
-        return "'" + state_file.string() + "' lists no files";
-      for (const std::string &expected : state.file_signatures)
-        {
-          const std::string file = expected.substr(0, expected.find(' '));
-          const std::string found = file_signature(dir / file);
-          if (found != expected)
-            return "'" + (dir / file).string() +
-                   "' is not the file the checkpoint wrote (size and CRC-32 '" +
-                   found.substr(file.size() + 1) + "', recorded '" +
-                   expected.substr(file.size() + 1) + "')";
-        }
-      return "";
-    }
-
-    std::vector<double>
-    to_vector(const EnergyBalance &e)
-    {
-      return {e.kinetic,
-              e.elastic,
-              e.initial_energy,
-              e.viscous_dissipation,
-              e.friction_dissipation,
-              e.damping_dissipation,
-              e.external_work,
-              e.numerical_dissipation,
-              e.transfer_change};
-    }
-
-    /**
-     * The step of a file of a checkpoint ("step-" + at least six digits +
-     * "." + anything), or -1 for any other name; @p suffix: what follows
-     * the digits.
-     */
-    long long
-    checkpoint_step(const std::string &name, std::string &suffix)
-    {
-      std::size_t end = 5;
-      while (end < name.size() && end < 5 + 10 &&
-             std::isdigit(static_cast<unsigned char>(name[end])))
-        ++end;
-      if (name.rfind("step-", 0) != 0 || end < 11 || end == name.size() ||
-          name[end] != '.')
-        return -1;
-      suffix = name.substr(end);
-      return std::stoll(name.substr(5, end - 5));
-    }
-
-    /** Steps of the complete checkpoints in @p dir (their .state exists). */
-    std::vector<unsigned int>
-    complete_checkpoints(const fs::path &dir)
-    {
-      std::vector<unsigned int> steps;
-      std::error_code           ec;
-      for (const auto &entry : fs::directory_iterator(dir, ec))
-        {
-          std::string     suffix;
-          const long long step =
-            checkpoint_step(entry.path().filename().string(), suffix);
-          if (step >= 0 && step <= std::numeric_limits<unsigned int>::max() &&
-              suffix == ".state")
-            steps.push_back(static_cast<unsigned int>(step));
-        }
-      std::sort(steps.begin(), steps.end());
-      return steps;
-    }
-
-    /** The file naming the run whose output is in OUTPUT (in OUTPUT/checkpoint). */
-    const std::string run_file_name = "run";
-
-    /** The run id in @p dir's run file, "" if there is none. */
-    std::string
-    recorded_run(const fs::path &dir)
-    {
-      std::ifstream in(dir / run_file_name);
-      std::string   id;
-      in >> id;
-      return id;
-    }
-
-    /** A new run id: 64 random bits in hex. */
-    std::string
-    new_run_id()
-    {
-      std::random_device rd;
-      std::ostringstream s;
-      s << std::hex << std::setw(8) << std::setfill('0') << rd()
-        << std::setw(8) << std::setfill('0') << rd();
-      return s.str();
-    }
-
-    /** The signature of the mesh file @p geometry reads ("" if none). */
-    std::string
-    mesh_signature_of(const GeometryParameters &geometry)
-    {
-      return geometry.mesh_type == MeshType::gmsh ?
-               file_signature(geometry.mesh_file) :
-               "";
-    }
-
-    /** The size and CRC-32 of a file_signature() (without the name). */
-    std::string
-    signature_values(const std::string &signature)
-    {
-      const std::size_t space = signature.find(' ');
-      return space == std::string::npos ? "none" : signature.substr(space + 1);
-    }
-
     /**
      * The branches of the owned nodes of @p nodes as a field: the normal
      * branch at a node's first dof, the tangential at its second.
@@ -330,7 +29,7 @@ namespace hemicontact
     template <int dim>
     void
     branches_to_field(const std::vector<ContactNode<dim>> &nodes,
-                      TrilinosWrappers::MPI::Vector &      field)
+                      TrilinosWrappers::MPI::Vector       &field)
     {
       for (const ContactNode<dim> &node : nodes)
         if (node.locally_owned)
@@ -364,9 +63,10 @@ namespace hemicontact
             AssertIndexRange(i, directions.size());
             // sum e e over nodal::constrained_directions(): nu nu for normal
             // stick, the tangent plane's projector for tangential stick
-            const double normal_part = node.normal * (directions[i] * node.normal);
-            node.normal_branch = normal_part > 0.5 ? NormalBranch::stick :
-                                                     NormalBranch::separating;
+            const double normal_part =
+              node.normal * (directions[i] * node.normal);
+            node.normal_branch     = normal_part > 0.5 ? NormalBranch::stick :
+                                                         NormalBranch::separating;
             node.tangential_branch = trace(directions[i]) - normal_part > 0.5 ?
                                        TangentialBranch::stick :
                                        TangentialBranch::slip;
@@ -374,42 +74,6 @@ namespace hemicontact
           }
       AssertDimension(i, directions.size());
       return result;
-    }
-
-    /**
-     * After a checkpoint of step @p step of run @p run was written into
-     * @p dir: keep it and the one before it of the same run, remove every
-     * other checkpoint file (older ones, those of an earlier run whose
-     * output this run replaced, unreadable or incomplete ones, and those
-     * beyond @p step that a resumed run left behind).
-     */
-    void
-    keep_last_two_checkpoints(const fs::path &dir, const std::string &run,
-                              const unsigned int step)
-    {
-      std::vector<unsigned int> kept;
-      for (const unsigned int s : complete_checkpoints(dir))
-        {
-          CheckpointState state;
-          if (s <= step &&
-              read_state(dir / (checkpoint_name(s) + ".state"), state).empty() &&
-              state.run_id == run)
-            kept.push_back(s);
-        }
-      if (kept.size() > 2)
-        kept.erase(kept.begin(), kept.end() - 2);
-      std::vector<fs::path> old;
-      std::error_code       ec;
-      for (const auto &entry : fs::directory_iterator(dir, ec))
-        {
-          std::string     suffix;
-          const long long s =
-            checkpoint_step(entry.path().filename().string(), suffix);
-          if (s >= 0 && std::find(kept.begin(), kept.end(), s) == kept.end())
-            old.push_back(entry.path());
-        }
-      for (const fs::path &f : old)
-        fs::remove(f, ec);
     }
 
     /** Set by SIGTERM or SIGINT; the time loop checks it after every step. */
@@ -425,7 +89,7 @@ namespace hemicontact
   template <int dim>
   Checkpointer<dim>::Checkpointer(const Parameters &parameters,
                                   MPI_Comm          comm,
-                                  TimerOutput &     timer)
+                                  TimerOutput      &timer)
     : parameters(parameters)
     , mpi_communicator(comm)
     , timer(timer)
@@ -435,7 +99,7 @@ namespace hemicontact
   CheckpointState::energy_balance() const
   {
     const std::vector<double> &v = energy;
-    EnergyBalance e;
+    EnergyBalance              e;
     AssertDimension(v.size(), n_energy_values); // read_state() checks it
     e.kinetic               = v[0];
     e.elastic               = v[1];
@@ -488,11 +152,12 @@ namespace hemicontact
         // checkpoints of an earlier run no longer match the output this
         // run replaces: from now on the directory names this run, so that
         // a resume does not take them (its first checkpoint removes them)
-        const fs::path  dir = fs::path(parameters.output.directory) / "checkpoint";
+        const fs::path dir =
+          fs::path(parameters.output.directory) / "checkpoint";
         std::error_code ec;
         if (fs::is_directory(dir, ec))
-          error = write_atomically((dir / run_file_name).string(),
-                                   run_id + "\n");
+          error =
+            write_atomically((dir / run_file_name).string(), run_id + "\n");
       }
     if (!resumed)
       throw_if_any(error, mpi_communicator);
@@ -506,19 +171,19 @@ namespace hemicontact
   template <int dim>
   void
   Checkpointer<dim>::write(const ContactProblem<dim> &problem,
-                           RunOutput<dim> &           output)
+                           RunOutput<dim>            &output)
   {
     output.finish_solution_output(); // the series it saves lists every write
     const std::vector<SeriesRecord> &series = output.series();
     require_space(problem, series); // p4est aborts on a failed write
-    const typename ContactProblem<dim>::State s = problem.state();
-    const unsigned int step_number = s.step_number;
-    TimerOutput::Scope t(timer, "checkpoint");
-    const fs::path     dir  = fs::path(parameters.output.directory) / "checkpoint";
-    const fs::path     aside = dir / "writing";
-    const std::string  name = checkpoint_name(step_number);
-    const bool         root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
-    std::string        error;
+    const typename ContactProblem<dim>::State s           = problem.state();
+    const unsigned int                        step_number = s.step_number;
+    TimerOutput::Scope                        t(timer, "checkpoint");
+    const fs::path dir   = fs::path(parameters.output.directory) / "checkpoint";
+    const fs::path aside = dir / "writing";
+    const std::string name = checkpoint_name(step_number);
+    const bool  root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+    std::string error;
     if (root)
       {
         fs::remove_all(aside);
@@ -546,7 +211,8 @@ namespace hemicontact
                      aside / (name + ".fields." +
                               std::to_string(Utilities::MPI::this_mpi_process(
                                 mpi_communicator))),
-                     s.locally_owned_dofs, owned_fields),
+                     s.locally_owned_dofs,
+                     owned_fields),
                    mpi_communicator);
     else
       {
@@ -554,7 +220,8 @@ namespace hemicontact
         std::vector<const TrilinosWrappers::MPI::Vector *> fields;
         for (unsigned int i = 0; i < ghosted.size(); ++i)
           {
-            ghosted[i].reinit(s.locally_owned_dofs, s.locally_relevant_dofs,
+            ghosted[i].reinit(s.locally_owned_dofs,
+                              s.locally_relevant_dofs,
                               mpi_communicator);
             ghosted[i] = *owned_fields[i];
             fields.push_back(&ghosted[i]);
@@ -612,11 +279,11 @@ namespace hemicontact
   template <int dim>
   void
   Checkpointer<dim>::require_space(
-    const ContactProblem<dim> &        problem,
+    const ContactProblem<dim>       &problem,
     const std::vector<SeriesRecord> &series) const
   {
-    const typename ContactProblem<dim>::State s = problem.state();
-    const Discretization<dim> &discretization = s.discretization;
+    const typename ContactProblem<dim>::State s              = problem.state();
+    const Discretization<dim>                &discretization = s.discretization;
     const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
     // w_n, u_n and the branches on every cell (p4est's data file) or at
     // every dof with its index (the rank files of a simplex mesh), the
@@ -630,15 +297,14 @@ namespace hemicontact
       bytes += std::uintmax_t(s.dof_handler.n_dofs()) * 4 * sizeof(double) +
                Utilities::MPI::n_mpi_processes(mpi_communicator) * 8;
     else
-      bytes += std::uintmax_t(
-                 discretization.triangulation->n_global_active_cells()) *
-               (3 * discretization.fe->n_dofs_per_cell() * sizeof(double) +
-                64);
+      bytes +=
+        std::uintmax_t(discretization.triangulation->n_global_active_cells()) *
+        (3 * discretization.fe->n_dofs_per_cell() * sizeof(double) + 64);
     std::string error;
     if (root)
       {
-        const fs::path  dir = fs::path(parameters.output.directory) /
-                             "checkpoint";
+        const fs::path dir =
+          fs::path(parameters.output.directory) / "checkpoint";
         std::error_code ec;
         // a checkpoint write cut short is deleted before the next one
         for (const auto &entry : fs::directory_iterator(dir / "writing", ec))
@@ -646,13 +312,15 @@ namespace hemicontact
             const std::uintmax_t size = fs::file_size(entry.path(), ec);
             bytes -= std::min(bytes, ec ? 0 : size);
           }
-        error = free_space_shortfall(
-          fs::is_directory(dir, ec) ? dir.string() : parameters.output.directory,
-          bytes);
+        error = free_space_shortfall(fs::is_directory(dir, ec) ?
+                                       dir.string() :
+                                       parameters.output.directory,
+                                     bytes);
         if (!error.empty())
           error = "cannot write the checkpoint of step " +
                   std::to_string(s.step_number) + " in '" + dir.string() +
-                  "': " + error + "; nothing of it was written, the earlier "
+                  "': " + error +
+                  "; nothing of it was written, the earlier "
                   "checkpoints are unchanged.";
       }
     throw_if_any(error, mpi_communicator);
@@ -662,7 +330,7 @@ namespace hemicontact
   const CheckpointState &
   Checkpointer<dim>::read(const unsigned int n_steps, const double time_step)
   {
-    const fs::path     dir = fs::path(parameters.output.directory) / "checkpoint";
+    const fs::path dir = fs::path(parameters.output.directory) / "checkpoint";
     const std::vector<unsigned int> steps = complete_checkpoints(dir);
     require(!steps.empty(),
             "checkpoint: 'resume' is set but '" + dir.string() +
@@ -678,18 +346,18 @@ namespace hemicontact
         const std::string run = recorded_run(dir);
         for (int i = static_cast<int>(steps.size()) - 1; i >= 0; --i)
           {
-            std::string why = checkpoint_damage(dir, steps[i], state);
+            std::string why     = checkpoint_damage(dir, steps[i], state);
             const bool  damaged = !why.empty();
             if (!damaged && state.run_id != run)
-              why =
-                "'" + (dir / (checkpoint_name(steps[i]) + ".state")).string() +
-                "' is of another run than the output in '" +
-                parameters.output.directory + "' (" +
-                (run.empty() ? "'" + (dir / run_file_name).string() +
-                                 "' naming that run is missing" :
-                               "a run started there without --resume after "
-                               "it, and wrote no checkpoint yet") +
-                ")";
+              why = "'" +
+                    (dir / (checkpoint_name(steps[i]) + ".state")).string() +
+                    "' is of another run than the output in '" +
+                    parameters.output.directory + "' (" +
+                    (run.empty() ? "'" + (dir / run_file_name).string() +
+                                     "' naming that run is missing" :
+                                   "a run started there without --resume after "
+                                   "it, and wrote no checkpoint yet") +
+                    ")";
             if (why.empty())
               {
                 chosen = i;
@@ -697,16 +365,17 @@ namespace hemicontact
               }
             damage += (damage.empty() ? "" : "; ") + why;
             std::cerr << "hemicontact: warning: the checkpoint of step "
-                      << steps[i] << (damaged ? " is damaged: " : " is skipped: ")
-                      << why << "."
-                      << (i > 0 ? " Trying the one before it." : "")
+                      << steps[i]
+                      << (damaged ? " is damaged: " : " is skipped: ") << why
+                      << "." << (i > 0 ? " Trying the one before it." : "")
                       << std::endl;
           }
       }
     chosen = Utilities::MPI::broadcast(mpi_communicator, chosen, 0);
     damage = Utilities::MPI::broadcast(mpi_communicator, damage, 0);
-    require(chosen >= 0, "checkpoint: no checkpoint in '" + dir.string() +
-                           "' can be resumed from: " + damage + ".");
+    require(chosen >= 0,
+            "checkpoint: no checkpoint in '" + dir.string() +
+              "' can be resumed from: " + damage + ".");
     state = Utilities::MPI::broadcast(mpi_communicator, state, 0);
     name  = checkpoint_name(steps[chosen]);
     require(std::abs(state.time_step - time_step) <= 1e-12 * time_step &&
@@ -732,7 +401,7 @@ namespace hemicontact
       std::string changes;
       for (const auto &[entry, value] : now)
         {
-          const auto it = before.find(entry);
+          const auto        it = before.find(entry);
           const std::string old_value =
             it == before.end() ? "(not recorded)" : it->second;
           if (old_value != value)
@@ -748,12 +417,13 @@ namespace hemicontact
     }
     {
       // ... and so must the mesh file's content
-      const std::string now = Utilities::MPI::broadcast(
-        mpi_communicator,
-        Utilities::MPI::this_mpi_process(mpi_communicator) == 0 ?
-          mesh_signature_of(parameters.geometry) :
-          std::string(),
-        0);
+      const std::string now =
+        Utilities::MPI::broadcast(mpi_communicator,
+                                  Utilities::MPI::this_mpi_process(
+                                    mpi_communicator) == 0 ?
+                                    mesh_signature_of(parameters.geometry) :
+                                    std::string(),
+                                  0);
       const std::string file = parameters.geometry.mesh_file;
       require(now == state.mesh_signature,
               "checkpoint: the mesh file '" + file +
@@ -802,18 +472,20 @@ namespace hemicontact
   template <int dim>
   void
   Checkpointer<dim>::load_fields(
-    const DoFHandler<dim> &                             dof_handler,
-    const IndexSet &                                    owned,
+    const DoFHandler<dim>                              &dof_handler,
+    const IndexSet                                     &owned,
     const std::vector<TrilinosWrappers::MPI::Vector *> &fields)
   {
     const fs::path dir = fs::path(parameters.output.directory) / "checkpoint";
     if (dof_handler.get_fe().reference_cell().is_simplex())
       {
-        const std::string why = read_rank_fields(
-          dir / (name + ".fields." +
-                 std::to_string(
-                   Utilities::MPI::this_mpi_process(mpi_communicator))),
-          owned, fields);
+        const std::string why =
+          read_rank_fields(dir /
+                             (name + ".fields." +
+                              std::to_string(Utilities::MPI::this_mpi_process(
+                                mpi_communicator))),
+                           owned,
+                           fields);
         for (TrilinosWrappers::MPI::Vector *v : fields)
           v->compress(VectorOperation::insert);
         require(Utilities::MPI::min(why.empty() ? 1 : 0, mpi_communicator) == 1,
@@ -827,7 +499,7 @@ namespace hemicontact
       {
         parallel::distributed::SolutionTransfer<dim,
                                                 TrilinosWrappers::MPI::Vector>
-          transfer(dof_handler);
+                                                     transfer(dof_handler);
         std::vector<TrilinosWrappers::MPI::Vector *> targets(fields);
         transfer.deserialize(targets);
       }

@@ -22,7 +22,7 @@ namespace hemicontact
     std::string
     write_sorted_rows(const std::vector<std::vector<double>> &gathered,
                       const unsigned int                      width,
-                      const std::string &                     directory,
+                      const std::string                      &directory,
                       const unsigned int                      step)
     {
       std::vector<std::vector<double>> table;
@@ -30,17 +30,20 @@ namespace hemicontact
         for (std::size_t r = 0; r + width <= part.size(); r += width)
           table.emplace_back(part.begin() + r, part.begin() + r + width);
       // sorted by coordinates (x, then y, then z): independent of the partition
-      std::sort(table.begin(), table.end(),
+      std::sort(table.begin(),
+                table.end(),
                 [](const std::vector<double> &a, const std::vector<double> &b) {
-                  return std::lexicographical_compare(a.begin(), a.begin() + dim,
-                                                      b.begin(), b.begin() + dim);
+                  return std::lexicographical_compare(a.begin(),
+                                                      a.begin() + dim,
+                                                      b.begin(),
+                                                      b.begin() + dim);
                 });
 
       std::ostringstream name;
       name << directory << "/contact_" << Utilities::int_to_string(step, 5)
            << ".csv";
       std::ostringstream file;
-      const char   *xyz[] = {"x", "y", "z"};
+      const char        *xyz[] = {"x", "y", "z"};
       for (unsigned int d = 0; d < dim; ++d)
         file << xyz[d] << ",";
       for (unsigned int d = 0; d < dim; ++d)
@@ -80,7 +83,7 @@ namespace hemicontact
   template <int dim>
   void
   write_contact_table(const ContactProblem<dim> &problem,
-                      const std::string &        directory,
+                      const std::string         &directory,
                       MPI_Comm                   mpi_communicator)
   {
     const typename ContactProblem<dim>::State s = problem.state();
@@ -134,14 +137,14 @@ namespace hemicontact
       Utilities::MPI::gather(mpi_communicator, rows, 0);
     std::string error;
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      error =
-        write_sorted_rows<dim>(gathered, width, directory, s.step_number);
+      error = write_sorted_rows<dim>(gathered, width, directory, s.step_number);
     throw_if_any(error, mpi_communicator);
   }
 
-#define HEMICONTACT_INSTANTIATE(dim)                                           \
-  template void write_contact_table<dim>(const ContactProblem<dim> &,          \
-                                         const std::string &, MPI_Comm);
+#define HEMICONTACT_INSTANTIATE(dim)                                  \
+  template void write_contact_table<dim>(const ContactProblem<dim> &, \
+                                         const std::string &,         \
+                                         MPI_Comm);
 
   HEMICONTACT_INSTANTIATE(2)
   HEMICONTACT_INSTANTIATE(3)

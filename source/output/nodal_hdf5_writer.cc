@@ -11,12 +11,12 @@
 #include <algorithm>
 #include <array>
 #include <filesystem>
-#include <iomanip>
-#include <map>
-#include <sstream>
-#include <iterator>
 #include <fstream>
+#include <iomanip>
+#include <iterator>
+#include <map>
 #include <regex>
+#include <sstream>
 
 namespace hemicontact
 {
@@ -40,15 +40,19 @@ namespace hemicontact
      */
     template <typename number>
     void
-    write_rows(HDF5::File &file, const std::string &name,
-               const std::vector<number> &data, const hsize_t n_columns,
-               const hsize_t row_offset, const hsize_t n_rows)
+    write_rows(HDF5::File                &file,
+               const std::string         &name,
+               const std::vector<number> &data,
+               const hsize_t              n_columns,
+               const hsize_t              row_offset,
+               const hsize_t              n_rows)
     {
       HDF5::DataSet dataset =
         file.create_dataset<number>(name, {n_rows, n_columns});
       const hsize_t n_local_rows = data.size() / n_columns;
       if (n_local_rows > 0)
-        dataset.write_hyperslab(data, {row_offset, 0},
+        dataset.write_hyperslab(data,
+                                {row_offset, 0},
                                 {n_local_rows, n_columns});
       else
         dataset.write_none<number>();
@@ -56,15 +60,17 @@ namespace hemicontact
 
     /** An XDMF DataItem naming the dataset @p name of the file @p h5. */
     std::string
-    data_item(const std::string &h5, const std::string &name,
-              const unsigned long long n_rows, const unsigned int n_columns,
-              const bool floating)
+    data_item(const std::string       &h5,
+              const std::string       &name,
+              const unsigned long long n_rows,
+              const unsigned int       n_columns,
+              const bool               floating)
     {
       std::ostringstream item;
       item << "<DataItem Dimensions=\"" << n_rows << " " << n_columns
            << "\" NumberType=\"" << (floating ? "Float" : "UInt")
-           << "\" Precision=\"" << (floating ? 8 : 4)
-           << "\" Format=\"HDF\">" << h5 << ":/" << name << "</DataItem>";
+           << "\" Precision=\"" << (floating ? 8 : 4) << "\" Format=\"HDF\">"
+           << h5 << ":/" << name << "</DataItem>";
       return item.str();
     }
   } // namespace
@@ -74,7 +80,7 @@ namespace hemicontact
   template <int dim>
   NodalHdf5Writer<dim>::NodalHdf5Writer(const std::string &directory,
                                         const std::string &stem,
-                                        MPI_Comm mpi_communicator)
+                                        MPI_Comm           mpi_communicator)
     : directory(directory)
     , stem(stem)
     , mpi_communicator(mpi_communicator)
@@ -104,7 +110,8 @@ namespace hemicontact
   void
   NodalHdf5Writer<dim>::keep_steps_up_to(const unsigned int step)
   {
-    entries.erase(std::remove_if(entries.begin(), entries.end(),
+    entries.erase(std::remove_if(entries.begin(),
+                                 entries.end(),
                                  [step](const Entry &entry) {
                                    return entry.step > step;
                                  }),
@@ -131,17 +138,18 @@ namespace hemicontact
     const std::regex  time("<Time Value=\"([^\"]+)\"");
     const std::regex  step(stem + "_([0-9]+)\\.h5");
     for (std::size_t start = text.find(begin); start != std::string::npos;
-         start = text.find(begin, start))
+         start             = text.find(begin, start))
       {
-        const std::size_t stop = text.find(end, start);
-        if (stop == std::string::npos)
+                    const std::size_t stop = text.find(end, start);
+                    if (stop == std::string::npos)
           break;
         const std::string grid = text.substr(start, stop + end.size() - start);
-        std::smatch       t, s;
-        if (std::regex_search(grid, t, time) &&
+                    std::smatch       t, s;
+                    if (std::regex_search(grid, t, time) &&
             std::regex_search(grid, s, step))
           entries.push_back({static_cast<unsigned int>(std::stoul(s[1])),
-                             std::stod(t[1]), grid});
+                                         std::stod(t[1]),
+                                         grid});
         start = stop;
       }
   }
@@ -167,11 +175,11 @@ namespace hemicontact
 
   template <int dim>
   std::string
-  NodalHdf5Writer<dim>::write(const DoFHandler<dim> &   dof_handler,
+  NodalHdf5Writer<dim>::write(const DoFHandler<dim>    &dof_handler,
                               const std::vector<Field> &fields,
                               const unsigned int        step,
                               const double              time,
-                              const std::string &       displacement)
+                              const std::string        &displacement)
   {
     // a P1/Q1 vector element: dim copies of one element with one degree of
     // freedom per vertex and none elsewhere
@@ -180,9 +188,9 @@ namespace hemicontact
                   fe.element_multiplicity(0) == dim,
                 ExcMessage("NodalHdf5Writer needs an FESystem of dim copies "
                            "of one scalar element."));
-    const ReferenceCell  reference_cell = fe.reference_cell();
-    const unsigned int   n_vertices     = reference_cell.n_vertices();
-    const unsigned int   n_columns      = n_vertices;
+    const ReferenceCell reference_cell = fe.reference_cell();
+    const unsigned int  n_vertices     = reference_cell.n_vertices();
+    const unsigned int  n_columns      = n_vertices;
     AssertThrow(fe.base_element(0).n_dofs_per_vertex() == 1 &&
                   fe.base_element(0).n_dofs_per_cell() == n_vertices,
                 ExcMessage("NodalHdf5Writer needs a P1/Q1 element."));
@@ -218,7 +226,8 @@ namespace hemicontact
                         std::string::npos &&
                       field.name != "nodes" && field.name != "cells" &&
                       field.name != "displaced_nodes" &&
-                      std::count_if(fields.begin(), fields.end(),
+                      std::count_if(fields.begin(),
+                                    fields.end(),
                                     [&field](const Field &other) {
                                       return other.name == field.name;
                                     }) == 1,
@@ -228,8 +237,8 @@ namespace hemicontact
           displacement_field = &field;
       }
     AssertThrow(displacement.empty() || displacement_field != nullptr,
-                ExcMessage("NodalHdf5Writer: no field named '" +
-                           displacement + "'."));
+                ExcMessage("NodalHdf5Writer: no field named '" + displacement +
+                           "'."));
 
     // the nodes this rank owns, by the degree of freedom of their first
     // component: their position and their dim degrees of freedom
@@ -272,7 +281,8 @@ namespace hemicontact
         node_index[node.first] = n++;
       node_index.compress(VectorOperation::insert);
     }
-    TrilinosWrappers::MPI::Vector ghosted_index(owned, relevant,
+    TrilinosWrappers::MPI::Vector ghosted_index(owned,
+                                                relevant,
                                                 mpi_communicator);
     ghosted_index = node_index;
 
@@ -330,27 +340,28 @@ namespace hemicontact
       }
     throw_if_any(error, mpi_communicator);
     {
-      HDF5::File file(path, HDF5::File::FileAccessMode::create,
+      HDF5::File file(path,
+                      HDF5::File::FileAccessMode::create,
                       mpi_communicator);
       file.set_attribute("step", step);
       file.set_attribute("time", time);
       write_rows(file, "nodes", positions, dim, node_offset, n_nodes);
       write_rows(file, "cells", cells, n_columns, cell_offset, n_cells);
       for (const Field &field : fields)
-        write_rows(file, field.name, rows(*field.values), dim, node_offset,
-                   n_nodes);
+        write_rows(
+          file, field.name, rows(*field.values), dim, node_offset, n_nodes);
       if (displacement_field != nullptr)
         {
           std::vector<double> displaced = rows(*displacement_field->values);
           for (unsigned int i = 0; i < displaced.size(); ++i)
             displaced[i] += positions[i];
-          write_rows(file, "displaced_nodes", displaced, dim, node_offset,
-                     n_nodes);
+          write_rows(
+            file, "displaced_nodes", displaced, dim, node_offset, n_nodes);
         }
     }
     if (root)
       {
-        std::error_code ec;
+        std::error_code      ec;
         const std::uintmax_t size = std::filesystem::file_size(path, ec);
         if (ec || size < payload)
           error = prefix + "the file is missing or shorter than its data.";
@@ -373,7 +384,7 @@ namespace hemicontact
          << "        </Topology>\n";
     // ParaView takes a "Vector" to have 3 components; in 2D the fields are
     // given as 2-component arrays
-    const std::string type = dim == 3 ? "Vector" : "Matrix";
+    const std::string        type = dim == 3 ? "Vector" : "Matrix";
     std::vector<std::string> names;
     for (const Field &field : fields)
       names.push_back(field.name);
@@ -392,8 +403,8 @@ namespace hemicontact
     entries.push_back({step, time, grid.str()});
 
     if (root)
-      error = write_atomically(directory + "/" + xdmf_file_name(),
-                               xdmf_content());
+      error =
+        write_atomically(directory + "/" + xdmf_file_name(), xdmf_content());
     try
       {
         throw_if_any(error, mpi_communicator);

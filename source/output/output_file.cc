@@ -147,7 +147,7 @@ namespace hemicontact
     std::string
     unusable_output_name(const fs::path &directory)
     {
-      std::error_code ec;
+      std::error_code       ec;
       const fs::file_status status = fs::status(directory, ec);
       if (!fs::exists(status))
         return "";
@@ -156,10 +156,14 @@ namespace hemicontact
                "': Not a directory.";
       const std::string advice =
         "; rename or remove it, or set another 'output/directory'.";
-      for (const char *name :
-           {"steps.csv", "probes.csv", "performance.csv", "solution.pvd",
-            "solution.xdmf", "nodal.xdmf", "convergence.csv",
-            ".hemicontact.lock"})
+      for (const char *name : {"steps.csv",
+                               "probes.csv",
+                               "performance.csv",
+                               "solution.pvd",
+                               "solution.xdmf",
+                               "nodal.xdmf",
+                               "convergence.csv",
+                               ".hemicontact.lock"})
         {
           const fs::file_status s = fs::status(directory / name, ec);
           if (fs::exists(s) && !fs::is_regular_file(s))
@@ -184,12 +188,12 @@ namespace hemicontact
   std::string
   write_failure(const int error_number)
   {
-    return error_number != 0 ? std::strerror(error_number) :
-                               "the write failed";
+    return error_number != 0 ? std::strerror(error_number) : "the write failed";
   }
 
   std::string
-  append_complete(std::ofstream &file, const std::string &path,
+  append_complete(std::ofstream     &file,
+                  const std::string &path,
                   const std::string &text)
   {
     const std::streampos before = file.tellp();
@@ -202,7 +206,8 @@ namespace hemicontact
     file.close();
     std::error_code ec;
     if (before >= 0)
-      std::filesystem::resize_file(path, static_cast<std::uintmax_t>(before),
+      std::filesystem::resize_file(path,
+                                   static_cast<std::uintmax_t>(before),
                                    ec);
     return reason(path, error_number);
   }
@@ -257,9 +262,9 @@ namespace hemicontact
               "' has no complete header line: the table cannot be "
               "continued. Delete it, or start a new run without --resume.");
 
-    const std::size_t n_fields = split_fields(lines[0]).size();
-    std::string       kept     = lines[0] + "\n";
-    std::string       warning;
+    const std::size_t  n_fields = split_fields(lines[0]).size();
+    std::string        kept     = lines[0] + "\n";
+    std::string        warning;
     unsigned long long last_kept = 0;
     for (std::size_t i = 1; i < lines.size(); ++i)
       {
@@ -313,8 +318,7 @@ namespace hemicontact
       {
         std::error_code removal;
         fs::remove(aside, removal);
-        throw OutputError("cannot write '" + path + "': " + ec.message() +
-                          ".");
+        throw OutputError("cannot write '" + path + "': " + ec.message() + ".");
       }
     return warning;
   }
@@ -348,9 +352,9 @@ namespace hemicontact
   EarlierOutput::set_aside(const std::string &output_directory,
                            const bool         resume)
   {
-    const fs::path dir    = output_directory;
-    const fs::path backup = dir / "earlier_run";
-    const fs::path moving = dir / "earlier_run.tmp"; // a move in progress
+    const fs::path  dir    = output_directory;
+    const fs::path  backup = dir / "earlier_run";
+    const fs::path  moving = dir / "earlier_run.tmp"; // a move in progress
     std::error_code ec;
     fs::remove_all(dir / "earlier_run.old", ec); // a deletion cut short
     const bool has_backup = fs::exists(backup) || fs::exists(moving);
@@ -359,7 +363,7 @@ namespace hemicontact
         // the checkpoints are those of the run in the backup
         if (has_backup)
           {
-            directory = output_directory;
+            directory               = output_directory;
             const std::string error = restore();
             if (!error.empty())
               throw OutputError(error);
@@ -419,7 +423,7 @@ namespace hemicontact
     const fs::path dir    = directory;
     const fs::path moving = dir / "earlier_run.tmp";
     directory.clear();
-    std::string error = remove_files(run_files(dir));
+    std::string     error = remove_files(run_files(dir));
     std::error_code ec;
     if (error.empty() && fs::exists(dir / "earlier_run"))
       {

@@ -28,16 +28,16 @@ namespace hemicontact
   template <int dim>
   void
   write_performance_summary(const ContactProblem<dim> &problem,
-                            const Parameters &         parameters,
-                            const TimerOutput &        timer,
-                            const RunTotals &          totals,
+                            const Parameters          &parameters,
+                            const TimerOutput         &timer,
+                            const RunTotals           &totals,
                             const double               run_wall_seconds,
                             const unsigned int         solution_writes,
                             MPI_Comm                   mpi_communicator)
   {
-    const typename ContactProblem<dim>::State s = problem.state();
-    const DoFHandler<dim> &                   dof_handler = s.dof_handler;
-    const Discretization<dim> &discretization = s.discretization;
+    const typename ContactProblem<dim>::State s              = problem.state();
+    const DoFHandler<dim>                    &dof_handler    = s.dof_handler;
+    const Discretization<dim>                &discretization = s.discretization;
     // the linear solver of the run (its parameters; it keeps no state)
     LinearSolver linear_solver(parameters.linear_solver, mpi_communicator);
     // the reference cost: one solve of the step matrix K0 = rho/k M + A with
@@ -56,9 +56,8 @@ namespace hemicontact
     if (parameters.linear_solver.type == LinearSolverType::direct)
       linear_solver.solve_direct(s.step_matrix, x, b);
     else
-      reference_iterations =
-        linear_solver.solve(s.step_matrix, reference.step_amg(s.step_matrix),
-                            x, b);
+      reference_iterations = linear_solver.solve(
+        s.step_matrix, reference.step_amg(s.step_matrix), x, b);
     solve_timer.stop();
     const double reference_total = solve_timer.wall_time();
     const double reference_setup =
@@ -76,20 +75,25 @@ namespace hemicontact
     const double peak_bytes =
       Utilities::MPI::sum(peak_resident_bytes(), mpi_communicator);
     // the mesh and the dof numbering on the rank that holds the most
-    const double mesh_bytes = Utilities::MPI::max(
-      static_cast<double>(discretization.triangulation->memory_consumption() +
-                          dof_handler.memory_consumption()),
-      mpi_communicator);
-    const double steps      = std::max(totals.steps, 1u);
-    const double step_wall  = Utilities::MPI::max(totals.step_wall_seconds,
-                                                 mpi_communicator) /
-                             steps;
+    const double mesh_bytes =
+      Utilities::MPI::max(static_cast<double>(
+                            discretization.triangulation->memory_consumption() +
+                            dof_handler.memory_consumption()),
+                          mpi_communicator);
+    const double steps = std::max(totals.steps, 1u);
+    const double step_wall =
+      Utilities::MPI::max(totals.step_wall_seconds, mpi_communicator) / steps;
 
     // every collective reduction before rank 0 writes alone
     std::map<std::string, double> times;
-    for (const char *name :
-         {"setup", "assembly: load", "active set update", "linear solve", "convexity check",
-          "line search", "energy balance", "output"})
+    for (const char *name : {"setup",
+                             "assembly: load",
+                             "active set update",
+                             "linear solve",
+                             "convexity check",
+                             "line search",
+                             "energy balance",
+                             "output"})
       times[name] = section(name);
     const double run_wall =
       Utilities::MPI::max(run_wall_seconds, mpi_communicator);
@@ -101,8 +105,8 @@ namespace hemicontact
         << "mpi_ranks," << Utilities::MPI::n_mpi_processes(mpi_communicator)
         << "\n"
         << "n_dofs," << dof_handler.n_dofs() << "\n"
-        << "n_cells,"
-        << discretization.triangulation->n_global_active_cells() << "\n"
+        << "n_cells," << discretization.triangulation->n_global_active_cells()
+        << "\n"
         << "steps," << totals.steps << "\n"
         << "newton_mean," << totals.newton_iterations / steps << "\n"
         << "newton_max," << totals.max_newton << "\n"
@@ -121,7 +125,8 @@ namespace hemicontact
         << "time_active_set_update," << times.at("active set update") << "\n"
         << "time_preconditioner_setup," << run_setup_amg << "\n"
         << "time_linear_solve_without_setup,"
-        << times.at("linear solve") + times.at("convexity check") - run_setup_amg
+        << times.at("linear solve") + times.at("convexity check") -
+             run_setup_amg
         << "\n"
         << "time_line_search," << times.at("line search") << "\n"
         << "time_energy," << times.at("energy balance") << "\n"
@@ -133,10 +138,14 @@ namespace hemicontact
         << "mesh_bytes_max_rank," << mesh_bytes << "\n";
   }
 
-#define HEMICONTACT_INSTANTIATE(dim)                                           \
-  template void write_performance_summary<dim>(                               \
-    const ContactProblem<dim> &, const Parameters &, const TimerOutput &,      \
-    const RunTotals &, double, unsigned int, MPI_Comm);
+#define HEMICONTACT_INSTANTIATE(dim)                                        \
+  template void write_performance_summary<dim>(const ContactProblem<dim> &, \
+                                               const Parameters &,          \
+                                               const TimerOutput &,         \
+                                               const RunTotals &,           \
+                                               double,                      \
+                                               unsigned int,                \
+                                               MPI_Comm);
 
   HEMICONTACT_INSTANTIATE(2)
   HEMICONTACT_INSTANTIATE(3)

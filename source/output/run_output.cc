@@ -60,7 +60,8 @@ namespace hemicontact
           require(coordinates.size() == dim,
                   "output: 'probe points' entry '" + text + "' needs " +
                     std::to_string(dim) + " coordinates.");
-          require(std::all_of(coordinates.begin(), coordinates.end(),
+          require(std::all_of(coordinates.begin(),
+                              coordinates.end(),
                               [](const double c) { return std::isfinite(c); }),
                   "output: 'probe points' entry '" + text +
                     "' has a coordinate that is not a finite number.");
@@ -74,9 +75,9 @@ namespace hemicontact
   } // namespace
 
   template <int dim>
-  RunOutput<dim>::RunOutput(const Parameters &  parameters,
+  RunOutput<dim>::RunOutput(const Parameters   &parameters,
                             MPI_Comm            comm,
-                            TimerOutput &       timer,
+                            TimerOutput        &timer,
                             ConditionalOStream &pcout)
     : parameters(parameters)
     , mpi_communicator(comm)
@@ -84,8 +85,10 @@ namespace hemicontact
     , pcout(pcout)
   {
     if (parameters.output.precision == OutputPrecision::double_precision)
-      nodal_writer = std::make_unique<NodalHdf5Writer<dim>>(
-        parameters.output.directory, "nodal", comm);
+      nodal_writer =
+        std::make_unique<NodalHdf5Writer<dim>>(parameters.output.directory,
+                                               "nodal",
+                                               comm);
   }
 
   template <int dim>
@@ -101,7 +104,7 @@ namespace hemicontact
                 "output: a probe point lies outside the mesh.");
       }
 
-    const std::string &dir  = parameters.output.directory;
+    const std::string &dir = parameters.output.directory;
     std::string        error;
     // an earlier run's files that cannot be set aside, a table that cannot
     // be continued
@@ -203,11 +206,14 @@ namespace hemicontact
   RunOutput<dim>::print_start(const ContactProblem<dim> &problem) const
   {
     const typename ContactProblem<dim>::State s = problem.state();
-    const unsigned int n_nodes = Utilities::MPI::sum(
-      static_cast<unsigned int>(std::count_if(
-        s.contact_nodes.begin(), s.contact_nodes.end(),
-        [](const ContactNode<dim> &n) { return n.locally_owned; })),
-      mpi_communicator);
+    const unsigned int                        n_nodes =
+      Utilities::MPI::sum(static_cast<unsigned int>(
+                            std::count_if(s.contact_nodes.begin(),
+                                          s.contact_nodes.end(),
+                                          [](const ContactNode<dim> &n) {
+                                            return n.locally_owned;
+                                          })),
+                          mpi_communicator);
     pcout << "hemicontact: " << dim << "D, "
           << s.discretization.triangulation->n_global_active_cells()
           << " cells, " << s.dof_handler.n_dofs() << " dofs, " << n_nodes
@@ -223,22 +229,25 @@ namespace hemicontact
             << " MPI rank(s)";
     pcout << std::endl;
     if (s.convexity.with_friction)
-      pcout << "convexity: alpha_nu = " << s.normal_law.relaxed_monotonicity_constant()
-            << ", alpha_tau <= " << std::setprecision(3) << s.convexity.largest_alpha_tau
+      pcout << "convexity: alpha_nu = "
+            << s.normal_law.relaxed_monotonicity_constant()
+            << ", alpha_tau <= " << std::setprecision(3)
+            << s.convexity.largest_alpha_tau
             << ", smallest eigenvalue against them (estimated) = "
             << s.convexity.bound << " -> "
             << (s.convexity.bound > 1 ? "each step is strongly convex" :
-                                      "NOT guaranteed convex")
+                                        "NOT guaranteed convex")
             << std::endl;
     else if (s.normal_law.relaxed_monotonicity_constant() > 0)
-      pcout << "convexity: alpha = " << s.normal_law.relaxed_monotonicity_constant()
+      pcout << "convexity: alpha = "
+            << s.normal_law.relaxed_monotonicity_constant()
             << ", bound (estimated) = " << std::setprecision(3)
             << s.convexity.bound << " -> "
-            << (s.normal_law.relaxed_monotonicity_constant() < s.convexity.bound ?
+            << (s.normal_law.relaxed_monotonicity_constant() <
+                    s.convexity.bound ?
                   "each step is strongly convex" :
                   "NOT guaranteed convex")
             << std::endl;
-
   }
 
   template <int dim>
@@ -282,9 +291,10 @@ namespace hemicontact
     if (probe_points.empty())
       return;
     const typename ContactProblem<dim>::State s = problem.state();
-    TrilinosWrappers::MPI::Vector w(s.locally_owned_dofs,
-                                    s.locally_relevant_dofs, mpi_communicator);
-    TrilinosWrappers::MPI::Vector u(w);
+    TrilinosWrappers::MPI::Vector             w(s.locally_owned_dofs,
+                                    s.locally_relevant_dofs,
+                                    mpi_communicator);
+    TrilinosWrappers::MPI::Vector             u(w);
     w = s.velocity;
     u = s.displacement;
     const auto w_values =
@@ -316,7 +326,7 @@ namespace hemicontact
 
   template <int dim>
   void
-  RunOutput<dim>::write_step(const StepStatistics &     stats,
+  RunOutput<dim>::write_step(const StepStatistics      &stats,
                              const ContactProblem<dim> &problem)
   {
     write_step_row(stats, problem);
@@ -325,7 +335,7 @@ namespace hemicontact
 
   template <int dim>
   void
-  RunOutput<dim>::write_step_row(const StepStatistics &     s,
+  RunOutput<dim>::write_step_row(const StepStatistics      &s,
                                  const ContactProblem<dim> &problem)
   {
     std::string error;
@@ -334,8 +344,8 @@ namespace hemicontact
         const EnergyBalance &e = problem.state().energy;
         std::ostringstream   row;
         row << std::setprecision(12) << s.step << "," << s.time << ","
-            << s.n_cells << "," << s.n_dofs << "," << s.newton_iterations
-            << "," << s.linear_iterations << "," << s.n_separating << ","
+            << s.n_cells << "," << s.n_dofs << "," << s.newton_iterations << ","
+            << s.linear_iterations << "," << s.n_separating << ","
             << s.n_normal_stick << "," << s.n_damped << "," << s.n_stick << ","
             << s.n_slip << "," << s.residual << "," << e.kinetic << ","
             << e.elastic << "," << e.viscous_dissipation << ","
@@ -344,10 +354,9 @@ namespace hemicontact
             << e.defect() << "," << e.relative_defect() << ","
             << s.line_search_reductions << "," << s.wall_seconds << ","
             << (s.adapted ? 1 : 0) << "," << s.kinetic_before_adaptation << ","
-            << s.elastic_before_adaptation << ","
-            << s.kinetic_after_adaptation << "," << s.elastic_after_adaptation
-            << "," << e.transfer_change << "," << s.time_step_halvings
-            << "\n";
+            << s.elastic_before_adaptation << "," << s.kinetic_after_adaptation
+            << "," << s.elastic_after_adaptation << "," << e.transfer_change
+            << "," << s.time_step_halvings << "\n";
         error = append_complete(steps_file,
                                 parameters.output.directory + "/steps.csv",
                                 row.str());
@@ -364,11 +373,11 @@ namespace hemicontact
 
   template <int dim>
   void
-  RunOutput<dim>::print_step(const StepStatistics &     s,
+  RunOutput<dim>::print_step(const StepStatistics      &s,
                              const ContactProblem<dim> &problem) const
   {
-    const typename ContactProblem<dim>::State state = problem.state();
-    const EnergyBalance &                     energy = state.energy;
+    const typename ContactProblem<dim>::State state   = problem.state();
+    const EnergyBalance                      &energy  = state.energy;
     const unsigned int                        n_steps = state.n_steps;
     std::ostringstream                        line;
     if (parameters.output.terminal == TerminalOutput::test)
@@ -385,18 +394,17 @@ namespace hemicontact
           line << "\n  adapted: "
                << state.discretization.triangulation->n_global_active_cells()
                << " cells, " << state.dof_handler.n_dofs()
-               << " dofs; energy before " << s.kinetic_before_adaptation +
-                                               s.elastic_before_adaptation
-               << ", after " << s.kinetic_after_adaptation +
-                                  s.elastic_after_adaptation;
+               << " dofs; energy before "
+               << s.kinetic_before_adaptation + s.elastic_before_adaptation
+               << ", after "
+               << s.kinetic_after_adaptation + s.elastic_after_adaptation;
       }
     else
       {
         // the time left, from the mean wall time of this run's steps
-        const double elapsed =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                        loop_start)
-            .count();
+        const double elapsed = std::chrono::duration<double>(
+                                 std::chrono::steady_clock::now() - loop_start)
+                                 .count();
         const unsigned int done = s.step - loop_start_step;
         const double left = done > 0 ? elapsed / done * (n_steps - s.step) : 0;
         const auto   seconds = static_cast<unsigned long>(std::lround(left));
@@ -407,16 +415,16 @@ namespace hemicontact
         else
           eta << seconds / 60 << "m" << std::setw(2) << std::setfill('0')
               << seconds % 60 << "s";
-        line << "step " << std::setw(5) << s.step << "/" << n_steps
-             << "  left " << std::setw(6) << eta.str() << "  t = " << std::fixed
+        line << "step " << std::setw(5) << s.step << "/" << n_steps << "  left "
+             << std::setw(6) << eta.str() << "  t = " << std::fixed
              << std::setprecision(4) << s.time << "  newton " << std::setw(2)
              << s.newton_iterations << "  krylov " << std::setw(4)
              << s.linear_iterations << "  sep/stick/damped " << s.n_separating
-             << "/" << s.n_normal_stick << "/" << s.n_damped
-             << "  stick/slip " << s.n_stick << "/" << s.n_slip
-             << std::scientific << std::setprecision(2) << "  residual "
-             << s.residual << "  energy " << energy.total_energy()
-             << "  defect " << energy.relative_defect();
+             << "/" << s.n_normal_stick << "/" << s.n_damped << "  stick/slip "
+             << s.n_stick << "/" << s.n_slip << std::scientific
+             << std::setprecision(2) << "  residual " << s.residual
+             << "  energy " << energy.total_energy() << "  defect "
+             << energy.relative_defect();
       }
     if (parameters.output.terminal != TerminalOutput::quiet)
       pcout << line.str() << std::endl;
@@ -425,21 +433,25 @@ namespace hemicontact
   template <int dim>
   void
   RunOutput<dim>::finish(const ContactProblem<dim> &problem,
-                         const RunTotals &          totals,
+                         const RunTotals           &totals,
                          const double               run_wall_seconds)
   {
     const typename ContactProblem<dim>::State s = problem.state();
     pcout << "done: " << s.n_steps << " steps, Newton iterations per step mean "
           << std::fixed << std::setprecision(2)
           << double(totals.newton_iterations) / std::max(totals.steps, 1u)
-          << " max " << totals.max_newton
-          << ", energy defect < 1e-7 relative: "
+          << " max " << totals.max_newton << ", energy defect < 1e-7 relative: "
           << (s.energy.relative_defect() < 1e-7 ? "yes" : "no") << std::endl;
     if (parameters.output.performance_summary)
-      write_performance_summary(problem, parameters, timer, totals,
-                                run_wall_seconds, records.size(),
+      write_performance_summary(problem,
+                                parameters,
+                                timer,
+                                totals,
+                                run_wall_seconds,
+                                records.size(),
                                 mpi_communicator);
-    if (parameters.output.timing_summary && parameters.output.terminal != TerminalOutput::test)
+    if (parameters.output.timing_summary &&
+        parameters.output.terminal != TerminalOutput::test)
       timer.print_wall_time_statistics(mpi_communicator);
   }
 

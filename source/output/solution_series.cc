@@ -19,17 +19,20 @@ namespace hemicontact
     /** Stress components (cell averages) and von Mises, for DataOut. */
     template <int dim>
     std::vector<Vector<float>>
-    cell_stresses(const DoFHandler<dim> &dof_handler, const Mapping<dim> &mapping,
-                  const Quadrature<dim> &                quadrature,
-                  const KelvinVoigtMaterial<dim> &       material,
-                  const TrilinosWrappers::MPI::Vector &  w,
-                  const TrilinosWrappers::MPI::Vector &  u)
+    cell_stresses(const DoFHandler<dim>               &dof_handler,
+                  const Mapping<dim>                  &mapping,
+                  const Quadrature<dim>               &quadrature,
+                  const KelvinVoigtMaterial<dim>      &material,
+                  const TrilinosWrappers::MPI::Vector &w,
+                  const TrilinosWrappers::MPI::Vector &u)
     {
-      const unsigned int n_components = dim * (dim + 1) / 2 + 1;
+      const unsigned int         n_components = dim * (dim + 1) / 2 + 1;
       std::vector<Vector<float>> result(
         n_components,
         Vector<float>(dof_handler.get_triangulation().n_active_cells()));
-      FEValues<dim> fe_values(mapping, dof_handler.get_fe(), quadrature,
+      FEValues<dim>                        fe_values(mapping,
+                              dof_handler.get_fe(),
+                              quadrature,
                               update_gradients | update_JxW_values);
       const FEValuesExtractors::Vector     v(0);
       std::vector<SymmetricTensor<2, dim>> eps_w(quadrature.size()),
@@ -67,8 +70,7 @@ namespace hemicontact
       return;
     start_solution_write(problem);
     TimerOutput::Scope t(timer, "output");
-    write_contact_table(problem, parameters.output.directory,
-                        mpi_communicator);
+    write_contact_table(problem, parameters.output.directory, mpi_communicator);
     if (nodal_writer)
       {
         const typename ContactProblem<dim>::State state = problem.state();
@@ -89,17 +91,18 @@ namespace hemicontact
     finish_solution_output();
     TimerOutput::Scope t(timer, "output");
 
-    const typename ContactProblem<dim>::State state = problem.state();
-    const DoFHandler<dim> &dof_handler = state.dof_handler;
-    const Discretization<dim> &discretization = state.discretization;
-    const KelvinVoigtMaterial<dim> &material = state.material;
+    const typename ContactProblem<dim>::State state       = problem.state();
+    const DoFHandler<dim>                    &dof_handler = state.dof_handler;
+    const Discretization<dim>      &discretization = state.discretization;
+    const KelvinVoigtMaterial<dim> &material       = state.material;
 
     // copies of what the write reads, so that the run can go on meanwhile
     SolutionSnapshot &snapshot = solution_snapshot;
     snapshot.step              = state.step_number;
     snapshot.time              = state.time;
     snapshot.velocity.reinit(state.locally_owned_dofs,
-                             state.locally_relevant_dofs, mpi_communicator);
+                             state.locally_relevant_dofs,
+                             mpi_communicator);
     snapshot.displacement.reinit(snapshot.velocity);
     snapshot.velocity     = state.velocity;
     snapshot.displacement = state.displacement;
@@ -122,26 +125,32 @@ namespace hemicontact
     branch_owned.compress(VectorOperation::insert);
     branch = branch_owned;
 
-    snapshot.data_out = std::make_unique<DataOut<dim>>();
+    snapshot.data_out      = std::make_unique<DataOut<dim>>();
     DataOut<dim> &data_out = *snapshot.data_out;
     data_out.attach_dof_handler(dof_handler);
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      vector_field(dim, DataComponentInterpretation::component_is_part_of_vector);
+      vector_field(dim,
+                   DataComponentInterpretation::component_is_part_of_vector);
     data_out.add_data_vector(snapshot.velocity,
                              std::vector<std::string>(dim, "velocity"),
-                             DataOut<dim>::type_dof_data, vector_field);
+                             DataOut<dim>::type_dof_data,
+                             vector_field);
     data_out.add_data_vector(snapshot.displacement,
                              std::vector<std::string>(dim, "displacement"),
-                             DataOut<dim>::type_dof_data, vector_field);
+                             DataOut<dim>::type_dof_data,
+                             vector_field);
     data_out.add_data_vector(traction,
                              std::vector<std::string>(dim, "contact_traction"),
-                             DataOut<dim>::type_dof_data, vector_field);
+                             DataOut<dim>::type_dof_data,
+                             vector_field);
     std::vector<std::string> branch_names = {"normal_branch",
                                              "tangential_branch"};
     if (dim == 3)
       branch_names.push_back("contact_node");
     data_out.add_data_vector(
-      branch, branch_names, DataOut<dim>::type_dof_data,
+      branch,
+      branch_names,
+      DataOut<dim>::type_dof_data,
       std::vector<DataComponentInterpretation::DataComponentInterpretation>(
         dim, DataComponentInterpretation::component_is_scalar));
 
@@ -162,9 +171,10 @@ namespace hemicontact
 
     // the job, on the writer's thread and without MPI: stresses, patches
     // and the VTU files, or the data in HDF5 layout
-    const bool        hdf5 = parameters.output.format == SolutionFormat::hdf5;
-    const std::string directory = parameters.output.directory + "/";
-    const unsigned int rank = Utilities::MPI::this_mpi_process(mpi_communicator);
+    const bool         hdf5 = parameters.output.format == SolutionFormat::hdf5;
+    const std::string  directory = parameters.output.directory + "/";
+    const unsigned int rank =
+      Utilities::MPI::this_mpi_process(mpi_communicator);
     const unsigned int n_ranks =
       Utilities::MPI::n_mpi_processes(mpi_communicator);
     const Quadrature<dim> quadrature = discretization.cell_quadrature(2);
@@ -178,26 +188,34 @@ namespace hemicontact
     snapshot.reference_cell = discretization.fe->reference_cell();
     // the job reads the problem's mesh, dofs and material, which stay
     // unchanged until finish_solution_output()
-    auto job = [this, dofs = &dof_handler, mapping = &*discretization.mapping,
-                material = &material, hdf5, directory, rank, n_ranks,
-                quadrature, stem,
+    auto job = [this,
+                dofs     = &dof_handler,
+                mapping  = &*discretization.mapping,
+                material = &material,
+                hdf5,
+                directory,
+                rank,
+                n_ranks,
+                quadrature,
+                stem,
                 cell_data = std::move(cell_data)]() -> std::string {
-      const SolutionSnapshot &s        = solution_snapshot;
-      DataOut<dim> &          data_out = *s.data_out;
-      const std::vector<Vector<float>> stresses =
-        cell_stresses(*dofs, *mapping, quadrature, *material, s.velocity,
-                      s.displacement);
-      const char * xyz[] = {"x", "y", "z"};
+      const SolutionSnapshot          &s        = solution_snapshot;
+      DataOut<dim>                    &data_out = *s.data_out;
+      const std::vector<Vector<float>> stresses = cell_stresses(
+        *dofs, *mapping, quadrature, *material, s.velocity, s.displacement);
+      const char  *xyz[] = {"x", "y", "z"};
       unsigned int c     = 0;
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = i; j < dim; ++j)
           data_out.add_data_vector(stresses[c++],
                                    std::string("stress_") + xyz[i] + xyz[j],
                                    DataOut<dim>::type_cell_data);
-      data_out.add_data_vector(stresses[c], "von_mises",
+      data_out.add_data_vector(stresses[c],
+                               "von_mises",
                                DataOut<dim>::type_cell_data);
       for (const auto &field : cell_data)
-        data_out.add_data_vector(field.second, field.first,
+        data_out.add_data_vector(field.second,
+                                 field.first,
                                  DataOut<dim>::type_cell_data);
       data_out.build_patches(*mapping);
 
@@ -217,7 +235,7 @@ namespace hemicontact
           data_out.set_flags(flags);
           // the files write_vtu_with_pvtu_record() writes, without its MPI
           const unsigned int digits = Utilities::needed_digits(n_ranks - 1);
-          auto piece = [&](const unsigned int r) {
+          auto               piece  = [&](const unsigned int r) {
             return stem + "." + Utilities::int_to_string(r, digits) + ".vtu";
           };
           std::ofstream vtu(directory + piece(rank));
@@ -253,7 +271,7 @@ namespace hemicontact
     if (!solution_writer.pending())
       return;
     TimerOutput::Scope t(timer, "output");
-    const std::string prefix = "cannot write the solution files of step " +
+    const std::string  prefix = "cannot write the solution files of step " +
                                std::to_string(solution_snapshot.step) +
                                " in '" + parameters.output.directory + "': ";
     std::string error = solution_writer.wait();
@@ -264,7 +282,7 @@ namespace hemicontact
     // HDF5: the collective write of the data the job arranged
     if (parameters.output.format == SolutionFormat::hdf5)
       {
-        const DataOut<dim> &              data_out = *solution_snapshot.data_out;
+        const DataOut<dim> &data_out = *solution_snapshot.data_out;
         const DataOutBase::DataOutFilter &filter =
           *solution_snapshot.hdf5_filter;
         const std::string h5 = pending_record.file;
@@ -272,12 +290,13 @@ namespace hemicontact
         try
           {
             data_out.write_hdf5_parallel(filter,
-                                         parameters.output.directory + "/" +
-                                           h5,
+                                         parameters.output.directory + "/" + h5,
                                          mpi_communicator);
             pending_record.xdmf_grid =
               data_out
-                .create_xdmf_entry(filter, h5, pending_record.time,
+                .create_xdmf_entry(filter,
+                                   h5,
+                                   pending_record.time,
                                    mpi_communicator)
                 .get_xdmf_content(3, solution_snapshot.reference_cell);
           }
@@ -317,12 +336,12 @@ namespace hemicontact
                 files.emplace_back(record.time, record.file);
             DataOutBase::write_pvd_record(series, files);
           }
-        error = write_atomically(
-          parameters.output.directory + "/" +
-            (parameters.output.format == SolutionFormat::hdf5 ?
-               "solution.xdmf" :
-               "solution.pvd"),
-          series.str());
+        error =
+          write_atomically(parameters.output.directory + "/" +
+                             (parameters.output.format == SolutionFormat::hdf5 ?
+                                "solution.xdmf" :
+                                "solution.pvd"),
+                           series.str());
         if (!error.empty())
           records.pop_back();
       }

@@ -4,8 +4,8 @@
 #include <deal.II/grid/grid_refinement.h>
 #include <deal.II/numerics/error_estimator.h>
 
-#include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/mesh/marking.h>
+#include <hemicontact/problem/contact_problem.h>
 
 #include <cmath>
 #include <limits>
@@ -21,13 +21,21 @@ namespace hemicontact
     const AdaptivityParameters &settings = parameters.adaptivity;
     if (settings.indicator == RefinementIndicator::residual)
       return residual_indicators();
-    TrilinosWrappers::MPI::Vector w(locally_owned_dofs, locally_relevant_dofs,
-                                   mpi_communicator);
+    TrilinosWrappers::MPI::Vector w(locally_owned_dofs,
+                                    locally_relevant_dofs,
+                                    mpi_communicator);
     w = velocity;
     Vector<float> indicators(discretization.triangulation->n_active_cells());
     KellyErrorEstimator<dim>::estimate(
-      *discretization.mapping, dof_handler, discretization.face_quadrature(2),
-      {}, w, indicators, ComponentMask(), nullptr, numbers::invalid_unsigned_int,
+      *discretization.mapping,
+      dof_handler,
+      discretization.face_quadrature(2),
+      {},
+      w,
+      indicators,
+      ComponentMask(),
+      nullptr,
+      numbers::invalid_unsigned_int,
       discretization.triangulation->locally_owned_subdomain());
     if (settings.indicator != RefinementIndicator::kelly_contact)
       return indicators;
@@ -47,7 +55,7 @@ namespace hemicontact
           if (cell->face(f)->at_boundary() &&
               contact_ids.count(cell->face(f)->boundary_id()))
             {
-              const auto &       face = cell->face(f);
+              const auto        &face  = cell->face(f);
               double             jumps = 0;
               const unsigned int n     = face->n_vertices();
               for (unsigned int a = 0; a < n; ++a)
@@ -55,7 +63,8 @@ namespace hemicontact
                   {
                     const auto da = face->vertex_dof_index(a, 0);
                     const auto db = face->vertex_dof_index(b, 0);
-                    if (!is_contact_node.count(da) || !is_contact_node.count(db))
+                    if (!is_contact_node.count(da) ||
+                        !is_contact_node.count(db))
                       continue;
                     for (unsigned int c = 0; c < dim; ++c)
                       jumps += std::pow(t[face->vertex_dof_index(a, c)] -
@@ -82,8 +91,8 @@ namespace hemicontact
     AssertThrow(tria != nullptr,
                 ExcMessage("adaptivity needs a p4est (hypercube) mesh"));
 
-    std::tie(stats.kinetic_before_adaptation,
-             stats.elastic_before_adaptation) = stored_energy();
+    std::tie(stats.kinetic_before_adaptation, stats.elastic_before_adaptation) =
+      stored_energy();
 
     // mark: thresholds from all indicators, sorted, so the same on any
     // number of ranks (see marking_thresholds())
@@ -109,8 +118,10 @@ namespace hemicontact
           n_cells, max_cells, refine_fraction, coarsen_fraction);
     else if (n_cells >= max_cells)
       refine_fraction = 0;
-    const MarkingThresholds thresholds = marking_thresholds(
-      std::move(all), settings.strategy, refine_fraction, coarsen_fraction);
+    const MarkingThresholds thresholds = marking_thresholds(std::move(all),
+                                                            settings.strategy,
+                                                            refine_fraction,
+                                                            coarsen_fraction);
     for (const auto &cell : tria->active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -129,8 +140,9 @@ namespace hemicontact
     // 'projection' moves u_{n+1} = u_n + k w_n instead of u_n and keeps the
     // functionals of coarsened cells (state_projection.cc)
     const bool project = settings.state_transfer == StateTransfer::projection;
-    TrilinosWrappers::MPI::Vector w(locally_owned_dofs, locally_relevant_dofs,
-                                   mpi_communicator);
+    TrilinosWrappers::MPI::Vector w(locally_owned_dofs,
+                                    locally_relevant_dofs,
+                                    mpi_communicator);
     TrilinosWrappers::MPI::Vector u(w);
     w = velocity;
     u = displacement;
@@ -169,7 +181,7 @@ namespace hemicontact
 
     std::tie(stats.kinetic_after_adaptation, stats.elastic_after_adaptation) =
       stored_energy();
-    stats.adapted = true;
+    stats.adapted  = true;
     energy.kinetic = stats.kinetic_after_adaptation;
     energy.elastic = stats.elastic_after_adaptation;
     energy.transfer_change +=
@@ -179,8 +191,12 @@ namespace hemicontact
     check_time_step_stability();
   }
 
-  template Vector<float> ContactProblem<2>::refinement_indicators() const;
-  template Vector<float> ContactProblem<3>::refinement_indicators() const;
-  template void          ContactProblem<2>::adapt_mesh(StepStatistics &);
-  template void          ContactProblem<3>::adapt_mesh(StepStatistics &);
+  template Vector<float>
+  ContactProblem<2>::refinement_indicators() const;
+  template Vector<float>
+  ContactProblem<3>::refinement_indicators() const;
+  template void
+  ContactProblem<2>::adapt_mesh(StepStatistics &);
+  template void
+  ContactProblem<3>::adapt_mesh(StepStatistics &);
 } // namespace hemicontact

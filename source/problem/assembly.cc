@@ -4,8 +4,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/problem/contact_problem.h>
 
 #include <cmath>
 #include <set>
@@ -28,11 +28,12 @@ namespace hemicontact
     const StepMatrixCoefficients c = scheme.step_matrix(time_step);
 
     const FiniteElement<dim> &fe = *discretization.fe;
-    FEValues<dim> fe_values(*discretization.mapping, fe,
+    FEValues<dim>             fe_values(*discretization.mapping,
+                            fe,
                             discretization.cell_quadrature(2),
                             update_values | update_gradients |
                               update_JxW_values);
-    const unsigned int n = fe.n_dofs_per_cell();
+    const unsigned int        n = fe.n_dofs_per_cell();
     FullMatrix<double> cell_mass(n, n), cell_viscous(n, n), cell_elastic(n, n),
       cell_step(n, n);
     std::vector<types::global_dof_index> dofs(n);
@@ -50,13 +51,17 @@ namespace hemicontact
           if (c.elastic != 0.)
             cell_step.add(c.elastic, cell_elastic);
           cell->get_dof_indices(dofs);
-          base_constraints.distribute_local_to_global(cell_mass, dofs,
+          base_constraints.distribute_local_to_global(cell_mass,
+                                                      dofs,
                                                       mass_matrix);
-          base_constraints.distribute_local_to_global(cell_step, dofs,
+          base_constraints.distribute_local_to_global(cell_step,
+                                                      dofs,
                                                       step_matrix);
-          base_constraints.distribute_local_to_global(cell_elastic, dofs,
+          base_constraints.distribute_local_to_global(cell_elastic,
+                                                      dofs,
                                                       elastic_matrix);
-          base_constraints.distribute_local_to_global(cell_viscous, dofs,
+          base_constraints.distribute_local_to_global(cell_viscous,
+                                                      dofs,
                                                       viscous_matrix);
         }
     mass_matrix.compress(VectorOperation::add);
@@ -68,18 +73,18 @@ namespace hemicontact
   template <int dim>
   void
   ContactProblem<dim>::cell_matrices(const FEValues<dim> &fe_values,
-                                     FullMatrix<double> & mass,
-                                     FullMatrix<double> & viscous,
-                                     FullMatrix<double> & elastic) const
+                                     FullMatrix<double>  &mass,
+                                     FullMatrix<double>  &viscous,
+                                     FullMatrix<double>  &elastic) const
   {
     const FEValuesExtractors::Vector     v(0);
     const unsigned int                   n = fe_values.dofs_per_cell;
     std::vector<SymmetricTensor<2, dim>> eps(n);
     std::vector<Tensor<1, dim>>          phi(n);
     const double                         rho = material.density();
-    mass    = 0;
-    viscous = 0;
-    elastic = 0;
+    mass                                     = 0;
+    viscous                                  = 0;
+    elastic                                  = 0;
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
         for (unsigned int i = 0; i < n; ++i)
@@ -110,19 +115,21 @@ namespace hemicontact
     data.set_time(time);
     load = 0;
 
-    const FiniteElement<dim> &fe = *discretization.fe;
-    FEValues<dim>     fe_values(*discretization.mapping, fe,
+    const FiniteElement<dim>            &fe = *discretization.fe;
+    FEValues<dim>                        fe_values(*discretization.mapping,
+                            fe,
                             discretization.cell_quadrature(3),
                             update_values | update_quadrature_points |
                               update_JxW_values);
-    FEFaceValues<dim> fe_face(*discretization.mapping, fe,
+    FEFaceValues<dim>                    fe_face(*discretization.mapping,
+                              fe,
                               discretization.face_quadrature(3),
                               update_values | update_quadrature_points |
                                 update_normal_vectors | update_JxW_values);
-    const unsigned int n = fe.n_dofs_per_cell();
-    Vector<double>     cell_load(n);
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    Vector<double>                       cell_load(n);
     std::vector<types::global_dof_index> dofs(n);
-    std::vector<Vector<double>> values(fe_values.n_quadrature_points,
+    std::vector<Vector<double>>          values(fe_values.n_quadrature_points,
                                        Vector<double>(dim));
     std::vector<Vector<double>> face_values(fe_face.n_quadrature_points,
                                             Vector<double>(dim));
@@ -139,20 +146,18 @@ namespace hemicontact
     const auto is_zero = [](const Function<dim> *f) {
       return dynamic_cast<const Functions::ZeroFunction<dim> *>(f) != nullptr;
     };
-    const bool body_force = !is_zero(data.body_force.get());
-    const bool surface_traction =
-      !is_zero(data.surface_traction.get()) ||
-      data.surface_traction_with_normal != nullptr;
-    const bool contact_traction =
-      !is_zero(data.contact_traction.get()) ||
-      data.contact_traction_with_normal != nullptr;
+    const bool body_force       = !is_zero(data.body_force.get());
+    const bool surface_traction = !is_zero(data.surface_traction.get()) ||
+                                  data.surface_traction_with_normal != nullptr;
+    const bool contact_traction = !is_zero(data.contact_traction.get()) ||
+                                  data.contact_traction_with_normal != nullptr;
 
     // a value that is not a finite number is reported by name, point and
     // time, on every rank (none may wait for another in compress())
     std::string not_finite;
     const auto  check_finite = [&](const std::vector<Vector<double>> &v,
-                                  const std::vector<Point<dim>> &    points,
-                                  const std::string &                name) {
+                                  const std::vector<Point<dim>>     &points,
+                                  const std::string                 &name) {
       if (!not_finite.empty())
         return;
       for (unsigned int q = 0; q < v.size(); ++q)
@@ -179,12 +184,13 @@ namespace hemicontact
               fe_values.reinit(cell);
               data.body_force->vector_value_list(
                 fe_values.get_quadrature_points(), values);
-              check_finite(values, fe_values.get_quadrature_points(),
+              check_finite(values,
+                           fe_values.get_quadrature_points(),
                            manufactured ?
                              "the body force f0 derived from 'manufactured "
                              "solution/exact displacement'" :
-                             "'body force' = '" +
-                               parameters.data.body_force + "'");
+                             "'body force' = '" + parameters.data.body_force +
+                               "'");
               for (const unsigned int q : fe_values.quadrature_point_indices())
                 for (unsigned int i = 0; i < n; ++i)
                   {
@@ -200,7 +206,7 @@ namespace hemicontact
             if (cell->face(f)->at_boundary())
               {
                 const types::boundary_id id = cell->face(f)->boundary_id();
-                const bool on_traction =
+                const bool               on_traction =
                   surface_traction && traction_ids.count(id) > 0;
                 const bool on_contact =
                   !on_traction && contact_traction && contact_ids.count(id) > 0;
@@ -211,18 +217,19 @@ namespace hemicontact
                                        fe_face.get_quadrature_points(),
                                        fe_face.get_normal_vectors(),
                                        face_values);
-                check_finite(
-                  face_values, fe_face.get_quadrature_points(),
-                  manufactured ?
-                    std::string(on_traction ? "the traction f2" :
-                                              "the contact traction f3") +
-                      " derived from 'manufactured solution/exact "
-                      "displacement' and the multipliers" :
-                    on_traction ?
-                    "'surface traction' = '" +
-                      parameters.data.surface_traction + "'" :
-                    "'contact traction' = '" +
-                      parameters.data.contact_traction + "'");
+                check_finite(face_values,
+                             fe_face.get_quadrature_points(),
+                             manufactured ?
+                               std::string(on_traction ?
+                                             "the traction f2" :
+                                             "the contact traction f3") +
+                                 " derived from 'manufactured solution/exact "
+                                 "displacement' and the multipliers" :
+                             on_traction ?
+                               "'surface traction' = '" +
+                                 parameters.data.surface_traction + "'" :
+                               "'contact traction' = '" +
+                                 parameters.data.contact_traction + "'");
                 for (const unsigned int q : fe_face.quadrature_point_indices())
                   for (unsigned int i = 0; i < n; ++i)
                     {
@@ -252,17 +259,25 @@ namespace hemicontact
     // b = rho/k M w_{n-1} - B u + F_n (without inertia F_n - B u), u the
     // displacement held before the step (doc/theory.md, section 9)
     TrilinosWrappers::MPI::Vector tmp(locally_owned_dofs, mpi_communicator);
-    scheme.step_rhs(mass_matrix, elastic_matrix, old_velocity, displacement,
-                    load, time_step, step_rhs, tmp);
+    scheme.step_rhs(mass_matrix,
+                    elastic_matrix,
+                    old_velocity,
+                    displacement,
+                    load,
+                    time_step,
+                    step_rhs,
+                    tmp);
     base_constraints.set_zero(step_rhs);
   }
 
-#define HEMICONTACT_INSTANTIATE(dim)                                           \
-  template void ContactProblem<dim>::assemble_constant_matrices();            \
-  template void ContactProblem<dim>::cell_matrices(                           \
-    const FEValues<dim> &, FullMatrix<double> &, FullMatrix<double> &,         \
-    FullMatrix<double> &) const;                                               \
-  template void ContactProblem<dim>::assemble_load(const double);             \
+#define HEMICONTACT_INSTANTIATE(dim)                                      \
+  template void ContactProblem<dim>::assemble_constant_matrices();        \
+  template void ContactProblem<dim>::cell_matrices(const FEValues<dim> &, \
+                                                   FullMatrix<double> &,  \
+                                                   FullMatrix<double> &,  \
+                                                   FullMatrix<double> &)  \
+    const;                                                                \
+  template void ContactProblem<dim>::assemble_load(const double);         \
   template void ContactProblem<dim>::assemble_step_rhs();
 
   HEMICONTACT_INSTANTIATE(2)

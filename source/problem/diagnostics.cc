@@ -1,17 +1,16 @@
 #include <deal.II/base/mpi.h>
 
-#include <hemicontact/problem/contact_problem.h>
-#include <hemicontact/model/contact_step.h>
-#include <hemicontact/solver/generalized_eigenvalue.h>
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/model/contact_step.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/solver/generalized_eigenvalue.h>
 
 #include <algorithm>
-#include <tuple>
-
 #include <cmath>
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 namespace hemicontact
 {
@@ -23,8 +22,8 @@ namespace hemicontact
      * examples (3D r2-r4, 2D r6, the 812k-dof box) it agreed with a solve to
      * 1e-7 within 1.5e-7 relative, in 25-90 iterations.
      */
-    constexpr double convexity_residual_tolerance = 1e-4;
-    constexpr unsigned int convexity_max_iterations = 300;
+    constexpr double       convexity_residual_tolerance = 1e-4;
+    constexpr unsigned int convexity_max_iterations     = 300;
     /**
      * A check that finds the step convex with room to spare covers alpha_tau
      * up to this factor above the values met (N grows at most by the same
@@ -41,8 +40,9 @@ namespace hemicontact
     // rho/2 |w_n|^2 and 1/2 a_B(u, u) with u the displacement held after
     // step n: u_{n+1} = u_n + k w_n (left point) or u_n (implicit); no
     // kinetic energy without inertia (doc/theory.md, section 9.3)
-    const TrilinosWrappers::MPI::Vector w = without_constrained(velocity, base_constraints);
-    TrilinosWrappers::MPI::Vector       u_next(displacement);
+    const TrilinosWrappers::MPI::Vector w =
+      without_constrained(velocity, base_constraints);
+    TrilinosWrappers::MPI::Vector u_next(displacement);
     const double offset = scheme.held_displacement_offset(time_step);
     if (offset != 0.)
       u_next.add(offset, velocity);
@@ -58,11 +58,11 @@ namespace hemicontact
   void
   ContactProblem<dim>::update_energy_balance(const bool initial)
   {
-    TimerOutput::Scope t(timer, "energy balance");
+    TimerOutput::Scope                  t(timer, "energy balance");
     const double                        k = time_step;
     const TrilinosWrappers::MPI::Vector w =
       without_constrained(velocity, base_constraints);
-    TrilinosWrappers::MPI::Vector       tmp(locally_owned_dofs, mpi_communicator);
+    TrilinosWrappers::MPI::Vector tmp(locally_owned_dofs, mpi_communicator);
     std::tie(energy.kinetic, energy.elastic) = stored_energy();
     if (initial)
       {
@@ -73,7 +73,7 @@ namespace hemicontact
     // the terms of doc/theory.md, section 9.3: k a_A(w, w) from A, the
     // numerical dissipation rho/2 |w_n - w_{n-1}|^2 -+ k^2/2 a_B(w_n, w_n)
     viscous_matrix.vmult(tmp, w);
-    const double w_A_w = w * tmp;
+    const double                  w_A_w = w * tmp;
     TrilinosWrappers::MPI::Vector dw(velocity);
     dw -= old_velocity;
     dw = without_constrained(dw, base_constraints);
@@ -126,10 +126,12 @@ namespace hemicontact
     for (std::size_t i = 0; i < contact_nodes.size(); ++i)
       {
         convexity.checked_alpha_tau[i] =
-          friction->relaxed_monotonicity_constant(contact_nodes[i].friction_bound);
+          friction->relaxed_monotonicity_constant(
+            contact_nodes[i].friction_bound);
         if (contact_nodes[i].locally_owned)
           convexity.largest_alpha_tau =
-            std::max(convexity.largest_alpha_tau, convexity.checked_alpha_tau[i]);
+            std::max(convexity.largest_alpha_tau,
+                     convexity.checked_alpha_tau[i]);
       }
     convexity.largest_alpha_tau =
       Utilities::MPI::max(convexity.largest_alpha_tau, mpi_communicator);
@@ -143,7 +145,7 @@ namespace hemicontact
 
     const double alpha_nu = convexity.with_friction ? alpha : 1.;
     const auto   apply_n  = [&](const TrilinosWrappers::MPI::Vector &in,
-                             TrilinosWrappers::MPI::Vector &      out) {
+                             TrilinosWrappers::MPI::Vector       &out) {
       out = 0;
       for (std::size_t i = 0; i < contact_nodes.size(); ++i)
         if (const ContactNode<dim> &node = contact_nodes[i]; node.locally_owned)
@@ -151,7 +153,7 @@ namespace hemicontact
             Tensor<1, dim> v;
             for (unsigned int c = 0; c < dim; ++c)
               v[c] = in[node.dofs[c]];
-            const double vn = v * node.normal;
+            const double   vn = v * node.normal;
             Tensor<1, dim> nv = alpha_nu * vn * node.normal;
             if (convexity.with_friction)
               nv += convexity.checked_alpha_tau[i] * (v - vn * node.normal);
@@ -162,7 +164,7 @@ namespace hemicontact
       base_constraints.set_zero(out);
     };
     const auto apply_k = [&](const TrilinosWrappers::MPI::Vector &in,
-                             TrilinosWrappers::MPI::Vector &      out) {
+                             TrilinosWrappers::MPI::Vector       &out) {
       step_matrix.vmult(out, in);
       base_constraints.set_zero(out);
     };
@@ -170,7 +172,7 @@ namespace hemicontact
     const TrilinosWrappers::PreconditionAMG &amg =
       preconditioner.step_amg(step_matrix);
     const auto precondition = [&](const TrilinosWrappers::MPI::Vector &in,
-                                  TrilinosWrappers::MPI::Vector &      out) {
+                                  TrilinosWrappers::MPI::Vector       &out) {
       amg.vmult(out, in);
       base_constraints.set_zero(out);
     };
@@ -190,7 +192,10 @@ namespace hemicontact
     x.compress(VectorOperation::insert);
     base_constraints.set_zero(x);
     const EigenvalueEstimate estimate =
-      largest_generalized_eigenvalue(apply_n, apply_k, precondition, x,
+      largest_generalized_eigenvalue(apply_n,
+                                     apply_k,
+                                     precondition,
+                                     x,
                                      convexity_residual_tolerance,
                                      convexity_max_iterations);
     // value 0: N vanishes on the free dofs, and every alpha is admissible
@@ -201,8 +206,7 @@ namespace hemicontact
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       std::cerr << "hemicontact: warning: the convexity estimate did not "
                    "converge in "
-                << convexity_max_iterations
-                << " iterations (relative residual "
+                << convexity_max_iterations << " iterations (relative residual "
                 << estimate.relative_residual
                 << "); the bound it reports may be too large, i.e. the step "
                    "may be less convex than stated."
@@ -214,7 +218,7 @@ namespace hemicontact
       for (double &checked : convexity.checked_alpha_tau)
         checked *= std::min(convexity.bound, convexity_recheck_headroom);
     // during the run, a step that stays non-convex is not named again
-    const bool report = context.empty() || convexity.steps_convex;
+    const bool report      = context.empty() || convexity.steps_convex;
     convexity.steps_convex = convex;
     if (!convex && report)
       {
@@ -224,8 +228,8 @@ namespace hemicontact
                      "the laws' relaxed-monotonicity constants alpha_nu = "
                   << alpha << " (normal law) and alpha_tau up to "
                   << convexity.largest_alpha_tau << " (friction law '"
-                  << friction->name()
-                  << "') are too large for (" << scheme.step_matrix_name()
+                  << friction->name() << "') are too large for ("
+                  << scheme.step_matrix_name()
                   << "): its smallest "
                      "eigenvalue against sum m_i (alpha_nu nu nu + alpha_tau "
                      "(I - nu nu)) is estimated at "
@@ -237,17 +241,16 @@ namespace hemicontact
                   << " or the laws' nonmonotonicity (e.g. a larger "
                      "characteristic slip speed).";
         else
-          message << "the step energy J_n is not convex for this time step: the "
-                     "normal law's relaxed-monotonicity constant alpha = "
-                  << alpha
-                  << " is not below the estimated smallest eigenvalue "
-                  << convexity.bound
-                  << " of (" << scheme.step_matrix_name()
-                  << ") against the normal boundary mass "
-                     "(the convexity condition of the step problem, cf. Han & Han 2019, (4.26); doc/theory.md section 9.5). Newton may fail "
-                     "or the step may have several solutions; "
-                  << scheme.convexity_remedy(time_step)
-                  << " or the law's nonmonotonicity.";
+          message
+            << "the step energy J_n is not convex for this time step: the "
+               "normal law's relaxed-monotonicity constant alpha = "
+            << alpha << " is not below the estimated smallest eigenvalue "
+            << convexity.bound << " of (" << scheme.step_matrix_name()
+            << ") against the normal boundary mass "
+               "(the convexity condition of the step problem, cf. Han & Han 2019, (4.26); doc/theory.md section 9.5). Newton may fail "
+               "or the step may have several solutions; "
+            << scheme.convexity_remedy(time_step)
+            << " or the law's nonmonotonicity.";
         if (parameters.nonlinear_solver.strict_convexity_check)
           {
             if (context.empty())
@@ -267,9 +270,10 @@ namespace hemicontact
     // a bound from u_nu or t may raise alpha_tau above what was checked
     int grew = convexity.checked_alpha_tau.size() != contact_nodes.size();
     for (std::size_t i = 0; i < contact_nodes.size() && !grew; ++i)
-      grew = contact_nodes[i].locally_owned &&
-             friction->relaxed_monotonicity_constant(
-               contact_nodes[i].friction_bound) > convexity.checked_alpha_tau[i];
+      grew =
+        contact_nodes[i].locally_owned &&
+        friction->relaxed_monotonicity_constant(
+          contact_nodes[i].friction_bound) > convexity.checked_alpha_tau[i];
     if (Utilities::MPI::max(grew, mpi_communicator) == 0)
       return;
     std::ostringstream context;
@@ -279,12 +283,13 @@ namespace hemicontact
     check_convexity(context.str());
   }
 
-#define HEMICONTACT_INSTANTIATE(dim)                                           \
-  template void ContactProblem<dim>::update_energy_balance(const bool);       \
-  template std::pair<double, double> ContactProblem<dim>::stored_energy()     \
-    const;       \
-  template void ContactProblem<dim>::check_convexity(const std::string &);  \
-  template void ContactProblem<dim>::recheck_convexity_if_bounds_grew(const double);
+#define HEMICONTACT_INSTANTIATE(dim)                                       \
+  template void ContactProblem<dim>::update_energy_balance(const bool);    \
+  template std::pair<double, double> ContactProblem<dim>::stored_energy()  \
+    const;                                                                 \
+  template void ContactProblem<dim>::check_convexity(const std::string &); \
+  template void ContactProblem<dim>::recheck_convexity_if_bounds_grew(     \
+    const double);
 
   HEMICONTACT_INSTANTIATE(2)
   HEMICONTACT_INSTANTIATE(3)

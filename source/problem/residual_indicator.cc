@@ -18,28 +18,35 @@ namespace hemicontact
     // (u_n the displacement the step used) and the contact traction xi_h
     // (the nodal contact forces over the nodal weights) on Gamma_3
     const auto ghosted = [&](const TrilinosWrappers::MPI::Vector &v) {
-      TrilinosWrappers::MPI::Vector g(locally_owned_dofs, locally_relevant_dofs,
+      TrilinosWrappers::MPI::Vector g(locally_owned_dofs,
+                                      locally_relevant_dofs,
                                       mpi_communicator);
       g = v;
       return g;
     };
-    const TrilinosWrappers::MPI::Vector w = ghosted(velocity),
+    const TrilinosWrappers::MPI::Vector w     = ghosted(velocity),
                                         w_old = ghosted(old_velocity),
                                         u     = ghosted(displacement),
                                         xi    = ghosted(contact_traction);
 
-    const FiniteElement<dim> &  fe      = *discretization.fe;
-    const Mapping<dim> &        mapping = *discretization.mapping;
-    const Quadrature<dim - 1>   face_q  = discretization.face_quadrature(2);
+    const FiniteElement<dim>        &fe      = *discretization.fe;
+    const Mapping<dim>              &mapping = *discretization.mapping;
+    const Quadrature<dim - 1>        face_q = discretization.face_quadrature(2);
     const FEValuesExtractors::Vector v(0);
-    FEValues<dim> fe_values(mapping, fe, discretization.cell_quadrature(2),
+    FEValues<dim>                    fe_values(mapping,
+                            fe,
+                            discretization.cell_quadrature(2),
                             update_values | update_hessians |
                               update_quadrature_points | update_JxW_values);
-    FEFaceValues<dim>      fe_face(mapping, fe, face_q,
+    FEFaceValues<dim>                fe_face(mapping,
+                              fe,
+                              face_q,
                               update_values | update_gradients |
                                 update_quadrature_points |
                                 update_normal_vectors | update_JxW_values);
-    FEInterfaceValues<dim> fe_interface(mapping, fe, face_q,
+    FEInterfaceValues<dim>           fe_interface(mapping,
+                                        fe,
+                                        face_q,
                                         update_gradients |
                                           update_normal_vectors |
                                           update_JxW_values);
@@ -55,7 +62,7 @@ namespace hemicontact
     std::vector<Vector<double>> g_values(n_f, Vector<double>(dim));
 
     const BoundaryParameters &boundary = parameters.boundary;
-    const auto is_in = [](const std::vector<unsigned int> &ids,
+    const auto                is_in = [](const std::vector<unsigned int> &ids,
                           const types::boundary_id         id) {
       return std::find(ids.begin(), ids.end(), id) != ids.end();
     };
@@ -122,8 +129,8 @@ namespace hemicontact
                   double boundary_residual = 0;
                   for (unsigned int q = 0; q < n_f; ++q)
                     {
-                      Tensor<1, dim> r =
-                        -stress(w_grads[q], u_grads[q]) * fe_face.normal_vector(q);
+                      Tensor<1, dim> r = -stress(w_grads[q], u_grads[q]) *
+                                         fe_face.normal_vector(q);
                       if (on_contact)
                         r -= xi_values[q];
                       for (unsigned int c = 0; c < dim; ++c)
@@ -139,7 +146,7 @@ namespace hemicontact
               // of it when the neighbour is as fine or coarser, each child
               // face when it is finer (hanging nodes)
               const auto add_jump = [&](const unsigned int subface) {
-                const auto &side = fe_interface.get_fe_face_values(0);
+                const auto &side  = fe_interface.get_fe_face_values(0);
                 const auto &other = fe_interface.get_fe_face_values(1);
                 side[v].get_function_gradients(w, w_grads);
                 side[v].get_function_gradients(u, u_grads);
@@ -162,7 +169,10 @@ namespace hemicontact
                 for (unsigned int sf = 0; sf < face->n_children(); ++sf)
                   {
                     const auto child = cell->neighbor_child_on_subface(f, sf);
-                    fe_interface.reinit(cell, f, sf, child,
+                    fe_interface.reinit(cell,
+                                        f,
+                                        sf,
+                                        child,
                                         cell->neighbor_face_no(f),
                                         numbers::invalid_unsigned_int);
                     add_jump(sf);
@@ -170,14 +180,17 @@ namespace hemicontact
               else if (cell->neighbor_is_coarser(f))
                 {
                   const auto [nf, nsf] = cell->neighbor_of_coarser_neighbor(f);
-                  fe_interface.reinit(cell, f, numbers::invalid_unsigned_int,
-                                      neighbor, nf, nsf);
+                  fe_interface.reinit(
+                    cell, f, numbers::invalid_unsigned_int, neighbor, nf, nsf);
                   add_jump(numbers::invalid_unsigned_int);
                 }
               else
                 {
-                  fe_interface.reinit(cell, f, numbers::invalid_unsigned_int,
-                                      neighbor, cell->neighbor_of_neighbor(f),
+                  fe_interface.reinit(cell,
+                                      f,
+                                      numbers::invalid_unsigned_int,
+                                      neighbor,
+                                      cell->neighbor_of_neighbor(f),
                                       numbers::invalid_unsigned_int);
                   add_jump(numbers::invalid_unsigned_int);
                 }
@@ -187,6 +200,8 @@ namespace hemicontact
     return indicators;
   }
 
-  template Vector<float> ContactProblem<2>::residual_indicators() const;
-  template Vector<float> ContactProblem<3>::residual_indicators() const;
+  template Vector<float>
+  ContactProblem<2>::residual_indicators() const;
+  template Vector<float>
+  ContactProblem<3>::residual_indicators() const;
 } // namespace hemicontact

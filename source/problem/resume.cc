@@ -14,11 +14,12 @@ namespace hemicontact
     template <int dim>
     void
     branches_from_field(const TrilinosWrappers::MPI::Vector &field,
-                        const IndexSet &                     owned,
-                        const IndexSet &                     relevant,
-                        std::vector<ContactNode<dim>> &      nodes)
+                        const IndexSet                      &owned,
+                        const IndexSet                      &relevant,
+                        std::vector<ContactNode<dim>>       &nodes)
     {
-      TrilinosWrappers::MPI::Vector ghosted(owned, relevant,
+      TrilinosWrappers::MPI::Vector ghosted(owned,
+                                            relevant,
                                             field.get_mpi_communicator());
       ghosted = field;
       for (ContactNode<dim> &node : nodes)
@@ -46,10 +47,13 @@ namespace hemicontact
                                            mpi_communicator);
     TrilinosWrappers::MPI::Vector amg_branches(locally_owned_dofs,
                                                mpi_communicator);
-    checkpointer.load_fields(dof_handler, locally_owned_dofs,
-                             {&velocity, &displacement, &branches,
-                              &old_velocity, &amg_branches});
-    branches_from_field(branches, locally_owned_dofs, locally_relevant_dofs,
+    checkpointer.load_fields(
+      dof_handler,
+      locally_owned_dofs,
+      {&velocity, &displacement, &branches, &old_velocity, &amg_branches});
+    branches_from_field(branches,
+                        locally_owned_dofs,
+                        locally_relevant_dofs,
                         contact_nodes);
 
     step_number = state.step_number;
@@ -61,7 +65,9 @@ namespace hemicontact
     // the preconditioner as the interrupted run left it (after the checks
     // above, which build AMGs of their own, as at the run's start)
     std::vector<ContactNode<dim>> amg_nodes(contact_nodes);
-    branches_from_field(amg_branches, locally_owned_dofs, locally_relevant_dofs,
+    branches_from_field(amg_branches,
+                        locally_owned_dofs,
+                        locally_relevant_dofs,
                         amg_nodes);
     ProjectedOperator<dim> op(step_matrix, locally_owned_dofs);
     for (const ContactNode<dim> &node : amg_nodes)
@@ -71,6 +77,8 @@ namespace hemicontact
       op, static_cast<ConstrainedAmgStatus>(state.constrained_amg));
   }
 
-  template void ContactProblem<2>::resume(Checkpointer<2> &);
-  template void ContactProblem<3>::resume(Checkpointer<3> &);
+  template void
+  ContactProblem<2>::resume(Checkpointer<2> &);
+  template void
+  ContactProblem<3>::resume(Checkpointer<3> &);
 } // namespace hemicontact

@@ -1,16 +1,16 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
+#include <hemicontact/base/exceptions.h>
 #include <hemicontact/output/checkpointer.h>
 #include <hemicontact/output/run_output.h>
 #include <hemicontact/problem/contact_problem.h>
-#include <hemicontact/base/exceptions.h>
 
 #include <algorithm>
-#include <tuple>
-#include <iostream>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
+#include <tuple>
 
 namespace hemicontact
 {
@@ -31,16 +31,18 @@ namespace hemicontact
      * (@p reported).
      */
     void
-    check_energy_growth(const EnergyBalance &energy, const double t,
-                        const Parameters &parameters, MPI_Comm comm,
-                        bool &reported)
+    check_energy_growth(const EnergyBalance &energy,
+                        const double         t,
+                        const Parameters    &parameters,
+                        MPI_Comm             comm,
+                        bool                &reported)
     {
       if (!(energy.growth() > unstable_energy_growth) || reported)
         return;
       std::ostringstream message;
-      message << std::setprecision(4) << "the stored energy E_n = "
-              << energy.total_energy() << " at t = " << t << " is "
-              << energy.growth()
+      message << std::setprecision(4)
+              << "the stored energy E_n = " << energy.total_energy()
+              << " at t = " << t << " is " << energy.growth()
               << " times the energy put into the body (initial "
                  "energy and work of the loads, "
               << energy.supplied_energy()
@@ -166,8 +168,8 @@ namespace hemicontact
     assemble_constant_matrices();
     preconditioner.clear();
     std::tie(energy.kinetic, energy.elastic) = stored_energy();
-    energy.transfer_change += energy.kinetic + energy.elastic -
-                              before.first - before.second;
+    energy.transfer_change +=
+      energy.kinetic + energy.elastic - before.first - before.second;
   }
 
   template <int dim>
@@ -218,7 +220,7 @@ namespace hemicontact
 
   template <int dim>
   void
-  ContactProblem<dim>::time_loop(RunOutput<dim> &   output,
+  ContactProblem<dim>::time_loop(RunOutput<dim>    &output,
                                  Checkpointer<dim> &checkpointer)
   {
     // validate everything (mesh, boundary ids, data) before touching the
@@ -258,19 +260,21 @@ namespace hemicontact
         try
           {
             stats = advance();
-            check_energy_growth(energy, step_number * time_step, parameters,
-                                mpi_communicator, growth_reported);
+            check_energy_growth(energy,
+                                step_number * time_step,
+                                parameters,
+                                mpi_communicator,
+                                growth_reported);
           }
         catch (const SolverFailure &failure)
           {
             output.write_solution(*this);
             checkpointer.write(*this, output);
-            throw SolverFailure(std::string(failure.what()) +
-                                " The last converged state (step " +
-                                std::to_string(step_number) +
-                                ") was written to '" +
-                                parameters.output.directory +
-                                "' with a checkpoint to resume from.");
+            throw SolverFailure(
+              std::string(failure.what()) + " The last converged state (step " +
+              std::to_string(step_number) + ") was written to '" +
+              parameters.output.directory +
+              "' with a checkpoint to resume from.");
           }
         totals.add(stats);
         // the fields on the mesh the step ran on, then (maybe) a new mesh
@@ -289,8 +293,7 @@ namespace hemicontact
             initialize_state();
             pcout << "pre-refinement: restart from t = 0 on "
                   << discretization.triangulation->n_global_active_cells()
-                  << " cells, " << dof_handler.n_dofs() << " dofs"
-                  << std::endl;
+                  << " cells, " << dof_handler.n_dofs() << " dofs" << std::endl;
             output.write_probes(*this);
             // the series shows the restarted run; its files replace those
             // of the same steps before the restart
@@ -311,8 +314,7 @@ namespace hemicontact
             throw RunInterrupted(
               "stopped after step " + std::to_string(step_number) +
               " (t = " + std::to_string(step_number * time_step) +
-              "); a checkpoint was written to '" +
-              parameters.output.directory +
+              "); a checkpoint was written to '" + parameters.output.directory +
               "/checkpoint'; continue with 'hemicontact --resume FILE.prm'.");
           }
       }
@@ -321,15 +323,15 @@ namespace hemicontact
     output.finish(*this, totals, run_timer.wall_time());
   }
 
-#define HEMICONTACT_INSTANTIATE(dim)                                           \
-  template StepStatistics ContactProblem<dim>::advance();                     \
-  template StepStatistics ContactProblem<dim>::advance_interval(              \
-    const double, const double, const unsigned int);                           \
-  template void ContactProblem<dim>::set_time_step(const double);                     \
-  template bool ContactProblem<dim>::adapt_mesh_if_due(StepStatistics &,     \
-                                                       RunOutput<dim> *);    \
-  template void ContactProblem<dim>::run();                                   \
-  template void ContactProblem<dim>::time_loop(RunOutput<dim> &,              \
+#define HEMICONTACT_INSTANTIATE(dim)                                      \
+  template StepStatistics ContactProblem<dim>::advance();                 \
+  template StepStatistics ContactProblem<dim>::advance_interval(          \
+    const double, const double, const unsigned int);                      \
+  template void ContactProblem<dim>::set_time_step(const double);         \
+  template bool ContactProblem<dim>::adapt_mesh_if_due(StepStatistics &,  \
+                                                       RunOutput<dim> *); \
+  template void ContactProblem<dim>::run();                               \
+  template void ContactProblem<dim>::time_loop(RunOutput<dim> &,          \
                                                Checkpointer<dim> &);
 
   HEMICONTACT_INSTANTIATE(2)

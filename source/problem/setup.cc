@@ -5,8 +5,8 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/problem/contact_problem.h>
 
 #include <cmath>
 #include <map>
@@ -18,8 +18,10 @@ namespace hemicontact
   ContactProblem<dim>::ContactProblem(const Parameters &parameters,
                                       ContactLaws       laws,
                                       MPI_Comm          comm)
-    : ContactProblem(parameters, std::move(laws),
-                     make_problem_data<dim>(parameters.data), comm)
+    : ContactProblem(parameters,
+                     std::move(laws),
+                     make_problem_data<dim>(parameters.data),
+                     comm)
   {}
 
   template <int dim>
@@ -29,8 +31,9 @@ namespace hemicontact
                                       MPI_Comm          comm)
     : mpi_communicator(comm)
     , parameters(parameters)
-    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0 &&
-                         parameters.output.terminal != TerminalOutput::quiet)
+    , pcout(std::cout,
+            Utilities::MPI::this_mpi_process(comm) == 0 &&
+              parameters.output.terminal != TerminalOutput::quiet)
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , material(parameters.material)
     , scheme(parameters.problem)
@@ -44,9 +47,10 @@ namespace hemicontact
   {
     AssertThrow(dim == parameters.dimension,
                 ExcMessage("ContactProblem<dim> built for another dimension."));
-    n_steps = std::max<unsigned int>(
-      1, static_cast<unsigned int>(
-           std::llround(parameters.time.end_time / parameters.time.time_step)));
+    n_steps   = std::max<unsigned int>(1,
+                                     static_cast<unsigned int>(std::llround(
+                                       parameters.time.end_time /
+                                       parameters.time.time_step)));
     time_step = parameters.time.end_time / n_steps;
   }
 
@@ -87,7 +91,9 @@ namespace hemicontact
                                                locally_owned_dofs,
                                                locally_relevant_dofs,
                                                mpi_communicator);
-    DoFTools::make_sparsity_pattern(dof_handler, sparsity, base_constraints,
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    sparsity,
+                                    base_constraints,
                                     /*keep_constrained_dofs=*/true,
                                     Utilities::MPI::this_mpi_process(
                                       mpi_communicator));
@@ -96,9 +102,12 @@ namespace hemicontact
          {&mass_matrix, &step_matrix, &elastic_matrix, &viscous_matrix})
       m->reinit(sparsity);
 
-    for (TrilinosWrappers::MPI::Vector *v :
-         {&velocity, &old_velocity, &displacement, &load, &step_rhs,
-          &contact_traction})
+    for (TrilinosWrappers::MPI::Vector *v : {&velocity,
+                                             &old_velocity,
+                                             &displacement,
+                                             &load,
+                                             &step_rhs,
+                                             &contact_traction})
       v->reinit(locally_owned_dofs, mpi_communicator);
   }
 
@@ -109,12 +118,13 @@ namespace hemicontact
     base_constraints.clear();
     base_constraints.reinit(locally_relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, base_constraints);
-    const Functions::ZeroFunction<dim> zero(dim);
+    const Functions::ZeroFunction<dim>                  zero(dim);
     std::map<types::boundary_id, const Function<dim> *> clamped;
     for (const unsigned int id : parameters.boundary.clamped_ids)
       clamped[id] = &zero;
     VectorTools::interpolate_boundary_values(*discretization.mapping,
-                                             dof_handler, clamped,
+                                             dof_handler,
+                                             clamped,
                                              base_constraints);
     base_constraints.close();
   }
@@ -131,13 +141,14 @@ namespace hemicontact
     // n_j = int_{Gamma_3} phi_j nu_{c(j)}, condensed onto the free nodes
     TrilinosWrappers::MPI::Vector mass(locally_owned_dofs, mpi_communicator);
     TrilinosWrappers::MPI::Vector normal(locally_owned_dofs, mpi_communicator);
-    const FiniteElement<dim> &fe = *discretization.fe;
-    FEFaceValues<dim> fe_face(*discretization.mapping, fe,
+    const FiniteElement<dim>     &fe = *discretization.fe;
+    FEFaceValues<dim>             fe_face(*discretization.mapping,
+                              fe,
                               discretization.face_quadrature(2),
                               update_values | update_normal_vectors |
                                 update_JxW_values);
-    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
-    Vector<double>     local_mass(dofs_per_cell), local_normal(dofs_per_cell);
+    const unsigned int            dofs_per_cell = fe.n_dofs_per_cell();
+    Vector<double> local_mass(dofs_per_cell), local_normal(dofs_per_cell);
     std::vector<types::global_dof_index> dofs(dofs_per_cell);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -151,21 +162,26 @@ namespace hemicontact
               for (const unsigned int q : fe_face.quadrature_point_indices())
                 for (unsigned int i = 0; i < dofs_per_cell; ++i)
                   {
-                    const unsigned int c = fe.system_to_component_index(i).first;
-                    const double phi = fe_face.shape_value_component(i, q, c) *
-                                       fe_face.JxW(q);
+                    const unsigned int c =
+                      fe.system_to_component_index(i).first;
+                    const double phi =
+                      fe_face.shape_value_component(i, q, c) * fe_face.JxW(q);
                     local_mass(i) += phi;
                     local_normal(i) += phi * fe_face.normal_vector(q)[c];
                   }
               cell->get_dof_indices(dofs);
-              base_constraints.distribute_local_to_global(local_mass, dofs, mass);
-              base_constraints.distribute_local_to_global(local_normal, dofs,
+              base_constraints.distribute_local_to_global(local_mass,
+                                                          dofs,
+                                                          mass);
+              base_constraints.distribute_local_to_global(local_normal,
+                                                          dofs,
                                                           normal);
             }
     mass.compress(VectorOperation::add);
     normal.compress(VectorOperation::add);
 
-    TrilinosWrappers::MPI::Vector diagonal(locally_owned_dofs, mpi_communicator);
+    TrilinosWrappers::MPI::Vector diagonal(locally_owned_dofs,
+                                           mpi_communicator);
     for (const auto i : locally_owned_dofs)
       diagonal[i] = step_matrix.diag_element(i);
     diagonal.compress(VectorOperation::insert);
@@ -180,7 +196,8 @@ namespace hemicontact
     diagonal_g = diagonal;
 
     contact_nodes.clear();
-    convexity.checked_alpha_tau.clear(); // a convexity check covers its own nodes
+    convexity.checked_alpha_tau
+      .clear(); // a convexity check covers its own nodes
     std::map<types::global_dof_index, unsigned int> seen;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
@@ -208,7 +225,8 @@ namespace hemicontact
                 node.normal /= node.normal.norm();
                 node.c = parameters.solver_tuning.complementarity_factor *
                          diag / node.mass;
-                node.locally_owned = locally_owned_dofs.is_element(node.dofs[0]);
+                node.locally_owned =
+                  locally_owned_dofs.is_element(node.dofs[0]);
                 contact_nodes.push_back(node);
               }
 
@@ -264,17 +282,17 @@ namespace hemicontact
   ContactProblem<dim>::initialize_state()
   {
     data.set_time(0);
-    const auto interpolate_checked = [&](const Function<dim> &      f,
+    const auto interpolate_checked = [&](const Function<dim>           &f,
                                          TrilinosWrappers::MPI::Vector &v,
-                                         const std::string &          name) {
+                                         const std::string             &name) {
       VectorTools::interpolate(*discretization.mapping, dof_handler, f, v);
       unsigned int n_not_finite = 0;
       for (const auto i : locally_owned_dofs)
         n_not_finite += !std::isfinite(v[i]);
       require(Utilities::MPI::sum(n_not_finite, mpi_communicator) == 0,
               "data: the " + name + " is not a finite number (NaN or Inf) at " +
-                std::to_string(Utilities::MPI::sum(n_not_finite,
-                                                   mpi_communicator)) +
+                std::to_string(
+                  Utilities::MPI::sum(n_not_finite, mpi_communicator)) +
                 " nodal values; check its expression ('data/" + name +
                 "', or 'manufactured solution/exact displacement').");
       double on_clamped = 0, largest = 0;
@@ -288,67 +306,73 @@ namespace hemicontact
       on_clamped = Utilities::MPI::max(on_clamped, mpi_communicator);
       largest    = Utilities::MPI::max(largest, mpi_communicator);
       require(on_clamped <= 1e-12 * std::max(largest, 1.),
-              "data: the " + name + " does not vanish on the clamped boundary "
-              "Gamma_1 (value " + std::to_string(on_clamped) +
-              " there); it must satisfy u = 0 on Gamma_1.");
+              "data: the " + name +
+                " does not vanish on the clamped boundary "
+                "Gamma_1 (value " +
+                std::to_string(on_clamped) +
+                " there); it must satisfy u = 0 on Gamma_1.");
       base_constraints.distribute(v);
     };
     interpolate_checked(*data.initial_velocity, velocity, "initial velocity");
-    interpolate_checked(*data.initial_displacement, displacement,
+    interpolate_checked(*data.initial_displacement,
+                        displacement,
                         "initial displacement");
     old_velocity = velocity;
     step_number  = 0;
     update_friction_bounds(0.);
     if (scheme.initial_velocity_from_step())
       {
-      // doc/theory.md, section 9.2: the equation at t_0 with the data u_0,
-      // K = A and b = F_0 - B u_0, solved from w = 0 by the step solver
-      const bool other_matrix =
-        !(scheme.initial_matrix() == scheme.step_matrix(time_step));
-      if (other_matrix)
-        {
-          step_matrix.copy_from(viscous_matrix);
-          preconditioner.clear();
-        }
-      assemble_load(0.);
-      scheme.initial_rhs(elastic_matrix, displacement, load, step_rhs);
-      base_constraints.set_zero(step_rhs);
-      velocity = 0;
-      try
-        {
-          solve_step();
-        }
-      catch (const SolverFailure &failure)
-        {
-          throw SolverFailure(
-            std::string("the initial velocity w_0 of the quasistatic class (the "
-                        "step problem at t = 0 with the initial displacement, "
-                        "doc/theory.md section 9.2) failed: ") +
-            failure.what());
-        }
-      old_velocity = velocity;
-      if (other_matrix)
-        {
-          assemble_constant_matrices();
-          preconditioner.clear();
-        }
+        // doc/theory.md, section 9.2: the equation at t_0 with the data u_0,
+        // K = A and b = F_0 - B u_0, solved from w = 0 by the step solver
+        const bool other_matrix =
+          !(scheme.initial_matrix() == scheme.step_matrix(time_step));
+        if (other_matrix)
+          {
+            step_matrix.copy_from(viscous_matrix);
+            preconditioner.clear();
+          }
+        assemble_load(0.);
+        scheme.initial_rhs(elastic_matrix, displacement, load, step_rhs);
+        base_constraints.set_zero(step_rhs);
+        velocity = 0;
+        try
+          {
+            solve_step();
+          }
+        catch (const SolverFailure &failure)
+          {
+            throw SolverFailure(
+              std::string(
+                "the initial velocity w_0 of the quasistatic class (the "
+                "step problem at t = 0 with the initial displacement, "
+                "doc/theory.md section 9.2) failed: ") +
+              failure.what());
+          }
+        old_velocity = velocity;
+        if (other_matrix)
+          {
+            assemble_constant_matrices();
+            preconditioner.clear();
+          }
       }
-    energy       = EnergyBalance();
+    energy = EnergyBalance();
     update_energy_balance(/*initial=*/true);
   }
 
-#define HEMICONTACT_INSTANTIATE(dim)                                           \
-  template ContactProblem<dim>::ContactProblem(const Parameters &,            \
-                                               ContactLaws, MPI_Comm);        \
-  template ContactProblem<dim>::ContactProblem(const Parameters &,            \
-                                               ContactLaws, ProblemData<dim>, \
-                                               MPI_Comm);                     \
-  template void ContactProblem<dim>::update_friction_bounds(const double);    \
-  template void ContactProblem<dim>::setup();                                 \
-  template void ContactProblem<dim>::setup_on_current_mesh();                 \
-  template void ContactProblem<dim>::setup_dofs();                            \
-  template void ContactProblem<dim>::setup_base_constraints();                \
-  template void ContactProblem<dim>::setup_contact_nodes();                   \
+#define HEMICONTACT_INSTANTIATE(dim)                                       \
+  template ContactProblem<dim>::ContactProblem(const Parameters &,         \
+                                               ContactLaws,                \
+                                               MPI_Comm);                  \
+  template ContactProblem<dim>::ContactProblem(const Parameters &,         \
+                                               ContactLaws,                \
+                                               ProblemData<dim>,           \
+                                               MPI_Comm);                  \
+  template void ContactProblem<dim>::update_friction_bounds(const double); \
+  template void ContactProblem<dim>::setup();                              \
+  template void ContactProblem<dim>::setup_on_current_mesh();              \
+  template void ContactProblem<dim>::setup_dofs();                         \
+  template void ContactProblem<dim>::setup_base_constraints();             \
+  template void ContactProblem<dim>::setup_contact_nodes();                \
   template void ContactProblem<dim>::initialize_state();
 
   HEMICONTACT_INSTANTIATE(2)

@@ -1,9 +1,9 @@
 #include <deal.II/base/mpi.h>
 
-#include <hemicontact/problem/contact_problem.h>
-#include <hemicontact/solver/generalized_eigenvalue.h>
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/model/time_step_stability.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/solver/generalized_eigenvalue.h>
 
 #include <cmath>
 #include <iomanip>
@@ -32,14 +32,14 @@ namespace hemicontact
     // inertia lambda_max(B; A) with K = A (doc/theory.md, section 9.6)
     const bool inertia = scheme.has_inertia();
     const auto apply_b = [&](const TrilinosWrappers::MPI::Vector &in,
-                             TrilinosWrappers::MPI::Vector &      out) {
+                             TrilinosWrappers::MPI::Vector       &out) {
       elastic_matrix.vmult(out, in);
       base_constraints.set_zero(out);
     };
     double                        current_k = k;
     TrilinosWrappers::MPI::Vector m_in(locally_owned_dofs, mpi_communicator);
     const auto apply_s = [&](const TrilinosWrappers::MPI::Vector &in,
-                             TrilinosWrappers::MPI::Vector &      out) {
+                             TrilinosWrappers::MPI::Vector       &out) {
       step_matrix.vmult(out, in);
       if (inertia)
         {
@@ -51,7 +51,7 @@ namespace hemicontact
     const TrilinosWrappers::PreconditionAMG &amg =
       preconditioner.step_amg(step_matrix);
     const auto precondition = [&](const TrilinosWrappers::MPI::Vector &in,
-                                  TrilinosWrappers::MPI::Vector &      out) {
+                                  TrilinosWrappers::MPI::Vector       &out) {
       amg.vmult(out, in);
       base_constraints.set_zero(out);
     };
@@ -64,13 +64,17 @@ namespace hemicontact
     // k is stable iff lambda_max(B; A + 2M/k) <= 2/k; the Ritz vector of a
     // k that fails gives a smaller stable k (stable_time_step_of_mode), and
     // the limit is refined from there
-    double       limit = std::numeric_limits<double>::infinity();
+    double limit = std::numeric_limits<double>::infinity();
     TrilinosWrappers::MPI::Vector tmp(x);
     for (unsigned int round = 0; round < limit_refinements; ++round)
       {
-        const EigenvalueEstimate estimate = largest_generalized_eigenvalue(
-          apply_b, apply_s, precondition, x, stability_residual_tolerance,
-          stability_max_iterations);
+        const EigenvalueEstimate estimate =
+          largest_generalized_eigenvalue(apply_b,
+                                         apply_s,
+                                         precondition,
+                                         x,
+                                         stability_residual_tolerance,
+                                         stability_max_iterations);
         if (!(estimate.value > 0) || estimate.value * current_k <= 2)
           return round == 0 ? std::numeric_limits<double>::infinity() : limit;
         mass_matrix.vmult(tmp, x);
@@ -97,9 +101,12 @@ namespace hemicontact
     if (!scheme.has_time_step_limit())
       return;
     TimerOutput::Scope t(timer, "stability check");
-    const double       material_limit = mesh_independent_stable_time_step(
-      dim, material.mu_viscous(), material.lambda_viscous(),
-      material.mu_elastic(), material.lambda_elastic());
+    const double       material_limit =
+      mesh_independent_stable_time_step(dim,
+                                        material.mu_viscous(),
+                                        material.lambda_viscous(),
+                                        material.mu_elastic(),
+                                        material.lambda_elastic());
     if (time_step <= material_limit)
       return;
     const double limit = largest_stable_time_step(time_step);
@@ -107,17 +114,15 @@ namespace hemicontact
       return;
 
     std::ostringstream message;
-    message << std::setprecision(4)
-            << "the time step k = " << time_step
+    message << std::setprecision(4) << "the time step k = " << time_step
             << " is above the stability limit of the left-point rule on this "
                "mesh, k <= "
-            << limit
-            << " (estimated: " << scheme.stability_condition()
+            << limit << " (estimated: " << scheme.stability_condition()
             << "): the elastic term is explicit, "
                "and the energy of the run would grow without bound. Choose "
                "a time step that divides the end time and is at most "
-            << limit << " (e.g. " << parameters.time.end_time
-            << " / " << std::ceil(parameters.time.end_time / limit)
+            << limit << " (e.g. " << parameters.time.end_time << " / "
+            << std::ceil(parameters.time.end_time / limit)
             << "), a larger viscosity or a softer material; below k = "
             << material_limit
             << " the rule is stable on every mesh. 'problem/time scheme = "

@@ -30,7 +30,8 @@ namespace hemicontact
     FEValues<dim>
     matrix_fe_values(const Discretization<dim> &discretization)
     {
-      return FEValues<dim>(*discretization.mapping, *discretization.fe,
+      return FEValues<dim>(*discretization.mapping,
+                           *discretization.fe,
                            discretization.cell_quadrature(2),
                            update_values | update_gradients |
                              update_JxW_values);
@@ -40,12 +41,12 @@ namespace hemicontact
   template <int dim>
   void
   ContactProblem<dim>::cell_functionals(
-    FEValues<dim> &                                fe_values,
+    FEValues<dim>                                 &fe_values,
     const typename DoFHandler<dim>::cell_iterator &cell,
-    const TrilinosWrappers::MPI::Vector &          w,
-    const TrilinosWrappers::MPI::Vector &          u_next,
-    Vector<double> &                               m_w,
-    Vector<double> &                               b_u) const
+    const TrilinosWrappers::MPI::Vector           &w,
+    const TrilinosWrappers::MPI::Vector           &u_next,
+    Vector<double>                                &m_w,
+    Vector<double>                                &b_u) const
   {
     const unsigned int n = fe_values.dofs_per_cell;
     FullMatrix<double> mass(n, n), viscous(n, n), elastic(n, n);
@@ -75,10 +76,10 @@ namespace hemicontact
       if (status != Triangulation<dim>::CELL_COARSEN)
         return std::vector<char>();
       // called on the parent, while its children and the old dofs still exist
-      const FiniteElement<dim> &fe = *discretization.fe;
-      const unsigned int        n  = fe.n_dofs_per_cell();
-      FEValues<dim> fe_values = matrix_fe_values(discretization);
-      Vector<double> m_w(n), b_u(n), parent_m_w(n), parent_b_u(n);
+      const FiniteElement<dim> &fe        = *discretization.fe;
+      const unsigned int        n         = fe.n_dofs_per_cell();
+      FEValues<dim>             fe_values = matrix_fe_values(discretization);
+      Vector<double>            m_w(n), b_u(n), parent_m_w(n), parent_b_u(n);
       const typename DoFHandler<dim>::cell_iterator parent(*cell, &dof_handler);
       for (unsigned int c = 0; c < parent->n_children(); ++c)
         {
@@ -112,12 +113,14 @@ namespace hemicontact
     tria->notify_ready_to_unpack(
       handle,
       [&coarsened](
-        const typename Triangulation<dim>::cell_iterator &cell,
-        const typename Triangulation<dim>::CellStatus     status,
+        const typename Triangulation<dim>::cell_iterator               &cell,
+        const typename Triangulation<dim>::CellStatus                   status,
         const boost::iterator_range<std::vector<char>::const_iterator> &data) {
         if (status == Triangulation<dim>::CELL_COARSEN)
-          coarsened[cell->id()] = Utilities::unpack<CellFunctionals>(
-            data.begin(), data.end(), /*allow_compression=*/false);
+          coarsened[cell->id()] =
+            Utilities::unpack<CellFunctionals>(data.begin(),
+                                               data.end(),
+                                               /*allow_compression=*/false);
       });
 
     // the right-hand sides: on coarsened cells the attached integrals, on
@@ -133,10 +136,10 @@ namespace hemicontact
     TrilinosWrappers::MPI::Vector m_w(locally_owned_dofs, mpi_communicator);
     TrilinosWrappers::MPI::Vector b_u(m_w);
 
-    const FiniteElement<dim> &fe = *discretization.fe;
-    const unsigned int        n  = fe.n_dofs_per_cell();
-    FEValues<dim>  fe_values = matrix_fe_values(discretization);
-    Vector<double> m_w_cell(n), b_u_cell(n);
+    const FiniteElement<dim> &fe        = *discretization.fe;
+    const unsigned int        n         = fe.n_dofs_per_cell();
+    FEValues<dim>             fe_values = matrix_fe_values(discretization);
+    Vector<double>            m_w_cell(n), b_u_cell(n);
     std::vector<types::global_dof_index> dofs(n);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -149,8 +152,8 @@ namespace hemicontact
                 b_u_cell[i] = attached->second[n + i];
               }
           else
-            cell_functionals(fe_values, cell, w_ghosted, u_ghosted, m_w_cell,
-                             b_u_cell);
+            cell_functionals(
+              fe_values, cell, w_ghosted, u_ghosted, m_w_cell, b_u_cell);
           cell->get_dof_indices(dofs);
           base_constraints.distribute_local_to_global(m_w_cell, dofs, m_w);
           base_constraints.distribute_local_to_global(b_u_cell, dofs, b_u);
@@ -160,28 +163,42 @@ namespace hemicontact
 
     // the interpolated fields are the initial guesses
     linear_solver.solve_mass(mass_matrix, w, m_w);
-    linear_solver.solve(elastic_matrix, preconditioner.amg_of(elastic_matrix),
-                        u_next, b_u);
+    linear_solver.solve(elastic_matrix,
+                        preconditioner.amg_of(elastic_matrix),
+                        u_next,
+                        b_u);
     // free the AMG of B: nothing else on this mesh has been built yet
     preconditioner.clear();
   }
 
-  template void ContactProblem<2>::cell_functionals(
-    FEValues<2> &, const DoFHandler<2>::cell_iterator &,
-    const TrilinosWrappers::MPI::Vector &, const TrilinosWrappers::MPI::Vector &,
-    Vector<double> &, Vector<double> &) const;
-  template void ContactProblem<3>::cell_functionals(
-    FEValues<3> &, const DoFHandler<3>::cell_iterator &,
-    const TrilinosWrappers::MPI::Vector &, const TrilinosWrappers::MPI::Vector &,
-    Vector<double> &, Vector<double> &) const;
-  template unsigned int ContactProblem<2>::attach_coarsened_functionals(
-    const TrilinosWrappers::MPI::Vector &, const TrilinosWrappers::MPI::Vector &);
-  template unsigned int ContactProblem<3>::attach_coarsened_functionals(
-    const TrilinosWrappers::MPI::Vector &, const TrilinosWrappers::MPI::Vector &);
-  template void ContactProblem<2>::project_transferred_state(
-    const unsigned int, TrilinosWrappers::MPI::Vector &,
-    TrilinosWrappers::MPI::Vector &);
-  template void ContactProblem<3>::project_transferred_state(
-    const unsigned int, TrilinosWrappers::MPI::Vector &,
-    TrilinosWrappers::MPI::Vector &);
+  template void
+  ContactProblem<2>::cell_functionals(FEValues<2> &,
+                                      const DoFHandler<2>::cell_iterator &,
+                                      const TrilinosWrappers::MPI::Vector &,
+                                      const TrilinosWrappers::MPI::Vector &,
+                                      Vector<double> &,
+                                      Vector<double> &) const;
+  template void
+  ContactProblem<3>::cell_functionals(FEValues<3> &,
+                                      const DoFHandler<3>::cell_iterator &,
+                                      const TrilinosWrappers::MPI::Vector &,
+                                      const TrilinosWrappers::MPI::Vector &,
+                                      Vector<double> &,
+                                      Vector<double> &) const;
+  template unsigned int
+  ContactProblem<2>::attach_coarsened_functionals(
+    const TrilinosWrappers::MPI::Vector &,
+    const TrilinosWrappers::MPI::Vector &);
+  template unsigned int
+  ContactProblem<3>::attach_coarsened_functionals(
+    const TrilinosWrappers::MPI::Vector &,
+    const TrilinosWrappers::MPI::Vector &);
+  template void
+  ContactProblem<2>::project_transferred_state(const unsigned int,
+                                               TrilinosWrappers::MPI::Vector &,
+                                               TrilinosWrappers::MPI::Vector &);
+  template void
+  ContactProblem<3>::project_transferred_state(const unsigned int,
+                                               TrilinosWrappers::MPI::Vector &,
+                                               TrilinosWrappers::MPI::Vector &);
 } // namespace hemicontact

@@ -1,10 +1,10 @@
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/mpi.h>
 
-#include <hemicontact/solver/active_set_newton.h>
-#include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/model/contact_step.h>
+#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/solver/active_set_newton.h>
 
-#include <vector>
 
 namespace hemicontact
 {
@@ -15,25 +15,23 @@ namespace hemicontact
     template <int dim>
     void
     count_branches(const std::vector<ContactNode<dim>> &contact_nodes,
-                   MPI_Comm mpi_communicator, StepStatistics &stats)
+                   MPI_Comm                             mpi_communicator,
+                   StepStatistics                      &stats)
     {
-      // one count per branch, summed over the ranks
-      std::vector<unsigned int> counts(5, 0);
-      const auto count = [&](const bool condition, unsigned int &n) {
-        if (condition)
-          ++n;
-      };
+      // one count per branch, summed over the ranks in one reduction
+      unsigned int counts[5] = {0, 0, 0, 0, 0};
       for (const ContactNode<dim> &node : contact_nodes)
         if (node.locally_owned)
           {
-            count(node.normal_branch == NormalBranch::separating, counts[0]);
-            count(node.normal_branch == NormalBranch::stick, counts[1]);
-            count(node.normal_branch == NormalBranch::damped, counts[2]);
-            count(node.tangential_branch == TangentialBranch::stick, counts[3]);
-            count(node.tangential_branch == TangentialBranch::slip, counts[4]);
+            counts[0] += node.normal_branch == NormalBranch::separating;
+            counts[1] += node.normal_branch == NormalBranch::stick;
+            counts[2] += node.normal_branch == NormalBranch::damped;
+            counts[3] += node.tangential_branch == TangentialBranch::stick;
+            counts[4] += node.tangential_branch == TangentialBranch::slip;
           }
-      for (unsigned int &n : counts)
-        n = Utilities::MPI::sum(n, mpi_communicator);
+      Utilities::MPI::sum(ArrayView<const unsigned int>(counts, 5),
+                          mpi_communicator,
+                          ArrayView<unsigned int>(counts, 5));
       stats.n_separating   = counts[0];
       stats.n_normal_stick = counts[1];
       stats.n_damped       = counts[2];
@@ -46,10 +44,18 @@ namespace hemicontact
   StepStatistics
   ContactProblem<dim>::solve_step()
   {
-    ContactStep<dim> step({step_matrix, step_rhs, base_constraints,
-                           locally_owned_dofs, locally_relevant_dofs,
-                           contact_nodes, *law, *friction, linear_solver,
-                           preconditioner, timer, mpi_communicator},
+    ContactStep<dim>      step({step_matrix,
+                                step_rhs,
+                                base_constraints,
+                                locally_owned_dofs,
+                                locally_relevant_dofs,
+                                contact_nodes,
+                                *law,
+                                *friction,
+                                linear_solver,
+                                preconditioner,
+                                timer,
+                                mpi_communicator},
                           parameters);
     const ActiveSetNewton newton(newton_settings(parameters), &timer);
 
@@ -75,6 +81,8 @@ namespace hemicontact
     return stats;
   }
 
-  template StepStatistics ContactProblem<2>::solve_step();
-  template StepStatistics ContactProblem<3>::solve_step();
+  template StepStatistics
+  ContactProblem<2>::solve_step();
+  template StepStatistics
+  ContactProblem<3>::solve_step();
 } // namespace hemicontact

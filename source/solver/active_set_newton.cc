@@ -1,6 +1,6 @@
+#include <hemicontact/base/exceptions.h>
 #include <hemicontact/solver/active_set_newton.h>
 #include <hemicontact/solver/backtracking.h>
-#include <hemicontact/base/exceptions.h>
 
 #include <algorithm>
 #include <cmath>
@@ -27,9 +27,11 @@ namespace hemicontact
   {}
 
   void
-  ActiveSetNewton::line_search(const ActiveSetProblem &problem, VectorType &w,
-                               const VectorType &trial, VectorType &residual,
-                               unsigned int &n_reductions) const
+  ActiveSetNewton::line_search(const ActiveSetProblem &problem,
+                               VectorType             &w,
+                               const VectorType       &trial,
+                               VectorType             &residual,
+                               unsigned int           &n_reductions) const
   {
     std::unique_ptr<TimerOutput::Scope> scope;
     if (timer != nullptr)
@@ -61,15 +63,18 @@ namespace hemicontact
         return t * slope + 0.5 * t * t * curvature +
                problem.nodal_energy(candidate) - nodal_0;
       },
-      scale, settings.minimum_step_length, n_reductions);
+      scale,
+      settings.minimum_step_length,
+      n_reductions);
     w.add(theta, direction);
     // K0 is linear: R(w + theta d) = R(w) + theta K0 d
     residual.add(theta, k_d);
   }
 
   ActiveSetNewton::Report
-  ActiveSetNewton::solve(ActiveSetProblem &problem, VectorType &w,
-                         VectorType &residual) const
+  ActiveSetNewton::solve(ActiveSetProblem &problem,
+                         VectorType       &w,
+                         VectorType       &residual) const
   {
     Report     report;
     VectorType trial(w);
@@ -128,18 +133,22 @@ namespace hemicontact
             const double previous_forcing = forcing;
             forcing = 0.9 * std::pow(res / previous_res, 2);
             if (0.9 * previous_forcing * previous_forcing > 0.1)
-              forcing = std::max(forcing,
-                                 0.9 * previous_forcing * previous_forcing);
+              forcing =
+                std::max(forcing, 0.9 * previous_forcing * previous_forcing);
             forcing = std::min(forcing, settings.maximum_forcing_term);
           }
-        previous_res = res;
+        previous_res       = res;
         const bool inexact = settings.eisenstat_walker;
-        const bool settled = settings.exact_solve_when_settled && n_changed == 0;
-        report.linear_iterations += problem.solve_linearized(
-          w, inexact && !settled ? forcing : 0.,
-          inexact ? settings.krylov_floor_fraction * target : 0., trial);
-        line_search(problem, w, trial, residual,
-                    report.line_search_reductions);
+        const bool settled =
+          settings.exact_solve_when_settled && n_changed == 0;
+        report.linear_iterations +=
+          problem.solve_linearized(w,
+                                   inexact && !settled ? forcing : 0.,
+                                   inexact ?
+                                     settings.krylov_floor_fraction * target :
+                                     0.,
+                                   trial);
+        line_search(problem, w, trial, residual, report.line_search_reductions);
         ++report.newton_iterations;
       }
   }

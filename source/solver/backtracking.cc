@@ -4,8 +4,9 @@ namespace hemicontact
 {
   double
   backtracking_step_length(const std::function<double(double)> &energy_change,
-                           const double scale, const double min_step_length,
-                           unsigned int &n_reductions)
+                           const double                         scale,
+                           const double                         min_step_length,
+                           unsigned int                        &n_reductions)
   {
     for (double theta = 1; theta >= min_step_length; theta /= 2)
       {

@@ -19,15 +19,16 @@ namespace hemicontact
 
   template <typename OperatorType, typename PreconditionerType>
   unsigned int
-  LinearSolver::solve_cg(const OperatorType &                 op,
-                         const PreconditionerType &           preconditioner,
-                         TrilinosWrappers::MPI::Vector &      x,
+  LinearSolver::solve_cg(const OperatorType                  &op,
+                         const PreconditionerType            &preconditioner,
+                         TrilinosWrappers::MPI::Vector       &x,
                          const TrilinosWrappers::MPI::Vector &b,
                          const double                         reduction,
                          const double absolute_tolerance)
   {
-    ReductionControl control(parameters.max_iterations,
-                             std::max(absolute_tolerance, 1e-300), reduction);
+    ReductionControl                        control(parameters.max_iterations,
+                             std::max(absolute_tolerance, 1e-300),
+                             reduction);
     SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
     try
       {
@@ -47,8 +48,8 @@ namespace hemicontact
 
   unsigned int
   LinearSolver::solve_mass(const TrilinosWrappers::SparseMatrix &mass,
-                           TrilinosWrappers::MPI::Vector &       x,
-                           const TrilinosWrappers::MPI::Vector & b)
+                           TrilinosWrappers::MPI::Vector        &x,
+                           const TrilinosWrappers::MPI::Vector  &b)
   {
     TrilinosWrappers::PreconditionJacobi jacobi;
     jacobi.initialize(mass);
@@ -57,8 +58,8 @@ namespace hemicontact
 
   void
   LinearSolver::solve_direct(const TrilinosWrappers::SparseMatrix &matrix,
-                             TrilinosWrappers::MPI::Vector &       x,
-                             const TrilinosWrappers::MPI::Vector & b)
+                             TrilinosWrappers::MPI::Vector        &x,
+                             const TrilinosWrappers::MPI::Vector  &b)
   {
     SolverControl                                  control(1, 0);
     TrilinosWrappers::SolverDirect::AdditionalData data(false, "Amesos_Klu");
@@ -66,10 +67,14 @@ namespace hemicontact
     solver.solve(matrix, x, b);
   }
 
-#define HEMICONTACT_INSTANTIATE(Operator, Preconditioner)                    \
-  template unsigned int LinearSolver::solve_cg(                              \
-    const Operator &, const Preconditioner &, TrilinosWrappers::MPI::Vector &, \
-    const TrilinosWrappers::MPI::Vector &, const double, const double);
+#define HEMICONTACT_INSTANTIATE(Operator, Preconditioner) \
+  template unsigned int LinearSolver::solve_cg(           \
+    const Operator &,                                     \
+    const Preconditioner &,                               \
+    TrilinosWrappers::MPI::Vector &,                      \
+    const TrilinosWrappers::MPI::Vector &,                \
+    const double,                                         \
+    const double);
   HEMICONTACT_INSTANTIATE(TrilinosWrappers::SparseMatrix,
                           TrilinosWrappers::PreconditionAMG)
   HEMICONTACT_INSTANTIATE(TrilinosWrappers::SparseMatrix,

@@ -8,7 +8,7 @@ namespace hemicontact
   template <int dim>
   ProjectedOperator<dim>::ProjectedOperator(
     const TrilinosWrappers::SparseMatrix &step_matrix,
-    const IndexSet &                      locally_owned_dofs)
+    const IndexSet                       &locally_owned_dofs)
     : step_matrix(&step_matrix)
     , owned(&locally_owned_dofs)
   {}
@@ -17,8 +17,8 @@ namespace hemicontact
   void
   ProjectedOperator<dim>::add_node(
     const std::array<types::global_dof_index, dim> &dofs,
-    const Tensor<2, dim> &                          projector,
-    const Tensor<2, dim> &                          stiffness)
+    const Tensor<2, dim>                           &projector,
+    const Tensor<2, dim>                           &stiffness)
   {
     Node node;
     node.dofs = dofs;
@@ -38,7 +38,7 @@ namespace hemicontact
 
   template <int dim>
   void
-  ProjectedOperator<dim>::vmult(TrilinosWrappers::MPI::Vector &      dst,
+  ProjectedOperator<dim>::vmult(TrilinosWrappers::MPI::Vector       &dst,
                                 const TrilinosWrappers::MPI::Vector &src) const
   {
     projected_src = src;
@@ -101,7 +101,8 @@ namespace hemicontact
     for (const Node &node : node_blocks)
       for (unsigned int a = 0; a < dim; ++a)
         for (unsigned int b = 0; b < dim; ++b)
-          matrix.add(node.dofs[a], node.dofs[b],
+          matrix.add(node.dofs[a],
+                     node.dofs[b],
                      (a == b ? 1. : 0.) - node.projector[a][b]);
     matrix.compress(VectorOperation::add);
   }

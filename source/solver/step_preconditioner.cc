@@ -22,7 +22,7 @@ namespace hemicontact
   template <int dim>
   void
   StepPreconditioner<dim>::reinit(const DoFHandler<dim> &dof_handler,
-                                  const Mapping<dim> &   mapping)
+                                  const Mapping<dim>    &mapping)
   {
     const IndexSet &owned   = dof_handler.locally_owned_dofs();
     const unsigned  n_owned = owned.n_elements();
@@ -42,7 +42,7 @@ namespace hemicontact
     for (unsigned int d = 0; d < dim; ++d)
       centre[d] = Utilities::MPI::sum(centre[d], mpi_communicator) / n_points;
 
-    const FiniteElement<dim> &           fe = dof_handler.get_fe();
+    const FiniteElement<dim>            &fe = dof_handler.get_fe();
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -51,10 +51,10 @@ namespace hemicontact
           for (unsigned int i = 0; i < dofs.size(); ++i)
             if (owned.is_element(dofs[i]))
               {
-                const unsigned int row = owned.index_within_set(dofs[i]);
-                const unsigned int c   = fe.system_to_component_index(i).first;
+                const unsigned int   row = owned.index_within_set(dofs[i]);
+                const unsigned int   c = fe.system_to_component_index(i).first;
                 const Tensor<1, dim> x = support_points.at(dofs[i]) - centre;
-                auto mode = [&](const unsigned int m) -> double & {
+                auto mode              = [&](const unsigned int m) -> double              &{
                   return rigid_body_modes[std::size_t(m) * n_owned + row];
                 };
                 mode(c) = 1.;
@@ -90,11 +90,12 @@ namespace hemicontact
 
   template <int dim>
   std::unique_ptr<TrilinosWrappers::PreconditionAMG>
-  StepPreconditioner<dim>::make_amg(const TrilinosWrappers::SparseMatrix &matrix,
-                                    const std::vector<double> &           modes)
+  StepPreconditioner<dim>::make_amg(
+    const TrilinosWrappers::SparseMatrix &matrix,
+    const std::vector<double>            &modes)
   {
     Assert(n_modes > 0, ExcMessage("reinit() was not called."));
-    Timer timer;
+    Timer                                             timer;
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
     data.higher_order_elements = false;
@@ -163,7 +164,8 @@ namespace hemicontact
 
   template <int dim>
   void
-  StepPreconditioner<dim>::build_constrained_amg(const ProjectedOperator<dim> &op)
+  StepPreconditioner<dim>::build_constrained_amg(
+    const ProjectedOperator<dim> &op)
   {
     // K0 plus gamma d_i (I - Pi_i)_cc on the diagonal of each node, d_i the
     // mean diagonal of K0 there: the constrained directions become the
@@ -180,7 +182,8 @@ namespace hemicontact
           d += k0.diag_element(node.dofs[c]) / dim;
         for (unsigned int c = 0; c < dim; ++c)
           if (1. - node.projector[c][c] > 0)
-            penalised_step_matrix.add(node.dofs[c], node.dofs[c],
+            penalised_step_matrix.add(node.dofs[c],
+                                      node.dofs[c],
                                       tuning.constraint_penalty * d *
                                         (1. - node.projector[c][c]));
       }
@@ -211,7 +214,7 @@ namespace hemicontact
   ConstrainedAmgStatus
   StepPreconditioner<dim>::constrained_amg_status() const
   {
-    return constrained_amg ? ConstrainedAmgStatus::built :
+    return constrained_amg         ? ConstrainedAmgStatus::built :
            constrained_amg_dropped ? ConstrainedAmgStatus::dropped :
                                      ConstrainedAmgStatus::none;
   }
@@ -237,10 +240,10 @@ namespace hemicontact
   {
     const bool follow = tuning.constrained_preconditioner &&
                         tuning.constrained_amg_follows_branches;
-    const bool build_now =
-      tuning.constrained_preconditioner && !constrained_amg_dropped &&
-      (constrained_amg == nullptr ||
-       (follow && constrained_mismatch(op, true) > 0));
+    const bool build_now = tuning.constrained_preconditioner &&
+                           !constrained_amg_dropped &&
+                           (constrained_amg == nullptr ||
+                            (follow && constrained_mismatch(op, true) > 0));
     if (!follow && constrained_amg != nullptr &&
         constrained_mismatch(op) > tuning.constrained_mismatch_limit)
       {
@@ -252,15 +255,15 @@ namespace hemicontact
     const bool split_mismatched = constrained_amg != nullptr && !build_now;
     if (build_now)
       build_constrained_amg(op);
-    amg_in_use = constrained_amg ? constrained_amg.get() :
-                                   &step_amg(op.get_step_matrix());
+    amg_in_use =
+      constrained_amg ? constrained_amg.get() : &step_amg(op.get_step_matrix());
 
     const TrilinosWrappers::SparseMatrix &k0 = op.get_step_matrix();
     splits.resize(op.nodes().size());
     for (unsigned int i = 0; i < op.nodes().size(); ++i)
       {
-        const auto &node  = op.nodes()[i];
-        NodeSplit & split = splits[i];
+        const auto &node     = op.nodes()[i];
+        NodeSplit  &split    = splits[i];
         split.local_index    = node.local_index;
         split.soft_projector = node.projector;
         split.stiff_inverse  = Tensor<2, dim>();
@@ -298,7 +301,7 @@ namespace hemicontact
 
   template <int dim>
   void
-  StepPreconditioner<dim>::vmult(TrilinosWrappers::MPI::Vector &      dst,
+  StepPreconditioner<dim>::vmult(TrilinosWrappers::MPI::Vector       &dst,
                                  const TrilinosWrappers::MPI::Vector &src) const
   {
     Assert(amg_in_use != nullptr, ExcMessage("prepare() was not called."));

@@ -5,10 +5,10 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/reference_cell.h>
 
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/output/output_file.h>
 #include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/verification/convergence_study.h>
-#include <hemicontact/output/output_file.h>
-#include <hemicontact/base/exceptions.h>
 #include <hemicontact/verification/manufactured_smoothness.h>
 #include <hemicontact/verification/manufactured_solution.h>
 
@@ -35,24 +35,28 @@ namespace hemicontact
      *  @p cache: the exact fields' spatial part at its quadrature points. */
     template <int dim>
     StepErrors
-    step_errors(const ContactProblem<dim> &          problem,
-                const ManufacturedSolution<dim> &    exact,
-                const double                         t,
-                const IndexSet &                     relevant,
-                SpatialCache &                       cache,
-                MPI_Comm                             comm)
+    step_errors(const ContactProblem<dim>       &problem,
+                const ManufacturedSolution<dim> &exact,
+                const double                     t,
+                const IndexSet                  &relevant,
+                SpatialCache                    &cache,
+                MPI_Comm                         comm)
     {
-      const DoFHandler<dim> &dof_handler = problem.get_dof_handler();
+      const DoFHandler<dim>        &dof_handler = problem.get_dof_handler();
       TrilinosWrappers::MPI::Vector w(dof_handler.locally_owned_dofs(),
-                                      relevant, comm);
+                                      relevant,
+                                      comm);
       TrilinosWrappers::MPI::Vector u(w);
       w = problem.get_velocity();
       u = problem.get_displacement();
 
       // of higher order than the elements (exact for degree 5)
       const Quadrature<dim> quadrature =
-        dof_handler.get_fe().reference_cell().template get_gauss_type_quadrature<dim>(3);
-      FEValues<dim> fe_values(problem.get_mapping(), dof_handler.get_fe(),
+        dof_handler.get_fe()
+          .reference_cell()
+          .template get_gauss_type_quadrature<dim>(3);
+      FEValues<dim>                    fe_values(problem.get_mapping(),
+                              dof_handler.get_fe(),
                               quadrature,
                               update_values | update_gradients |
                                 update_quadrature_points | update_JxW_values);
@@ -70,13 +74,14 @@ namespace hemicontact
             fe_values[v].get_function_gradients(w, grad_w_h);
             fe_values[v].get_function_gradients(u, grad_u_h);
             const auto exact_values =
-              exact.evaluate_fields(fe_values.get_quadrature_points(), t,
+              exact.evaluate_fields(fe_values.get_quadrature_points(),
+                                    t,
                                     &cache);
             for (const unsigned int q : fe_values.quadrature_point_indices())
               {
-                const auto &ex = exact_values[q];
-                const Tensor<2, dim> gw = ex.grad_w - grad_w_h[q];
-                const Tensor<2, dim> gu = ex.grad_u - grad_u_h[q];
+                const auto          &ex  = exact_values[q];
+                const Tensor<2, dim> gw  = ex.grad_w - grad_w_h[q];
+                const Tensor<2, dim> gu  = ex.grad_u - grad_u_h[q];
                 const double         JxW = fe_values.JxW(q);
                 e.w_L2 += (ex.w - w_h[q]).norm_square() * JxW;
                 e.w_V += symmetrize(gw) * symmetrize(gw) * JxW;
@@ -127,8 +132,8 @@ namespace hemicontact
         sum_dofs += s.n_dofs;
         max_dofs = std::max(max_dofs, s.n_dofs);
         ++n_steps;
-        const unsigned int counts[5] = {s.n_separating, s.n_normal_stick,
-                                        s.n_damped, s.n_stick, s.n_slip};
+        const unsigned int counts[5] = {
+          s.n_separating, s.n_normal_stick, s.n_damped, s.n_stick, s.n_slip};
         for (unsigned int b = 0; b < 5; ++b)
           branch[b] += counts[b];
       }
@@ -138,14 +143,14 @@ namespace hemicontact
       result() const
       {
         LevelResult r;
-        r.n_steps                = n_steps;
-        r.errors                 = errors;
-        r.errors.E_V             = std::sqrt(sum_V);
-        r.errors.E_V_H1          = std::sqrt(sum_V_H1);
-        r.mean_dofs              = sum_dofs / n_steps;
-        r.max_dofs               = max_dofs;
-        r.mean_newton_iterations = double(newton) / n_steps;
-        r.max_newton_iterations  = max_newton;
+        r.n_steps                   = n_steps;
+        r.errors                    = errors;
+        r.errors.E_V                = std::sqrt(sum_V);
+        r.errors.E_V_H1             = std::sqrt(sum_V_H1);
+        r.mean_dofs                 = sum_dofs / n_steps;
+        r.max_dofs                  = max_dofs;
+        r.mean_newton_iterations    = double(newton) / n_steps;
+        r.max_newton_iterations     = max_newton;
         const double n_pairs_normal = branch[0] + branch[1] + branch[2];
         for (unsigned int b = 0; b < 5; ++b)
           r.branch_share[b] = branch[b] / n_pairs_normal;
@@ -159,20 +164,26 @@ namespace hemicontact
      */
     template <int dim>
     LevelResult
-    run_level(const Parameters &p, ParameterHandler &prm, MPI_Comm comm,
-              const bool check_smoothness)
+    run_level(const Parameters &p,
+              ParameterHandler &prm,
+              MPI_Comm          comm,
+              const bool        check_smoothness)
     {
-      Timer                            wall;
+      Timer                           wall;
       const ContactLaws               laws = create_contact_laws(prm);
       const ManufacturedSolution<dim> exact(p, *laws.normal, *laws.friction);
-      ContactProblem<dim> problem(p, create_contact_laws(prm),
-                                  exact.make_problem_data(), comm);
+      ContactProblem<dim>             problem(p,
+                                  create_contact_laws(prm),
+                                  exact.make_problem_data(),
+                                  comm);
       problem.setup();
       if (check_smoothness)
         {
           const std::string jump = find_manufactured_jump(
-            exact, problem.get_dof_handler().get_triangulation(),
-            p.time.end_time, comm);
+            exact,
+            problem.get_dof_handler().get_triangulation(),
+            p.time.end_time,
+            comm);
           if (!jump.empty() && Utilities::MPI::this_mpi_process(comm) == 0)
             std::cerr
               << "hemicontact: warning: the manufactured solution is not "
@@ -249,11 +260,11 @@ namespace hemicontact
     std::string
     csv_row(const unsigned int level, const LevelResult &r)
     {
-      const ErrorNorms & e = r.errors;
+      const ErrorNorms  &e = r.errors;
       std::ostringstream csv;
       csv << std::setprecision(10) << level << "," << r.h << "," << r.k << ","
-          << r.n_dofs << "," << r.n_steps << "," << e.E_H << "," << e.E_V
-          << "," << e.E_u << "," << e.E_V_H1 << "," << e.E_u_H1 << ","
+          << r.n_dofs << "," << r.n_steps << "," << e.E_H << "," << e.E_V << ","
+          << e.E_u << "," << e.E_V_H1 << "," << e.E_u_H1 << ","
           << r.mean_newton_iterations << "," << r.max_newton_iterations << ","
           << r.wall_seconds;
       for (const double share : r.branch_share)
@@ -280,8 +291,10 @@ namespace hemicontact
      * over the steps instead of the final mesh's.
      */
     void
-    add_table_row(ConvergenceTable &table, const unsigned int level,
-                  const LevelResult &r, const bool adaptive)
+    add_table_row(ConvergenceTable  &table,
+                  const unsigned int level,
+                  const LevelResult &r,
+                  const bool         adaptive)
     {
       table.add_value("level", level);
       table.add_value("h", r.h);
@@ -309,8 +322,9 @@ namespace hemicontact
      * table has the column "mean dofs").
      */
     void
-    format_table(ConvergenceTable &table, const unsigned int n_levels,
-                 const bool against_dofs)
+    format_table(ConvergenceTable  &table,
+                 const unsigned int n_levels,
+                 const bool         against_dofs)
     {
       for (const char *column : {"E_H", "E_V", "E_u", "E_V(H1)", "E_u(H1)"})
         {
@@ -363,10 +377,10 @@ namespace hemicontact
           {
             // the adaptive mesh may grow as the uniform one does
             p.adaptivity.max_level += level;
-            p.adaptivity.max_cells = static_cast<unsigned int>(std::min(
-              std::ldexp(double(p.adaptivity.max_cells),
-                         parameters.dimension * level),
-              double(std::numeric_limits<unsigned int>::max())));
+            p.adaptivity.max_cells = static_cast<unsigned int>(
+              std::min(std::ldexp(double(p.adaptivity.max_cells),
+                                  parameters.dimension * level),
+                       double(std::numeric_limits<unsigned int>::max())));
           }
       }
     if (type == StudyType::k || type == StudyType::coupled)
@@ -376,16 +390,17 @@ namespace hemicontact
 
   template <int dim>
   std::vector<LevelResult>
-  run_convergence_study(const Parameters &parameters, ParameterHandler &prm,
-                        MPI_Comm comm)
+  run_convergence_study(const Parameters &parameters,
+                        ParameterHandler &prm,
+                        MPI_Comm          comm)
   {
-    const bool root    = Utilities::MPI::this_mpi_process(comm) == 0;
+    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
     const bool verbose =
       root && parameters.output.terminal != TerminalOutput::quiet;
     const StudyType    type = parameters.study.type;
     const unsigned int n_levels =
       type == StudyType::single ? 1 : parameters.study.n_levels;
-    const bool         adaptive = parameters.adaptivity.interval > 0;
+    const bool adaptive = parameters.adaptivity.interval > 0;
     // a 'k' study keeps its orders per halving of k
     const bool against_dofs =
       adaptive && (type == StudyType::h || type == StudyType::coupled);

@@ -12,18 +12,20 @@ namespace hemicontact
 {
   namespace
   {
-    constexpr unsigned int max_cells   = 32;
+    constexpr unsigned int max_cells = 32;
     /** Each path is bisected from this many equal pieces, so that a jump
      *  smaller than the smooth change over the whole path is still met. */
-    constexpr unsigned int pieces      = 4;
-    constexpr unsigned int bisections  = 40;
+    constexpr unsigned int pieces     = 4;
+    constexpr unsigned int bisections = 40;
     /** A field whose increment stays above this fraction of its size is
      *  taken to jump (a continuous one falls to about 2^-40 of it). */
     constexpr double jump_threshold = 1e-6;
 
-    constexpr unsigned int n_fields                  = 4;
-    const char *const      field_names[n_fields] = {"u", "w = du/dt",
-                                                    "grad u", "grad w"};
+    constexpr unsigned int n_fields              = 4;
+    const char *const      field_names[n_fields] = {"u",
+                                                    "w = du/dt",
+                                                    "grad u",
+                                                    "grad w"};
 
     /** The four fields of @p v flattened, per field. */
     template <int dim>
@@ -66,7 +68,7 @@ namespace hemicontact
   template <int dim>
   std::string
   find_manufactured_jump(const ManufacturedSolution<dim> &exact,
-                         const Triangulation<dim> &       mesh,
+                         const Triangulation<dim>        &mesh,
                          const double                     end_time,
                          MPI_Comm                         comm)
   {
@@ -74,11 +76,11 @@ namespace hemicontact
     // x (at a fixed t) or in t (at a fixed x)
     using Path = std::function<std::pair<Point<dim>, double>(double)>;
     std::vector<Path> paths;
-    unsigned int n_owned = 0;
+    unsigned int      n_owned = 0;
     for (const auto &cell : mesh.active_cell_iterators())
       n_owned += cell->is_locally_owned();
-    const unsigned int stride  = std::max(1u, n_owned / max_cells);
-    unsigned int       index   = 0;
+    const unsigned int stride = std::max(1u, n_owned / max_cells);
+    unsigned int       index  = 0;
     for (const auto &cell : mesh.active_cell_iterators())
       if (cell->is_locally_owned() && index++ % stride == 0)
         for (const unsigned int a : cell->vertex_indices())
@@ -122,35 +124,37 @@ namespace hemicontact
           {
             if (!(scale[i] > 0))
               continue;
-          for (unsigned int piece = 0; piece < pieces && found.empty(); ++piece)
-          {
-            double lower = double(piece) / pieces, upper = double(piece + 1) / pieces;
-            auto   f_lower = at(path, lower)[i], f_upper = at(path, upper)[i];
-            for (unsigned int j = 0; j < bisections; ++j)
+            for (unsigned int piece = 0; piece < pieces && found.empty();
+                 ++piece)
               {
-                const double mid   = (lower + upper) / 2;
-                const auto   f_mid = at(path, mid)[i];
-                if (distance(f_lower, f_mid) >= distance(f_mid, f_upper))
+                double lower = double(piece) / pieces,
+                       upper = double(piece + 1) / pieces;
+                auto f_lower = at(path, lower)[i], f_upper = at(path, upper)[i];
+                for (unsigned int j = 0; j < bisections; ++j)
                   {
-                    upper   = mid;
-                    f_upper = f_mid;
+                    const double mid   = (lower + upper) / 2;
+                    const auto   f_mid = at(path, mid)[i];
+                    if (distance(f_lower, f_mid) >= distance(f_mid, f_upper))
+                      {
+                        upper   = mid;
+                        f_upper = f_mid;
+                      }
+                    else
+                      {
+                        lower   = mid;
+                        f_lower = f_mid;
+                      }
                   }
-                else
+                const double jump = distance(f_lower, f_upper) / scale[i];
+                if (jump > jump_threshold || !std::isfinite(jump))
                   {
-                    lower   = mid;
-                    f_lower = f_mid;
+                    const auto [p, t] = path((lower + upper) / 2);
+                    std::ostringstream where;
+                    where << field_names[i] << " jumps by " << jump
+                          << " of its size near x = (" << p << "), t = " << t;
+                    found = where.str();
                   }
               }
-            const double jump = distance(f_lower, f_upper) / scale[i];
-            if (jump > jump_threshold || !std::isfinite(jump))
-              {
-                const auto [p, t] = path((lower + upper) / 2);
-                std::ostringstream where;
-                where << field_names[i] << " jumps by " << jump
-                      << " of its size near x = (" << p << "), t = " << t;
-                found = where.str();
-              }
-          }
           }
         if (!found.empty())
           break;
@@ -163,8 +167,12 @@ namespace hemicontact
 
   template std::string
   find_manufactured_jump<2>(const ManufacturedSolution<2> &,
-                            const Triangulation<2> &, const double, MPI_Comm);
+                            const Triangulation<2> &,
+                            const double,
+                            MPI_Comm);
   template std::string
   find_manufactured_jump<3>(const ManufacturedSolution<3> &,
-                            const Triangulation<3> &, const double, MPI_Comm);
+                            const Triangulation<3> &,
+                            const double,
+                            MPI_Comm);
 } // namespace hemicontact

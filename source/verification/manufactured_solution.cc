@@ -18,9 +18,10 @@ namespace hemicontact
     }
 
     std::vector<Expression>
-    parse_vector(const std::string &text, const int dim,
+    parse_vector(const std::string                   &text,
+                 const int                            dim,
                  const std::map<std::string, double> &constants,
-                 const std::string &name)
+                 const std::string                   &name)
     {
       std::vector<std::string> parts = Utilities::split_string_list(text, ';');
       if (parts.size() == 1 && dim > 1)
@@ -30,15 +31,17 @@ namespace hemicontact
                 std::to_string(dim) + " expressions separated by ';'.");
       std::vector<Expression> result;
       for (const std::string &part : parts)
-        result.emplace_back(part, variable_names(dim), constants,
+        result.emplace_back(part,
+                            variable_names(dim),
+                            constants,
                             "manufactured solution/" + name);
       return result;
     }
   } // namespace
 
   template <int dim>
-  ManufacturedSolution<dim>::ManufacturedSolution(const Parameters &  parameters,
-                                                  const NormalLaw &   law,
+  ManufacturedSolution<dim>::ManufacturedSolution(const Parameters  &parameters,
+                                                  const NormalLaw   &law,
                                                   const FrictionLaw &friction)
     : law(law)
     , friction(friction)
@@ -48,15 +51,20 @@ namespace hemicontact
   {
     const auto constants = parse_constants(parameters.data.constants);
     const ManufacturedParameters &m = parameters.manufactured;
-    displacement = parse_vector(m.exact_displacement, dim, constants,
-                                "exact displacement");
-    normal_multiplier = std::make_unique<Expression>(
-      m.normal_multiplier, variable_names(dim), constants,
-      "manufactured solution/normal multiplier");
-    tangential_multiplier = parse_vector(m.tangential_multiplier, dim,
-                                         constants, "tangential multiplier");
-    friction_bound = std::make_shared<FrictionBound<dim>>(
-      parameters.data.friction_bound, parameters.data.constants);
+    displacement =
+      parse_vector(m.exact_displacement, dim, constants, "exact displacement");
+    normal_multiplier =
+      std::make_unique<Expression>(m.normal_multiplier,
+                                   variable_names(dim),
+                                   constants,
+                                   "manufactured solution/normal multiplier");
+    tangential_multiplier = parse_vector(m.tangential_multiplier,
+                                         dim,
+                                         constants,
+                                         "tangential multiplier");
+    friction_bound =
+      std::make_shared<FrictionBound<dim>>(parameters.data.friction_bound,
+                                           parameters.data.constants);
 
     // the derivatives, once: t is variable number dim
     for (int c = 0; c < dim; ++c)
@@ -81,8 +89,8 @@ namespace hemicontact
 
     // the tapes, in the order unpack_fields() and evaluate() read them
     std::vector<const Expression *> fields;
-    for (const auto *list : {&displacement, &velocity, &displacement_gradient,
-                             &velocity_gradient})
+    for (const auto *list :
+         {&displacement, &velocity, &displacement_gradient, &velocity_gradient})
       for (const Expression &e : *list)
         fields.push_back(&e);
     // the time (variable dim) is the same at all points of a batch
@@ -112,10 +120,10 @@ namespace hemicontact
      *  results per point (through @p cache unless it is null). */
     template <int dim>
     std::vector<double>
-    evaluate_tape(const ExpressionTape &         tape,
+    evaluate_tape(const ExpressionTape          &tape,
                   const std::vector<Point<dim>> &points,
                   const double                   t,
-                  SpatialCache *                 cache = nullptr)
+                  SpatialCache                  *cache = nullptr)
     {
       std::vector<double> at(points.size() * (dim + 1));
       for (unsigned int p = 0; p < points.size(); ++p)
@@ -135,7 +143,8 @@ namespace hemicontact
     /** u, w, grad u, grad w from the outputs of the fields tape. */
     template <int dim>
     void
-    unpack_fields(const double *r, typename ManufacturedSolution<dim>::Values &v)
+    unpack_fields(const double                               *r,
+                  typename ManufacturedSolution<dim>::Values &v)
     {
       for (int c = 0; c < dim; ++c)
         {
@@ -153,7 +162,7 @@ namespace hemicontact
   template <int dim>
   void
   ManufacturedSolution<dim>::unpack_second_derivatives(const double *r,
-                                                       Values &      v) const
+                                                       Values       &v) const
   {
     unsigned int k = 0;
     for (int c = 0; c < dim; ++c)
@@ -174,7 +183,7 @@ namespace hemicontact
   ManufacturedSolution<dim>::evaluate(const std::vector<Point<dim>> &points,
                                       const double                   t) const
   {
-    const std::vector<double> r = evaluate_tape(*all_tape, points, t);
+    const std::vector<double> r        = evaluate_tape(*all_tape, points, t);
     const unsigned int        n_fields = fields_tape->n_outputs();
     std::vector<Values>       values(points.size());
     for (unsigned int p = 0; p < points.size(); ++p)
@@ -191,7 +200,7 @@ namespace hemicontact
   ManufacturedSolution<dim>::evaluate_fields(
     const std::vector<Point<dim>> &points,
     const double                   t,
-    SpatialCache *                 cache) const
+    SpatialCache                  *cache) const
   {
     const std::vector<double> r = evaluate_tape(*fields_tape, points, t, cache);
     std::vector<Values>       values(points.size());
@@ -218,7 +227,7 @@ namespace hemicontact
   template <int dim>
   std::vector<Tensor<1, dim>>
   ManufacturedSolution<dim>::body_force(const std::vector<Point<dim>> &points,
-                                        const double  t,
+                                        const double                   t,
                                         SpatialCache *cache) const
   {
     const std::vector<double> r = evaluate_tape(*force_tape, points, t, cache);
@@ -263,7 +272,7 @@ namespace hemicontact
 
   template <int dim>
   Tensor<1, dim>
-  ManufacturedSolution<dim>::surface_traction(const Point<dim> &    p,
+  ManufacturedSolution<dim>::surface_traction(const Point<dim>     &p,
                                               const Tensor<1, dim> &normal,
                                               const double          t) const
   {
@@ -272,15 +281,15 @@ namespace hemicontact
 
   template <int dim>
   Tensor<1, dim>
-  ManufacturedSolution<dim>::contact_traction(const Point<dim> &    p,
+  ManufacturedSolution<dim>::contact_traction(const Point<dim>     &p,
                                               const Tensor<1, dim> &normal,
                                               const double          t) const
   {
-    const Values         v      = evaluate_fields(p, t);
-    const double         w_n    = v.w * normal;
-    const Tensor<1, dim> w_t    = v.w - w_n * normal;
-    const double         scale  = 1e-13 * (1 + v.w.norm());
-    const double         bound  = friction_bound->value(p, t, v.u * normal);
+    const Values         v     = evaluate_fields(p, t);
+    const double         w_n   = v.w * normal;
+    const Tensor<1, dim> w_t   = v.w - w_n * normal;
+    const double         scale = 1e-13 * (1 + v.w.norm());
+    const double         bound = friction_bound->value(p, t, v.u * normal);
 
     std::vector<double> at(dim + 1);
     for (int i = 0; i < dim; ++i)
@@ -336,7 +345,7 @@ namespace hemicontact
       }
       void
       vector_value_list(const std::vector<Point<dim>> &points,
-                        std::vector<Vector<double>> &  values) const override
+                        std::vector<Vector<double>>   &values) const override
       {
         // one batch: what depends only on t is computed once; f0 is
         // assembled at every step on the same cells: what depends only on
@@ -354,8 +363,8 @@ namespace hemicontact
         const std::vector<Values> v = m.evaluate_fields(points, t);
         for (unsigned int p = 0; p < points.size(); ++p)
           for (int c = 0; c < dim; ++c)
-            values[p](c) = kind == Kind::initial_displacement ? v[p].u[c] :
-                                                               v[p].w[c];
+            values[p](c) =
+              kind == Kind::initial_displacement ? v[p].u[c] : v[p].w[c];
       }
       double
       value(const Point<dim> &p, const unsigned int c) const override
@@ -366,8 +375,8 @@ namespace hemicontact
       }
 
     private:
-      const ManufacturedSolution<dim> &    m;
-      const Kind                           kind;
+      const ManufacturedSolution<dim>    &m;
+      const Kind                          kind;
       const std::unique_ptr<SpatialCache> cache;
     };
 
@@ -376,9 +385,9 @@ namespace hemicontact
       std::make_unique<Field>(*this, Kind::initial_displacement);
     data.initial_velocity =
       std::make_unique<Field>(*this, Kind::initial_velocity);
-    data.surface_traction     = std::make_unique<Functions::ZeroFunction<dim>>(dim);
-    data.contact_traction     = std::make_unique<Functions::ZeroFunction<dim>>(dim);
-    data.friction_bound = friction_bound;
+    data.surface_traction = std::make_unique<Functions::ZeroFunction<dim>>(dim);
+    data.contact_traction = std::make_unique<Functions::ZeroFunction<dim>>(dim);
+    data.friction_bound   = friction_bound;
     data.surface_traction_with_normal =
       [this](const Point<dim> &p, const Tensor<1, dim> &n, double t) {
         return surface_traction(p, n, t);

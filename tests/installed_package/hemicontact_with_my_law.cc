@@ -2,9 +2,9 @@
 // velocity-strengthening friction F(s) = F_b (1 + c s), the remainder
 // r(s) = F_b c s (monotone, so alpha_tau = 0). Everything else, the
 // parameter file, the output and the exit codes, is hemicontact's.
+#include <hemicontact/base/exceptions.h>
 #include <hemicontact/input/command_line.h>
 #include <hemicontact/laws/friction_law.h>
-#include <hemicontact/base/exceptions.h>
 #include <hemicontact/laws/law_parameters.h>
 
 #include <string>
@@ -18,7 +18,9 @@ public:
   declare_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection(law_name);
-    prm.declare_entry("coefficient", "1", dealii::Patterns::Double(),
+    prm.declare_entry("coefficient",
+                      "1",
+                      dealii::Patterns::Double(),
                       "c >= 0 in F(s) = F_b (1 + c s).");
     prm.leave_subsection();
   }
@@ -26,8 +28,9 @@ public:
   explicit VelocityStrengtheningLaw(dealii::ParameterHandler &prm)
     : c(hemicontact::get_law_double(prm, law_name, "coefficient"))
   {
-    hemicontact::require(c >= 0, std::string("friction law '") + law_name +
-                                   "': the coefficient must not be negative.");
+    hemicontact::require(c >= 0,
+                         std::string("friction law '") + law_name +
+                           "': the coefficient must not be negative.");
   }
 
   std::string

@@ -31,9 +31,10 @@ namespace hemicontact
      * this order), @p constants are fixed values. Throws InputError with
      * @p parameter_name on a syntax error or an unknown name.
      */
-    Expression(const std::string &text, const std::vector<std::string> &variables,
+    Expression(const std::string                   &text,
+               const std::vector<std::string>      &variables,
                const std::map<std::string, double> &constants,
-               const std::string &parameter_name);
+               const std::string                   &parameter_name);
 
     /**
      * The partial derivative by the variable number @p index, as an
@@ -68,13 +69,13 @@ namespace hemicontact
       sinh,
       cosh,
       atan,
-      pos,   ///< max(a, 0)
-      step,  ///< 1 if a > 0, else 0
-      sign,  ///< -1 if a < 0, else 1
-      pow,   ///< the first function of two arguments
+      pos,  ///< max(a, 0)
+      step, ///< 1 if a > 0, else 0
+      sign, ///< -1 if a < 0, else 1
+      pow,  ///< the first function of two arguments
       max,
       min,
-      less,  ///< the first comparison or logical operator
+      less, ///< the first comparison or logical operator
       greater,
       less_equal,
       greater_equal,
@@ -95,10 +96,10 @@ namespace hemicontact
         binary,
         function
       } kind;
-      double                             value = 0;
-      unsigned int                       index = 0; ///< variable index
-      std::string                        op;        ///< operator/function
-      Function fn = Function::sin; ///< of a function node
+      double       value = 0;
+      unsigned int index = 0;          ///< variable index
+      std::string  op;                 ///< operator/function
+      Function     fn = Function::sin; ///< of a function node
       std::vector<std::unique_ptr<Node>> args;
     };
 
@@ -223,8 +224,7 @@ namespace hemicontact
 
   template <typename Number>
   Number
-  Expression::apply_function(const Function f, const Number &a,
-                             const Number &b)
+  Expression::apply_function(const Function f, const Number &a, const Number &b)
   {
     using std::atan;
     using std::cos;

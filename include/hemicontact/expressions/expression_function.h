@@ -28,9 +28,9 @@ namespace hemicontact
      * Parse @p expressions (one per component) with the @p constants.
      * Throws the InputError of Expression, which names @p parameter_name.
      */
-    ExpressionFunction(const std::vector<std::string> &     expressions,
+    ExpressionFunction(const std::vector<std::string>      &expressions,
                        const std::map<std::string, double> &constants,
-                       const std::string &                  parameter_name);
+                       const std::string                   &parameter_name);
 
     /** The variable names x, y[, z], t, in the order of evaluation. */
     static std::vector<std::string>
@@ -42,24 +42,24 @@ namespace hemicontact
 
     void
     vector_value(const dealii::Point<dim> &p,
-                 dealii::Vector<double> &  values) const override;
+                 dealii::Vector<double>   &values) const override;
 
     void
     value_list(const std::vector<dealii::Point<dim>> &points,
-               std::vector<double> &                  values,
+               std::vector<double>                   &values,
                const unsigned int component = 0) const override;
 
     void
     vector_value_list(
       const std::vector<dealii::Point<dim>> &points,
-      std::vector<dealii::Vector<double>> &  values) const override;
+      std::vector<dealii::Vector<double>>   &values) const override;
 
   private:
     /** The values of all components at @p points into results (n_points
      *  times n_components, by point). */
     void
     evaluate(const std::vector<dealii::Point<dim>> &points,
-             std::vector<double> &                  results) const;
+             std::vector<double>                   &results) const;
 
     ExpressionTape tape;
   };

@@ -26,7 +26,7 @@ namespace hemicontact
      */
     explicit ExpressionTape(
       const std::vector<const Expression *> &expressions,
-      const std::vector<unsigned int> &      uniform_variables = {});
+      const std::vector<unsigned int>       &uniform_variables = {});
 
     /**
      * The values of the expressions, in the order given to the
@@ -34,7 +34,7 @@ namespace hemicontact
      */
     void
     evaluate(const std::vector<double> &variables,
-             std::vector<double> &      results) const;
+             std::vector<double>       &results) const;
 
     /**
      * The values at @p n_points points at once: the point p has the
@@ -43,10 +43,10 @@ namespace hemicontact
      * so a batch costs less than its points one by one.
      */
     void
-    evaluate(const double *     variables,
+    evaluate(const double      *variables,
              const unsigned int n_variables,
              const unsigned int n_points,
-             double *           results) const;
+             double            *results) const;
 
     /**
      * The values, at each of @p n_points points, that depend on no uniform
@@ -54,10 +54,10 @@ namespace hemicontact
      * stored as spatial[k n_points + p]. They are the same at every time.
      */
     void
-    evaluate_spatial(const double *     variables,
+    evaluate_spatial(const double      *variables,
                      const unsigned int n_variables,
                      const unsigned int n_points,
-                     double *           spatial) const;
+                     double            *spatial) const;
 
     /**
      * evaluate() at points whose evaluate_spatial() values are @p spatial:
@@ -65,11 +65,11 @@ namespace hemicontact
      * are the same bits as evaluate()'s.
      */
     void
-    evaluate_cached(const double *     variables,
+    evaluate_cached(const double      *variables,
                     const unsigned int n_variables,
                     const unsigned int n_points,
-                    const double *     spatial,
-                    double *           results) const;
+                    const double      *spatial,
+                    double            *results) const;
 
     /** The number of values per point evaluate_spatial() returns. */
     unsigned int
@@ -112,12 +112,12 @@ namespace hemicontact
 
     struct Instruction
     {
-      Op           op;
+      Op                   op;
       Expression::Function function = Expression::Function::sin;
-      unsigned int a = 0, b = 0, c = 0; ///< operand instructions
-      unsigned int n = 0;        ///< variable index or integer exponent
-      double       value = 0;    ///< constant
-      unsigned int n_operands = 0;
+      unsigned int         a = 0, b = 0, c = 0; ///< operand instructions
+      unsigned int         n     = 0; ///< variable index or integer exponent
+      double               value = 0; ///< constant
+      unsigned int         n_operands = 0;
       /** Depends only on constants and uniform variables. */
       bool uniform = false;
       /** Depends on a uniform variable. */
@@ -138,14 +138,15 @@ namespace hemicontact
 
     /** Run the instructions of @p pass at @p n_points points. */
     double *
-    execute(const double *variables, const unsigned int n_variables,
-            const unsigned int n_points, const Pass pass,
-            const double *spatial) const;
+    execute(const double      *variables,
+            const unsigned int n_variables,
+            const unsigned int n_points,
+            const Pass         pass,
+            const double      *spatial) const;
 
     /** The results from the registers @p r of execute(). */
     void
-    gather(const double *r, const unsigned int n_points,
-           double *results) const;
+    gather(const double *r, const unsigned int n_points, double *results) const;
 
     /** The instruction computing @p node, appended unless it exists. */
     unsigned int
@@ -163,8 +164,13 @@ namespace hemicontact
       given_spatial_instructions;
     /** While compiling: the instruction of each (op, function, a, b, c,
      *  n, value bits) appended so far. */
-    using Key = std::tuple<int, int, unsigned int, unsigned int, unsigned int,
-                           unsigned int, std::uint64_t>;
+    using Key = std::tuple<int,
+                           int,
+                           unsigned int,
+                           unsigned int,
+                           unsigned int,
+                           unsigned int,
+                           std::uint64_t>;
     std::map<Key, unsigned int> known;
   };
 } // namespace hemicontact

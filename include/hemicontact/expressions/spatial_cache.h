@@ -31,8 +31,10 @@ namespace hemicontact
 
     /** ExpressionTape::evaluate() of the batch, using the cache. */
     void
-    evaluate(const double *variables, const unsigned int n_variables,
-             const unsigned int n_points, double *results);
+    evaluate(const double      *variables,
+             const unsigned int n_variables,
+             const unsigned int n_points,
+             double            *results);
 
     /** The bytes of the remembered batches. */
     std::size_t
@@ -52,7 +54,8 @@ namespace hemicontact
 
     /** Whether @p batch has the points of @p variables. */
     bool
-    same_points(const Batch &batch, const double *variables,
+    same_points(const Batch       &batch,
+                const double      *variables,
                 const unsigned int n_variables,
                 const unsigned int n_points) const;
 

@@ -29,16 +29,18 @@ namespace hemicontact
   /** Mesh: built-in rectangle/box or a Gmsh file, and the element type. */
   struct GeometryParameters
   {
-    MeshType            mesh_type;
-    CellType            cell_type;
-    std::vector<double> lower_left; ///< corner of the rectangle/box
-    std::vector<double> upper_right;
+    MeshType                  mesh_type;
+    CellType                  cell_type;
+    std::vector<double>       lower_left; ///< corner of the rectangle/box
+    std::vector<double>       upper_right;
     std::vector<unsigned int> subdivisions;
     std::string               mesh_file;
     unsigned int              global_refinements;
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   /** The three boundary parts, each a set of boundary ids. */
@@ -48,8 +50,10 @@ namespace hemicontact
     std::vector<unsigned int> traction_ids; ///< Gamma_2: sigma nu = f2
     std::vector<unsigned int> contact_ids;  ///< Gamma_3: contact
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   /** An isotropic Lame pair, given either as (mu, lambda) or as (E, nu). */
@@ -58,9 +62,11 @@ namespace hemicontact
     double mu;
     double lambda;
 
-    static void declare(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
     /** Parse; @p name ("elasticity"/"viscosity") is used in error messages. */
-    void parse(ParameterHandler &prm, const std::string &name);
+    void
+    parse(ParameterHandler &prm, const std::string &name);
   };
 
   /** Kelvin-Voigt material: density, viscosity A and elasticity B. */
@@ -70,8 +76,10 @@ namespace hemicontact
     LamePair viscosity;
     LamePair elasticity;
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   /** Uniform time stepping t_n = n k on [0, T]. */
@@ -82,8 +90,10 @@ namespace hemicontact
     /** Run a time step above the left-point rule's stability limit. */
     bool allow_unstable_time_step;
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   /** The problem class (doc/theory.md, section 9). */
@@ -106,23 +116,27 @@ namespace hemicontact
     ProblemClass problem_class;
     TimeScheme   time_scheme;
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   /** Data of the problem as expressions in x, y, z, t. */
   struct DataParameters
   {
     std::string constants;
-    std::string body_force;          ///< f0(x,t)
-    std::string surface_traction;    ///< f2(x,t) on Gamma_2
-    std::string contact_traction;    ///< f3(x,t) on Gamma_3 (manufactured data)
-    std::string friction_bound;      ///< F_b(x) >= 0
-    std::string initial_displacement;///< u0(x)
-    std::string initial_velocity;    ///< w0(x)
+    std::string body_force;       ///< f0(x,t)
+    std::string surface_traction; ///< f2(x,t) on Gamma_2
+    std::string contact_traction; ///< f3(x,t) on Gamma_3 (manufactured data)
+    std::string friction_bound;   ///< F_b(x) >= 0
+    std::string initial_displacement; ///< u0(x)
+    std::string initial_velocity;     ///< w0(x)
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   /** Where Newton starts in a step. */
@@ -143,8 +157,10 @@ namespace hemicontact
     InitialGuess initial_guess;
     bool         strict_convexity_check;
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   /** The linear solver of a Newton iteration. */
@@ -169,8 +185,10 @@ namespace hemicontact
     double           relative_tolerance;
     unsigned int     max_iterations;
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   /** The format of the solution files. */
@@ -198,21 +216,23 @@ namespace hemicontact
   /** What is written, where and how often. */
   struct OutputParameters
   {
-    std::string  directory;
+    std::string directory;
     /** Solution files and contact tables every this many steps, 0 = never. */
-    unsigned int   output_interval;
-    SolutionFormat format;
+    unsigned int    output_interval;
+    SolutionFormat  format;
     OutputPrecision precision;
-    std::string    probe_points; ///< "x,y; x,y" (empty: none)
-    TerminalOutput terminal;
+    std::string     probe_points; ///< "x,y; x,y" (empty: none)
+    TerminalOutput  terminal;
     /** zlib level of the VTU files (lossless at every level). */
     DataOutBase::VtkFlags::ZlibCompressionLevel compression;
-    bool         timing_summary;
+    bool                                        timing_summary;
     /** Write performance.csv (and time one step-matrix solve) at the end. */
-    bool         performance_summary;
+    bool performance_summary;
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   /**
@@ -227,8 +247,10 @@ namespace hemicontact
     std::string normal_multiplier;     ///< s* in (0, a) where w_nu = 0
     std::string tangential_multiplier; ///< lambda* (|.| < F_b) where w_tau = 0
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   /** The cell indicator of adaptive refinement ('adaptivity/indicator'). */
@@ -256,20 +278,23 @@ namespace hemicontact
   /** Adaptive mesh refinement during the time loop (hypercube meshes). */
   struct AdaptivityParameters
   {
-    unsigned int interval;         ///< adapt after every this many steps, 0 = never
+    unsigned int interval; ///< adapt after every this many steps, 0 = never
     RefinementIndicator indicator;
-    double       contact_weight;   ///< weight of the Gamma_3 traction jumps
-    unsigned int pre_refinement_steps; ///< restart from t = 0 after these, 0 = never
+    double contact_weight; ///< weight of the Gamma_3 traction jumps
+    unsigned int
+      pre_refinement_steps; ///< restart from t = 0 after these, 0 = never
     MarkingStrategy strategy;
-    double       refine_fraction;
-    double       coarsen_fraction;
-    unsigned int max_cells;        ///< 0 = no limit
-    unsigned int min_level;
-    unsigned int max_level;
-    StateTransfer state_transfer;
+    double          refine_fraction;
+    double          coarsen_fraction;
+    unsigned int    max_cells; ///< 0 = no limit
+    unsigned int    min_level;
+    unsigned int    max_level;
+    StateTransfer   state_transfer;
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   /** Checkpoints of the time loop and resuming from them. */
@@ -277,11 +302,13 @@ namespace hemicontact
   {
     unsigned int interval;      ///< every this many steps, 0 = never
     double       wall_interval; ///< every this many wall seconds, 0 = never
-    unsigned int stop_after;    ///< stop (with a checkpoint) after this many steps
-    bool         resume;        ///< continue from the newest checkpoint
+    unsigned int stop_after; ///< stop (with a checkpoint) after this many steps
+    bool         resume;     ///< continue from the newest checkpoint
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   /** What a convergence study refines from level to level. */
@@ -299,22 +326,24 @@ namespace hemicontact
     StudyType    type;
     unsigned int n_levels; ///< number of levels
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   /** All parameters of a run, one struct per subsection. */
   struct Parameters
   {
-    unsigned int               dimension;
-    GeometryParameters         geometry;
-    BoundaryParameters         boundary;
-    MaterialParameters         material;
-    TimeParameters             time;
-    ProblemParameters          problem;
-    DataParameters             data;
-    NonlinearSolverParameters  nonlinear_solver;
-    LinearSolverParameters     linear_solver;
+    unsigned int              dimension;
+    GeometryParameters        geometry;
+    BoundaryParameters        boundary;
+    MaterialParameters        material;
+    TimeParameters            time;
+    ProblemParameters         problem;
+    DataParameters            data;
+    NonlinearSolverParameters nonlinear_solver;
+    LinearSolverParameters    linear_solver;
     /** Set from C++ only (tests, benchmarks): see SolverTuning. */
     SolverTuning               solver_tuning;
     OutputParameters           output;
@@ -330,8 +359,10 @@ namespace hemicontact
      */
     std::vector<std::string> problem_definition;
 
-    static void declare(ParameterHandler &prm);
-    void        parse(ParameterHandler &prm);
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
   };
 
   /**
@@ -359,7 +390,8 @@ namespace hemicontact
    * text) on top of it -- e.g. coarser levels of a shipped study in a test.
    */
   Parameters
-  read_parameters(ParameterHandler &prm, const std::string &filename,
+  read_parameters(ParameterHandler  &prm,
+                  const std::string &filename,
                   const std::string &overrides);
 
   /** Same, from a string holding a parameter file (used by tests). */

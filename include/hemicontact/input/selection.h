@@ -31,8 +31,9 @@ namespace hemicontact
   /** The value of the selection @p entry of @p prm. */
   template <typename Enum>
   Enum
-  get_selection(const dealii::ParameterHandler &prm, const std::string &entry,
-                const SelectionNames<Enum> &names)
+  get_selection(const dealii::ParameterHandler &prm,
+                const std::string              &entry,
+                const SelectionNames<Enum>     &names)
   {
     const std::string value = prm.get(entry);
     for (const auto &n : names)

@@ -103,7 +103,8 @@ namespace hemicontact
   void
   register_friction_law(const FrictionLawEntry &entry);
 
-  /** Declare subsection "friction law" with "law" and one subsection per law. */
+  /** Declare subsection "friction law" with "law" and one subsection per law.
+   */
   void
   declare_friction_law_parameters(ParameterHandler &prm);
 

@@ -14,6 +14,7 @@ namespace hemicontact
    * throws an InputError if it is not a finite number.
    */
   double
-  get_law_double(ParameterHandler &prm, const std::string &law,
+  get_law_double(ParameterHandler  &prm,
+                 const std::string &law,
                  const std::string &key);
 } // namespace hemicontact

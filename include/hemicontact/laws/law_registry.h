@@ -24,8 +24,8 @@ namespace hemicontact
   template <class Base>
   struct LawEntry
   {
-    std::string                                           name;
-    std::function<void(ParameterHandler &)>               declare;
+    std::string                                              name;
+    std::function<void(ParameterHandler &)>                  declare;
     std::function<std::unique_ptr<Base>(ParameterHandler &)> create;
   };
 
@@ -38,7 +38,8 @@ namespace hemicontact
   LawEntry<Base>
   make_law_entry()
   {
-    return {Law::law_name, &Law::declare_parameters,
+    return {Law::law_name,
+            &Law::declare_parameters,
             [](ParameterHandler &prm) -> std::unique_ptr<Base> {
               return std::make_unique<Law>(prm);
             }};
@@ -54,8 +55,10 @@ namespace hemicontact
   class LawRegistry
   {
   public:
-    LawRegistry(std::string subsection, std::string default_law,
-                std::string documentation, std::vector<LawEntry<Base>> laws)
+    LawRegistry(std::string                 subsection,
+                std::string                 default_law,
+                std::string                 documentation,
+                std::vector<LawEntry<Base>> laws)
       : subsection(std::move(subsection))
       , default_law(std::move(default_law))
       , documentation(std::move(documentation))
@@ -95,7 +98,9 @@ namespace hemicontact
       for (const LawEntry<Base> &e : laws)
         names += (names.empty() ? "" : "|") + e.name;
       prm.enter_subsection(subsection);
-      prm.declare_entry("law", default_law, Patterns::Selection(names),
+      prm.declare_entry("law",
+                        default_law,
+                        Patterns::Selection(names),
                         documentation);
       for (const LawEntry<Base> &e : laws)
         e.declare(prm);

@@ -67,8 +67,9 @@ namespace hemicontact
   private:
     /** The rectangle/box or the Gmsh mesh of @p geometry in @p mesh. */
     void
-    build_mesh(Triangulation<dim> &mesh, const GeometryParameters &geometry,
-               const bool refine) const;
+    build_mesh(Triangulation<dim>       &mesh,
+               const GeometryParameters &geometry,
+               const bool                refine) const;
 
     /**
      * Read the Gmsh file of @p geometry into @p mesh after checking it
@@ -77,7 +78,7 @@ namespace hemicontact
      * self-intersecting or inverted cells.
      */
     void
-    read_checked_gmsh(Triangulation<dim> &      mesh,
+    read_checked_gmsh(Triangulation<dim>       &mesh,
                       const GeometryParameters &geometry) const;
 
     bool simplex;

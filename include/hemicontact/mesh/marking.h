@@ -37,8 +37,9 @@ namespace hemicontact
    * with the largest relative gap within it.
    */
   std::size_t
-  untied_cut(const std::vector<float> &descending, const std::size_t n,
-             const bool prefer_smaller);
+  untied_cut(const std::vector<float> &descending,
+             const std::size_t         n,
+             const bool                prefer_smaller);
 
   /**
    * The thresholds for the indicators @p indicators of all cells of the
@@ -54,8 +55,8 @@ namespace hemicontact
    * fall on the same side of it.
    */
   MarkingThresholds
-  marking_thresholds(std::vector<float> indicators,
+  marking_thresholds(std::vector<float>    indicators,
                      const MarkingStrategy strategy,
-                     const double refine_fraction,
-                     const double coarsen_fraction);
+                     const double          refine_fraction,
+                     const double          coarsen_fraction);
 } // namespace hemicontact

@@ -83,15 +83,18 @@ namespace hemicontact
      */
     template <int dim>
     NodeState<dim>
-    state(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
-                const Tensor<1, dim> &force, const NormalLaw &law,
-                const FrictionLaw &friction);
+    state(const ContactNode<dim> &node,
+          const Tensor<1, dim>   &velocity,
+          const Tensor<1, dim>   &force,
+          const NormalLaw        &law,
+          const FrictionLaw      &friction);
 
     /** Branch from s + c w_nu against [0, a]. */
     template <int dim>
     NormalBranch
-    normal_branch(const ContactNode<dim> &node, const NodeState<dim> &m,
-                  const NormalLaw &law);
+    normal_branch(const ContactNode<dim> &node,
+                  const NodeState<dim>   &m,
+                  const NormalLaw        &law);
 
     /**
      * The normal branch a Newton iteration (after the first of a step)
@@ -108,26 +111,25 @@ namespace hemicontact
     NormalBranch
     gradual_normal_branch(const NormalBranch current,
                           const NormalBranch predicted,
-                          const NormalLaw &  law);
+                          const NormalLaw   &law);
 
     /** Branch from |lambda + c w_tau| against F_b. */
     template <int dim>
     TangentialBranch
-    tangential_branch(const ContactNode<dim> &node,
-                      const NodeState<dim> &m);
+    tangential_branch(const ContactNode<dim> &node, const NodeState<dim> &m);
 
     /** Complementarity function s - P_[0,a](s + c w_nu) (a traction). */
     template <int dim>
     double
     normal_complementarity(const ContactNode<dim> &node,
-                           const NodeState<dim> &m,
-                           const NormalLaw &law);
+                           const NodeState<dim>   &m,
+                           const NormalLaw        &law);
 
     /** lambda - P_{|.|<=F_b}(lambda + c w_tau) (a traction). */
     template <int dim>
     Tensor<1, dim>
     tangential_complementarity(const ContactNode<dim> &node,
-                               const NodeState<dim> &m);
+                               const NodeState<dim>   &m);
 
     /**
      * Linearised nodal force m_i (traction) of the free branches (damped,
@@ -138,16 +140,20 @@ namespace hemicontact
      */
     template <int dim>
     NodeLinearization<dim>
-    linearize(const ContactNode<dim> &node, const NodeState<dim> &m,
-              const NormalLaw &law, const FrictionLaw &friction);
+    linearize(const ContactNode<dim> &node,
+              const NodeState<dim>   &m,
+              const NormalLaw        &law,
+              const FrictionLaw      &friction);
 
     /**
      * The nodal part of J_n: m_i [ j(w_nu) + F_b |w_tau| + R(|w_tau|) ].
      */
     template <int dim>
     double
-    energy(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
-           const NormalLaw &law, const FrictionLaw &friction);
+    energy(const ContactNode<dim> &node,
+           const Tensor<1, dim>   &velocity,
+           const NormalLaw        &law,
+           const FrictionLaw      &friction);
 
     /**
      * The work rates m_i xi_nu w_nu (normal) and m_i xi_tau . w_tau
@@ -157,8 +163,10 @@ namespace hemicontact
      */
     template <int dim>
     std::pair<double, double>
-    contact_work(const ContactNode<dim> &node, const Tensor<1, dim> &velocity,
-                 const NormalLaw &law, const FrictionLaw &friction);
+    contact_work(const ContactNode<dim> &node,
+                 const Tensor<1, dim>   &velocity,
+                 const NormalLaw        &law,
+                 const FrictionLaw      &friction);
 
     /**
      * Unit vectors of the directions on which the node's constrained

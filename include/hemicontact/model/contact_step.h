@@ -6,12 +6,12 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <hemicontact/solver/active_set_newton.h>
-#include <hemicontact/model/contact_node.h>
-#include <hemicontact/laws/friction_law.h>
-#include <hemicontact/solver/linear_solver.h>
-#include <hemicontact/laws/normal_law.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/laws/friction_law.h>
+#include <hemicontact/laws/normal_law.h>
+#include <hemicontact/model/contact_node.h>
+#include <hemicontact/solver/active_set_newton.h>
+#include <hemicontact/solver/linear_solver.h>
 #include <hemicontact/solver/step_preconditioner.h>
 
 #include <vector>
@@ -31,24 +31,24 @@ namespace hemicontact
    */
   TrilinosWrappers::MPI::Vector
   without_constrained(const TrilinosWrappers::MPI::Vector &v,
-                      const AffineConstraints<double> &    constraints);
+                      const AffineConstraints<double>     &constraints);
 
   /** The pieces of a mesh that one time step reads, and the solvers it uses. */
   template <int dim>
   struct StepSystem
   {
     const TrilinosWrappers::SparseMatrix &step_matrix; ///< K0, condensed
-    const TrilinosWrappers::MPI::Vector & step_rhs;    ///< b, condensed
-    const AffineConstraints<double> &     base_constraints;
-    const IndexSet &                      locally_owned_dofs;
-    const IndexSet &                      locally_relevant_dofs;
+    const TrilinosWrappers::MPI::Vector  &step_rhs;    ///< b, condensed
+    const AffineConstraints<double>      &base_constraints;
+    const IndexSet                       &locally_owned_dofs;
+    const IndexSet                       &locally_relevant_dofs;
     /** Locally relevant contact nodes; their branches are updated. */
     std::vector<ContactNode<dim>> &contact_nodes;
-    const NormalLaw &              law;
-    const FrictionLaw &            friction;
-    LinearSolver &                 linear_solver;
-    StepPreconditioner<dim> &      preconditioner;
-    TimerOutput &                  timer;
+    const NormalLaw               &law;
+    const FrictionLaw             &friction;
+    LinearSolver                  &linear_solver;
+    StepPreconditioner<dim>       &preconditioner;
+    TimerOutput                   &timer;
     MPI_Comm                       mpi_communicator;
   };
 
@@ -71,16 +71,18 @@ namespace hemicontact
     load_norm() const override;
 
     unsigned int
-    update_branches(const VectorType &w, const VectorType &residual,
+    update_branches(const VectorType  &w,
+                    const VectorType  &residual,
                     const unsigned int iteration) override;
 
     double
     nonsmooth_residual(const VectorType &residual) const override;
 
     unsigned int
-    solve_linearized(const VectorType &w, const double reduction,
-                     const double absolute_tolerance,
-                     VectorType &trial) override;
+    solve_linearized(const VectorType &w,
+                     const double      reduction,
+                     const double      absolute_tolerance,
+                     VectorType       &trial) override;
 
     void
     apply_quadratic(const VectorType &d, VectorType &k_d) const override;
@@ -89,13 +91,13 @@ namespace hemicontact
     nodal_energy(const VectorType &w) const override;
 
   private:
-    StepSystem<dim>                  system;
-    const LinearSolverType           solver_type;
-    const double                     linear_relative_tolerance;
-    const bool                       gradual_normal_branches;
+    StepSystem<dim>        system;
+    const LinearSolverType solver_type;
+    const double           linear_relative_tolerance;
+    const bool             gradual_normal_branches;
     /** w and K0 w - b of the current iteration, with ghost entries. */
-    VectorType                       w_ghosted;
-    VectorType                       residual_ghosted;
+    VectorType w_ghosted;
+    VectorType residual_ghosted;
     /** The state of every contact node at the current iterate. */
     std::vector<NodeState<dim>> node_states;
   };

@@ -36,7 +36,8 @@ namespace hemicontact
     double damping_dissipation   = 0; ///< sum k m_i xi_nu w_nu
     double external_work         = 0; ///< sum k <f_n, w_n>
     double numerical_dissipation = 0; ///< sum of the bracket above
-    double transfer_change       = 0; ///< sum of E after - E before a mesh or k change
+    double transfer_change =
+      0; ///< sum of E after - E before a mesh or k change
 
     double
     total_energy() const
@@ -49,8 +50,7 @@ namespace hemicontact
     defect() const
     {
       return total_energy() - initial_energy - transfer_change +
-             viscous_dissipation +
-             friction_dissipation + damping_dissipation +
+             viscous_dissipation + friction_dissipation + damping_dissipation +
              numerical_dissipation - external_work;
     }
 

@@ -34,14 +34,16 @@ namespace hemicontact
     SymmetricTensor<2, dim>
     viscous_stress(const SymmetricTensor<2, dim> &eps) const
     {
-      return 2 * mu_v * eps + lambda_v * trace(eps) * unit_symmetric_tensor<dim>();
+      return 2 * mu_v * eps +
+             lambda_v * trace(eps) * unit_symmetric_tensor<dim>();
     }
 
     /** B eps = 2 mu eps + lambda tr(eps) I. */
     SymmetricTensor<2, dim>
     elastic_stress(const SymmetricTensor<2, dim> &eps) const
     {
-      return 2 * mu_e * eps + lambda_e * trace(eps) * unit_symmetric_tensor<dim>();
+      return 2 * mu_e * eps +
+             lambda_e * trace(eps) * unit_symmetric_tensor<dim>();
     }
 
     /** sigma = A eps(w) + B eps(u). */
@@ -61,14 +63,14 @@ namespace hemicontact
     stress_divergence(const Tensor<3, dim> &hessian_w,
                       const Tensor<3, dim> &hessian_u) const
     {
-      const auto part = [](const Tensor<3, dim> &h, const double mu,
-                           const double lambda) {
-        Tensor<1, dim> result;
-        for (int i = 0; i < dim; ++i)
-          for (int j = 0; j < dim; ++j)
-            result[i] += mu * h[i][j][j] + (mu + lambda) * h[j][i][j];
-        return result;
-      };
+      const auto part =
+        [](const Tensor<3, dim> &h, const double mu, const double lambda) {
+          Tensor<1, dim> result;
+          for (int i = 0; i < dim; ++i)
+            for (int j = 0; j < dim; ++j)
+              result[i] += mu * h[i][j][j] + (mu + lambda) * h[j][i][j];
+          return result;
+        };
       return part(hessian_w, mu_v, lambda_v) + part(hessian_u, mu_e, lambda_e);
     }
 
@@ -81,10 +83,26 @@ namespace hemicontact
       return std::sqrt(1.5 * (d * d));
     }
 
-    double mu_viscous() const { return mu_v; }
-    double lambda_viscous() const { return lambda_v; }
-    double mu_elastic() const { return mu_e; }
-    double lambda_elastic() const { return lambda_e; }
+    double
+    mu_viscous() const
+    {
+      return mu_v;
+    }
+    double
+    lambda_viscous() const
+    {
+      return lambda_v;
+    }
+    double
+    mu_elastic() const
+    {
+      return mu_e;
+    }
+    double
+    lambda_elastic() const
+    {
+      return lambda_e;
+    }
 
   private:
     double rho, mu_v, lambda_v, mu_e, lambda_e;

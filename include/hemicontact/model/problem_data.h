@@ -4,8 +4,8 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/vector.h>
 
-#include <hemicontact/laws/friction_bound.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/laws/friction_bound.h>
 
 #include <functional>
 #include <map>
@@ -20,17 +20,18 @@ namespace hemicontact
   /**
    * The data of the contact problem as Function objects: f0, f2, f3 and
    * the initial fields (dim components each), and the friction bound F_b
-   * (an expression that may depend on the normal displacement). Built from the expressions of the parameter
-   * file; a manufactured solution replaces them with derived functions.
+   * (an expression that may depend on the normal displacement). Built from the
+   * expressions of the parameter file; a manufactured solution replaces them
+   * with derived functions.
    */
   template <int dim>
   struct ProblemData
   {
-    std::unique_ptr<Function<dim>> body_force;
-    std::unique_ptr<Function<dim>> surface_traction;
-    std::unique_ptr<Function<dim>> contact_traction;
-    std::unique_ptr<Function<dim>> initial_displacement;
-    std::unique_ptr<Function<dim>> initial_velocity;
+    std::unique_ptr<Function<dim>>            body_force;
+    std::unique_ptr<Function<dim>>            surface_traction;
+    std::unique_ptr<Function<dim>>            contact_traction;
+    std::unique_ptr<Function<dim>>            initial_displacement;
+    std::unique_ptr<Function<dim>>            initial_velocity;
     std::shared_ptr<const FrictionBound<dim>> friction_bound;
 
     /**
@@ -57,9 +58,9 @@ namespace hemicontact
      */
     void
     boundary_traction(const bool                         on_traction,
-                      const std::vector<Point<dim>> &    points,
+                      const std::vector<Point<dim>>     &points,
                       const std::vector<Tensor<1, dim>> &normals,
-                      std::vector<Vector<double>> &      values) const;
+                      std::vector<Vector<double>>       &values) const;
   };
 
   /**
@@ -88,6 +89,8 @@ namespace hemicontact
    */
   template <int dim>
   std::unique_ptr<Function<dim>>
-  parse_function(const std::string &expression, const unsigned int n_components,
-                 const std::string &constants, const std::string &parameter_name);
+  parse_function(const std::string &expression,
+                 const unsigned int n_components,
+                 const std::string &constants,
+                 const std::string &parameter_name);
 } // namespace hemicontact

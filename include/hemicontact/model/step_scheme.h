@@ -103,10 +103,14 @@ namespace hemicontact
      */
     template <class Matrix, class VectorType>
     void
-    step_rhs(const Matrix &mass, const Matrix &elastic,
-             const VectorType &old_velocity, const VectorType &displacement,
-             const VectorType &load, const double k, VectorType &rhs,
-             VectorType &tmp) const
+    step_rhs(const Matrix     &mass,
+             const Matrix     &elastic,
+             const VectorType &old_velocity,
+             const VectorType &displacement,
+             const VectorType &load,
+             const double      k,
+             VectorType       &rhs,
+             VectorType       &tmp) const
     {
       if (has_inertia())
         {
@@ -123,8 +127,10 @@ namespace hemicontact
     /** The right-hand side of the problem for w_0: F_0 - B u_0. */
     template <class Matrix, class VectorType>
     void
-    initial_rhs(const Matrix &elastic, const VectorType &displacement,
-                const VectorType &load, VectorType &rhs) const
+    initial_rhs(const Matrix     &elastic,
+                const VectorType &displacement,
+                const VectorType &load,
+                VectorType       &rhs) const
     {
       elastic.vmult(rhs, displacement);
       rhs *= -1.;
@@ -134,8 +140,9 @@ namespace hemicontact
     /** Before step n: u += k w_{n-1} (left point), nothing (implicit). */
     template <class VectorType>
     void
-    displacement_before_step(VectorType &u, const VectorType &old_velocity,
-                             const double k) const
+    displacement_before_step(VectorType       &u,
+                             const VectorType &old_velocity,
+                             const double      k) const
     {
       if (the_scheme == TimeScheme::left_point)
         u.add(k, old_velocity);
@@ -143,8 +150,9 @@ namespace hemicontact
     /** Take displacement_before_step() back (a step that failed). */
     template <class VectorType>
     void
-    undo_displacement_before_step(VectorType &u, const VectorType &old_velocity,
-                                  const double k) const
+    undo_displacement_before_step(VectorType       &u,
+                                  const VectorType &old_velocity,
+                                  const double      k) const
     {
       if (the_scheme == TimeScheme::left_point)
         u.add(-k, old_velocity);
@@ -152,8 +160,9 @@ namespace hemicontact
     /** After step n: u += k w_n (implicit), nothing (left point). */
     template <class VectorType>
     void
-    displacement_after_step(VectorType &u, const VectorType &velocity,
-                            const double k) const
+    displacement_after_step(VectorType       &u,
+                            const VectorType &velocity,
+                            const double      k) const
     {
       if (the_scheme == TimeScheme::implicit)
         u.add(k, velocity);
@@ -182,7 +191,9 @@ namespace hemicontact
      * without inertia.
      */
     StepEnergy
-    step_energy(const double k, const double w_A_w, const double dw_M_dw,
+    step_energy(const double k,
+                const double w_A_w,
+                const double dw_M_dw,
                 const double w_B_w) const;
     /** The kinetic energy rho/2 w.M w from w.rho M w (0 without inertia). */
     double

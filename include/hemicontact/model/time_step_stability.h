@@ -18,7 +18,8 @@ namespace hemicontact
    * eigenvalue of B against A + 2M/k is at most 2/k.
    */
   inline double
-  stable_time_step_of_mode(const double mass, const double viscosity,
+  stable_time_step_of_mode(const double mass,
+                           const double viscosity,
                            const double elasticity)
   {
     if (!(elasticity > 0))
@@ -37,13 +38,16 @@ namespace hemicontact
    * vanishes.
    */
   inline double
-  mesh_independent_stable_time_step(const unsigned int dim, const double mu_v,
-                                    const double lambda_v, const double mu,
-                                    const double lambda)
+  mesh_independent_stable_time_step(const unsigned int dim,
+                                    const double       mu_v,
+                                    const double       lambda_v,
+                                    const double       mu,
+                                    const double       lambda)
   {
     const double deviatoric = mu / mu_v;
-    const double volumetric = (2 * mu + dim * lambda) / (2 * mu_v + dim * lambda_v);
-    const double ratio      = std::max(deviatoric, volumetric);
+    const double volumetric =
+      (2 * mu + dim * lambda) / (2 * mu_v + dim * lambda_v);
+    const double ratio = std::max(deviatoric, volumetric);
     return ratio > 0 ? 2 / ratio : std::numeric_limits<double>::infinity();
   }
 } // namespace hemicontact

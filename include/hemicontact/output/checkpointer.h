@@ -27,10 +27,10 @@ namespace hemicontact
    *  file of a checkpoint). */
   struct CheckpointState
   {
-    unsigned int                                step_number = 0;
-    double                                      time_step   = 0;
-    unsigned int                                n_steps     = 0;
-    std::vector<double>                         energy;
+    unsigned int        step_number = 0;
+    double              time_step   = 0;
+    unsigned int        n_steps     = 0;
+    std::vector<double> energy;
     /** The solution series, each as SeriesRecord::stored(). */
     std::vector<std::pair<double, std::string>> pvd_records;
     /** Parameters::problem_definition of the run that wrote it. */
@@ -57,8 +57,8 @@ namespace hemicontact
     serialize(Archive &ar, const unsigned int)
     {
       ar &step_number &time_step &n_steps &energy &pvd_records
-        &problem_definition &file_signatures &n_ranks &last_step_length
-          &run_id &mesh_signature &constrained_amg;
+        &problem_definition &file_signatures &n_ranks &last_step_length &run_id
+          &mesh_signature &constrained_amg;
     }
   };
 
@@ -74,8 +74,9 @@ namespace hemicontact
   {
   public:
     /** Checkpoints by @p parameters; @p timer is the run's. */
-    Checkpointer(const Parameters &parameters, MPI_Comm comm,
-                 TimerOutput &timer);
+    Checkpointer(const Parameters &parameters,
+                 MPI_Comm          comm,
+                 TimerOutput      &timer);
 
     /**
      * The time loop starts: a run not @p resumed gets a new run id and the
@@ -122,8 +123,8 @@ namespace hemicontact
      * constrained AMG, in this order in @p fields (owned entries).
      */
     void
-    load_fields(const DoFHandler<dim> &                       dof_handler,
-                const IndexSet &                              owned,
+    load_fields(const DoFHandler<dim>                              &dof_handler,
+                const IndexSet                                     &owned,
                 const std::vector<TrilinosWrappers::MPI::Vector *> &fields);
 
     /** The series of the checkpoint read() chose. */
@@ -137,12 +138,12 @@ namespace hemicontact
      * its size from the mesh against the free space.
      */
     void
-    require_space(const ContactProblem<dim> &        problem,
+    require_space(const ContactProblem<dim>       &problem,
                   const std::vector<SeriesRecord> &series) const;
 
     const Parameters &parameters;
     MPI_Comm          mpi_communicator;
-    TimerOutput &     timer;
+    TimerOutput      &timer;
     /** The run (a resumed run continues its run): checkpoints record it. */
     std::string run_id;
     /** file_signature() of the mesh file the run read ("" if none). */

@@ -19,6 +19,6 @@ namespace hemicontact
   template <int dim>
   void
   write_contact_table(const ContactProblem<dim> &problem,
-                      const std::string &        directory,
+                      const std::string         &directory,
                       MPI_Comm                   mpi_communicator);
 } // namespace hemicontact

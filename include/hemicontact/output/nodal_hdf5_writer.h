@@ -49,8 +49,9 @@ namespace hemicontact
      * Write into @p directory the files STEM_NNNNN.h5 and STEM.xdmf with
      * STEM = @p stem, on the ranks of @p mpi_communicator.
      */
-    NodalHdf5Writer(const std::string &directory, const std::string &stem,
-                    MPI_Comm mpi_communicator);
+    NodalHdf5Writer(const std::string &directory,
+                    const std::string &stem,
+                    MPI_Comm           mpi_communicator);
 
     /**
      * Write the file of @p step at @p time with the mesh of @p dof_handler
@@ -63,9 +64,11 @@ namespace hemicontact
      * directory).
      */
     std::string
-    write(const DoFHandler<dim> &dof_handler, const std::vector<Field> &fields,
-          unsigned int step, double time,
-          const std::string &displacement = "");
+    write(const DoFHandler<dim>    &dof_handler,
+          const std::vector<Field> &fields,
+          unsigned int              step,
+          double                    time,
+          const std::string        &displacement = "");
 
     /** The name of the HDF5 file of @p step: STEM_NNNNN.h5. */
     std::string

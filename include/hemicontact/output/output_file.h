@@ -22,7 +22,8 @@ namespace hemicontact
    * naming @p path; else an empty string.
    */
   std::string
-  append_complete(std::ofstream &file, const std::string &path,
+  append_complete(std::ofstream     &file,
+                  const std::string &path,
                   const std::string &text);
 
   /**

@@ -47,9 +47,9 @@ namespace hemicontact
   template <int dim>
   void
   write_performance_summary(const ContactProblem<dim> &problem,
-                            const Parameters &         parameters,
-                            const TimerOutput &        timer,
-                            const RunTotals &          totals,
+                            const Parameters          &parameters,
+                            const TimerOutput         &timer,
+                            const RunTotals           &totals,
                             double                     run_wall_seconds,
                             unsigned int               solution_writes,
                             MPI_Comm                   mpi_communicator);

@@ -40,7 +40,9 @@ namespace hemicontact
   {
   public:
     /** Output by @p parameters; @p timer and @p pcout are the run's. */
-    RunOutput(const Parameters &parameters, MPI_Comm comm, TimerOutput &timer,
+    RunOutput(const Parameters   &parameters,
+              MPI_Comm            comm,
+              TimerOutput        &timer,
               ConditionalOStream &pcout);
 
     /**
@@ -115,8 +117,9 @@ namespace hemicontact
      * timing table if asked for.
      */
     void
-    finish(const ContactProblem<dim> &problem, const RunTotals &totals,
-           double run_wall_seconds);
+    finish(const ContactProblem<dim> &problem,
+           const RunTotals           &totals,
+           double                     run_wall_seconds);
 
     /**
      * After an input or output error: wait for the solution write and
@@ -132,26 +135,26 @@ namespace hemicontact
 
   private:
     void
-    write_step_row(const StepStatistics &     stats,
+    write_step_row(const StepStatistics      &stats,
                    const ContactProblem<dim> &problem);
     void
-    print_step(const StepStatistics &     stats,
+    print_step(const StepStatistics      &stats,
                const ContactProblem<dim> &problem) const;
     /** Start the write of the series file of the current step. */
     void
     start_solution_write(const ContactProblem<dim> &problem);
 
-    const Parameters &  parameters;
+    const Parameters   &parameters;
     MPI_Comm            mpi_communicator;
-    TimerOutput &       timer;
+    TimerOutput        &timer;
     ConditionalOStream &pcout;
 
     /** The series written so far. */
     std::vector<SeriesRecord> records;
     /** Wall clock and step number when the time loop started (for the
      *  time left on the progress line). */
-    std::chrono::steady_clock::time_point loop_start;
-    unsigned int                          loop_start_step = 0;
+    std::chrono::steady_clock::time_point      loop_start;
+    unsigned int                               loop_start_step = 0;
     std::vector<Point<dim>>                    probe_points;
     Utilities::MPI::RemotePointEvaluation<dim> probe_cache;
     std::ofstream                              steps_file;

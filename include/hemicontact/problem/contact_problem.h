@@ -7,20 +7,20 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/vector.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
+#include <hemicontact/input/parameters.h>
 #include <hemicontact/laws/contact_laws.h>
-#include <hemicontact/model/contact_node.h>
+#include <hemicontact/laws/normal_law.h>
 #include <hemicontact/mesh/discretization.h>
+#include <hemicontact/model/contact_node.h>
 #include <hemicontact/model/energy_balance.h>
 #include <hemicontact/model/kelvin_voigt.h>
-#include <hemicontact/solver/linear_solver.h>
-#include <hemicontact/laws/normal_law.h>
-#include <hemicontact/input/parameters.h>
 #include <hemicontact/model/problem_data.h>
 #include <hemicontact/model/step_scheme.h>
+#include <hemicontact/solver/linear_solver.h>
 #include <hemicontact/solver/step_preconditioner.h>
 #include <hemicontact/solver/step_statistics.h>
 
@@ -65,12 +65,16 @@ namespace hemicontact
   {
   public:
     /** A problem with data from the expressions of the parameter file. */
-    ContactProblem(const Parameters &parameters, ContactLaws laws,
-                   MPI_Comm comm);
+    ContactProblem(const Parameters &parameters,
+                   ContactLaws       laws,
+                   MPI_Comm          comm);
 
-    /** A problem with given data (e.g. derived from a manufactured solution). */
-    ContactProblem(const Parameters &parameters, ContactLaws laws,
-                   ProblemData<dim> data, MPI_Comm comm);
+    /** A problem with given data (e.g. derived from a manufactured solution).
+     */
+    ContactProblem(const Parameters &parameters,
+                   ContactLaws       laws,
+                   ProblemData<dim>  data,
+                   MPI_Comm          comm);
 
     /** Run the whole simulation: setup, time loop, output, summary. */
     void
@@ -191,16 +195,16 @@ namespace hemicontact
      */
     struct State
     {
-      const Discretization<dim> &          discretization;
-      const DoFHandler<dim> &              dof_handler;
-      const IndexSet &                     locally_owned_dofs;
-      const IndexSet &                     locally_relevant_dofs;
-      const KelvinVoigtMaterial<dim> &     material;
-      const NormalLaw &                    normal_law;
-      const FrictionLaw &                  friction_law;
+      const Discretization<dim>            &discretization;
+      const DoFHandler<dim>                &dof_handler;
+      const IndexSet                       &locally_owned_dofs;
+      const IndexSet                       &locally_relevant_dofs;
+      const KelvinVoigtMaterial<dim>       &material;
+      const NormalLaw                      &normal_law;
+      const FrictionLaw                    &friction_law;
       const TrilinosWrappers::SparseMatrix &step_matrix; ///< K0 = rho/k M + A
       /** Hanging nodes and u = 0 on Gamma_1. */
-      const AffineConstraints<double> &    base_constraints;
+      const AffineConstraints<double>     &base_constraints;
       const TrilinosWrappers::MPI::Vector &velocity;     ///< w_n
       const TrilinosWrappers::MPI::Vector &old_velocity; ///< w_{n-1}
       const TrilinosWrappers::MPI::Vector &displacement; ///< u_n
@@ -209,13 +213,13 @@ namespace hemicontact
       /** Nodal traction -(K w - b)_i / m_i at owned contact node dofs. */
       const TrilinosWrappers::MPI::Vector &contact_traction;
       const std::vector<ContactNode<dim>> &contact_nodes;
-      const StepPreconditioner<dim> &      preconditioner;
-      const EnergyBalance &                energy;
-      const ConvexityCheck &               convexity;
+      const StepPreconditioner<dim>       &preconditioner;
+      const EnergyBalance                 &energy;
+      const ConvexityCheck                &convexity;
       /** The problem class and time scheme of the run. */
-      const StepScheme &                   scheme;
-      double                               time; ///< t_n = n k
-      double                               time_step;
+      const StepScheme &scheme;
+      double            time; ///< t_n = n k
+      double            time_step;
       /** Length of the last converged step (0: none yet). */
       double       last_step_length;
       unsigned int step_number;
@@ -287,9 +291,9 @@ namespace hemicontact
      */
     void
     cell_matrices(const FEValues<dim> &fe_values,
-                  FullMatrix<double> & mass,
-                  FullMatrix<double> & viscous,
-                  FullMatrix<double> & elastic) const;
+                  FullMatrix<double>  &mass,
+                  FullMatrix<double>  &viscous,
+                  FullMatrix<double>  &elastic) const;
     void
     assemble_load(const double time);
     void
@@ -344,12 +348,12 @@ namespace hemicontact
      * @p fe_values there), from cell_matrices().
      */
     void
-    cell_functionals(FEValues<dim> &                                fe_values,
+    cell_functionals(FEValues<dim>                                 &fe_values,
                      const typename DoFHandler<dim>::cell_iterator &cell,
-                     const TrilinosWrappers::MPI::Vector &          w,
-                     const TrilinosWrappers::MPI::Vector &          u_next,
-                     Vector<double> &                               m_w,
-                     Vector<double> &                               b_u) const;
+                     const TrilinosWrappers::MPI::Vector           &w,
+                     const TrilinosWrappers::MPI::Vector           &u_next,
+                     Vector<double>                                &m_w,
+                     Vector<double>                                &b_u) const;
     /**
      * For 'adaptivity/state transfer = projection': register with the
      * mesh, before execute_coarsening_and_refinement(), the functionals
@@ -385,7 +389,8 @@ namespace hemicontact
      * fails (and 'time step halvings' allows) two intervals of k/2.
      */
     StepStatistics
-    advance_interval(const double start, const double k,
+    advance_interval(const double       start,
+                     const double       k,
                      const unsigned int depth);
     /** Change k and what depends on it (step matrix, AMG). */
     void
@@ -396,12 +401,12 @@ namespace hemicontact
     ConditionalOStream pcout;
     TimerOutput        timer;
 
-    KelvinVoigtMaterial<dim>   material;
+    KelvinVoigtMaterial<dim> material;
     /** What differs between the problem classes and time schemes. */
-    StepScheme                 scheme;
+    StepScheme                   scheme;
     std::unique_ptr<NormalLaw>   law;
     std::unique_ptr<FrictionLaw> friction;
-    ProblemData<dim>           data;
+    ProblemData<dim>             data;
 
     Discretization<dim> discretization;
     DoFHandler<dim>     dof_handler;
@@ -412,8 +417,9 @@ namespace hemicontact
     AffineConstraints<double> base_constraints;
 
     /** Constant on a fixed mesh, condensed with the base constraints. */
-    TrilinosWrappers::SparseMatrix mass_matrix;    ///< M
-    TrilinosWrappers::SparseMatrix step_matrix;    ///< K (StepScheme::step_matrix())
+    TrilinosWrappers::SparseMatrix mass_matrix; ///< M
+    TrilinosWrappers::SparseMatrix
+      step_matrix; ///< K (StepScheme::step_matrix())
     TrilinosWrappers::SparseMatrix elastic_matrix; ///< B
     TrilinosWrappers::SparseMatrix viscous_matrix; ///< A
 
@@ -421,20 +427,21 @@ namespace hemicontact
     TrilinosWrappers::MPI::Vector old_velocity; ///< w_{n-1}
     TrilinosWrappers::MPI::Vector displacement; ///< u_n
     TrilinosWrappers::MPI::Vector load;         ///< F_n = (f0, f2, f3) tested
-    TrilinosWrappers::MPI::Vector step_rhs;     ///< b = rho/k M w_{n-1} - B u_n + F_n
+    TrilinosWrappers::MPI::Vector
+      step_rhs; ///< b = rho/k M w_{n-1} - B u_n + F_n
     TrilinosWrappers::MPI::Vector contact_traction;
 
     std::vector<ContactNode<dim>> contact_nodes; ///< locally relevant nodes
-    LinearSolver            linear_solver;
+    LinearSolver                  linear_solver;
     /** Every AMG of the mesh and the preconditioner of the Newton solves. */
     StepPreconditioner<dim> preconditioner;
-    EnergyBalance  energy;
-    ConvexityCheck convexity;
+    EnergyBalance           energy;
+    ConvexityCheck          convexity;
 
-    double       time_step   = 0;
+    double time_step = 0;
     /** Length of the last converged step (0: none yet). */
     double       last_step_length = 0;
-    unsigned int n_steps     = 0;
-    unsigned int step_number = 0;
+    unsigned int n_steps          = 0;
+    unsigned int step_number      = 0;
   };
 } // namespace hemicontact

@@ -41,7 +41,8 @@ namespace hemicontact
      * branch, summed over all ranks.
      */
     virtual unsigned int
-    update_branches(const VectorType &w, const VectorType &residual,
+    update_branches(const VectorType  &w,
+                    const VectorType  &residual,
                     const unsigned int iteration) = 0;
 
     /**
@@ -58,8 +59,10 @@ namespace hemicontact
      * Returns the number of Krylov iterations (1 for a direct solve).
      */
     virtual unsigned int
-    solve_linearized(const VectorType &w, const double reduction,
-                     const double absolute_tolerance, VectorType &trial) = 0;
+    solve_linearized(const VectorType &w,
+                     const double      reduction,
+                     const double      absolute_tolerance,
+                     VectorType       &trial) = 0;
 
     /** k_d = K0 d, d without its constrained entries. */
     virtual void
@@ -85,10 +88,10 @@ namespace hemicontact
     {
       /** Converged: no branch changed and residual <= tolerance |b| +
        *  absolute_tolerance (or 100 times below that). */
-      double       tolerance          = 1e-8;
-      double       absolute_tolerance = 1e-14;
-      unsigned int max_iterations     = 50;
-      bool         line_search        = true;
+      double       tolerance           = 1e-8;
+      double       absolute_tolerance  = 1e-14;
+      unsigned int max_iterations      = 50;
+      bool         line_search         = true;
       double       minimum_step_length = 1e-3;
       /** Krylov reduction eta_k by Eisenstat-Walker (else 0: to the floor). */
       bool   eisenstat_walker         = true;
@@ -127,9 +130,11 @@ namespace hemicontact
      * search needs anyway.
      */
     void
-    line_search(const ActiveSetProblem &problem, VectorType &w,
-                const VectorType &trial, VectorType &residual,
-                unsigned int &n_reductions) const;
+    line_search(const ActiveSetProblem &problem,
+                VectorType             &w,
+                const VectorType       &trial,
+                VectorType             &residual,
+                unsigned int           &n_reductions) const;
 
     Settings     settings;
     TimerOutput *timer;

@@ -22,6 +22,7 @@ namespace hemicontact
    */
   double
   backtracking_step_length(const std::function<double(double)> &energy_change,
-                           double scale, double min_step_length,
-                           unsigned int &n_reductions);
+                           double                               scale,
+                           double                               min_step_length,
+                           unsigned int                        &n_reductions);
 } // namespace hemicontact

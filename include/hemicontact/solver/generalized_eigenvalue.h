@@ -44,13 +44,15 @@ namespace hemicontact
    * @p tolerance, or after @p max_iterations steps. VectorType needs
    * copying, operator*, operator/=, add(a, V) and sadd(s, a, V).
    */
-  template <typename VectorType, typename ApplyN, typename ApplyK,
+  template <typename VectorType,
+            typename ApplyN,
+            typename ApplyK,
             typename Precondition>
   EigenvalueEstimate
-  largest_generalized_eigenvalue(const ApplyN &      apply_n,
-                                 const ApplyK &      apply_k,
+  largest_generalized_eigenvalue(const ApplyN       &apply_n,
+                                 const ApplyK       &apply_k,
                                  const Precondition &precondition,
-                                 VectorType &        x,
+                                 VectorType         &x,
                                  const double        tolerance,
                                  const unsigned int  max_iterations)
   {
@@ -94,10 +96,10 @@ namespace hemicontact
 
         // Rayleigh-Ritz: the Gram matrices of the basis in the K and N
         // products ...
-        const VectorType *v[3]  = {&x, &w, &p};
-        const VectorType *kv[3] = {&kx, &kw, &kp};
-        const VectorType *nv[3] = {&nx, &nw, &np};
-        const unsigned int m    = have_p ? 3 : 2;
+        const VectorType  *v[3]  = {&x, &w, &p};
+        const VectorType  *kv[3] = {&kx, &kw, &kp};
+        const VectorType  *nv[3] = {&nx, &nw, &np};
+        const unsigned int m     = have_p ? 3 : 2;
         double             b[3][3], a[3][3];
         for (unsigned int i = 0; i < m; ++i)
           for (unsigned int j = i; j < m; ++j)
@@ -149,8 +151,8 @@ namespace hemicontact
             coefficient[s] += y[q] * c[q][s];
 
         // p <- c_1 w + c_2 p, x <- c_0 x + p, and their images alike
-        VectorType *      ps[3] = {&p, &kp, &np};
-        VectorType *      xs[3] = {&x, &kx, &nx};
+        VectorType       *ps[3] = {&p, &kp, &np};
+        VectorType       *xs[3] = {&x, &kx, &nx};
         const VectorType *ws[3] = {&w, &kw, &nw};
         for (unsigned int i = 0; i < 3; ++i)
           {

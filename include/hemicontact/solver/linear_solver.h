@@ -28,9 +28,9 @@ namespace hemicontact
      */
     template <typename OperatorType, typename PreconditionerType>
     unsigned int
-    solve_cg(const OperatorType &                 op,
-             const PreconditionerType &           preconditioner,
-             TrilinosWrappers::MPI::Vector &      x,
+    solve_cg(const OperatorType                  &op,
+             const PreconditionerType            &preconditioner,
+             TrilinosWrappers::MPI::Vector       &x,
              const TrilinosWrappers::MPI::Vector &b,
              const double                         reduction,
              const double                         absolute_tolerance);
@@ -42,11 +42,15 @@ namespace hemicontact
     template <typename PreconditionerType>
     unsigned int
     solve(const TrilinosWrappers::SparseMatrix &matrix,
-          const PreconditionerType &            preconditioner,
-          TrilinosWrappers::MPI::Vector &       x,
-          const TrilinosWrappers::MPI::Vector & b)
+          const PreconditionerType             &preconditioner,
+          TrilinosWrappers::MPI::Vector        &x,
+          const TrilinosWrappers::MPI::Vector  &b)
     {
-      return solve_cg(matrix, preconditioner, x, b, 0,
+      return solve_cg(matrix,
+                      preconditioner,
+                      x,
+                      b,
+                      0,
                       parameters.relative_tolerance * b.l2_norm());
     }
 
@@ -57,14 +61,14 @@ namespace hemicontact
      */
     unsigned int
     solve_mass(const TrilinosWrappers::SparseMatrix &mass,
-               TrilinosWrappers::MPI::Vector &       x,
-               const TrilinosWrappers::MPI::Vector & b);
+               TrilinosWrappers::MPI::Vector        &x,
+               const TrilinosWrappers::MPI::Vector  &b);
 
     /** Solve @p matrix x = b by a sparse LU factorisation (Amesos KLU). */
     void
     solve_direct(const TrilinosWrappers::SparseMatrix &matrix,
-                 TrilinosWrappers::MPI::Vector &       x,
-                 const TrilinosWrappers::MPI::Vector & b);
+                 TrilinosWrappers::MPI::Vector        &x,
+                 const TrilinosWrappers::MPI::Vector  &b);
 
   private:
     LinearSolverParameters parameters;

@@ -42,7 +42,7 @@ namespace hemicontact
 
     /** @p step_matrix must outlive this object. */
     ProjectedOperator(const TrilinosWrappers::SparseMatrix &step_matrix,
-                      const IndexSet &                      locally_owned_dofs);
+                      const IndexSet                       &locally_owned_dofs);
 
     /**
      * Add an owned contact node: its dofs, the projector Pi_i and its
@@ -50,7 +50,8 @@ namespace hemicontact
      */
     void
     add_node(const std::array<types::global_dof_index, dim> &dofs,
-             const Tensor<2, dim> &projector, const Tensor<2, dim> &stiffness);
+             const Tensor<2, dim>                           &projector,
+             const Tensor<2, dim>                           &stiffness);
 
     /** The owned contact nodes, in the order they were added. */
     const std::vector<Node> &
@@ -72,7 +73,7 @@ namespace hemicontact
 
     /** dst = Pi (K0 + sum L_i) Pi src. */
     void
-    vmult(TrilinosWrappers::MPI::Vector &      dst,
+    vmult(TrilinosWrappers::MPI::Vector       &dst,
           const TrilinosWrappers::MPI::Vector &src) const;
 
     /**
@@ -85,7 +86,7 @@ namespace hemicontact
 
   private:
     const TrilinosWrappers::SparseMatrix *step_matrix;
-    const IndexSet *                      owned;
+    const IndexSet                       *owned;
     std::vector<Node>                     node_blocks;
     mutable TrilinosWrappers::MPI::Vector projected_src;
   };
@@ -93,8 +94,8 @@ namespace hemicontact
   /** v_i := T_i v_i at every node of @p nodes, T_i = node.*tensor. */
   template <int dim, typename NodeType>
   void
-  apply_node_tensors(const std::vector<NodeType> &  nodes,
-                     Tensor<2, dim> NodeType::*     tensor,
+  apply_node_tensors(const std::vector<NodeType> &nodes,
+                     Tensor<2, dim> NodeType::     *tensor,
                      TrilinosWrappers::MPI::Vector &v)
   {
     double *values = v.begin();
@@ -112,13 +113,13 @@ namespace hemicontact
   /** dst_i += T_i src_i at every node of @p nodes, T_i = node.*tensor. */
   template <int dim, typename NodeType>
   void
-  add_node_tensors(const std::vector<NodeType> &        nodes,
-                   Tensor<2, dim> NodeType::*           tensor,
+  add_node_tensors(const std::vector<NodeType> &nodes,
+                   Tensor<2, dim> NodeType::           *tensor,
                    const TrilinosWrappers::MPI::Vector &src,
-                   TrilinosWrappers::MPI::Vector &      dst)
+                   TrilinosWrappers::MPI::Vector       &dst)
   {
     const double *x   = src.begin();
-    double *      out = dst.begin();
+    double       *out = dst.begin();
     for (const NodeType &node : nodes)
       {
         Tensor<1, dim> v;

@@ -86,7 +86,7 @@ namespace hemicontact
 
     /** dst = the preconditioner of the prepared operator applied to src. */
     void
-    vmult(TrilinosWrappers::MPI::Vector &      dst,
+    vmult(TrilinosWrappers::MPI::Vector       &dst,
           const TrilinosWrappers::MPI::Vector &src) const;
 
     /** Whether the constrained AMG (not the AMG of K0) is in use. */
@@ -117,7 +117,8 @@ namespace hemicontact
      * prepare() then does what it would have done there.
      */
     void
-    restore(const ProjectedOperator<dim> &op, const ConstrainedAmgStatus status);
+    restore(const ProjectedOperator<dim> &op,
+            const ConstrainedAmgStatus    status);
 
     /** Wall seconds spent in AMG set-ups so far. */
     double
@@ -144,7 +145,7 @@ namespace hemicontact
 
     std::unique_ptr<TrilinosWrappers::PreconditionAMG>
     make_amg(const TrilinosWrappers::SparseMatrix &matrix,
-             const std::vector<double> &           modes);
+             const std::vector<double>            &modes);
 
     /**
      * The share of the operator's nodes with a free direction that the

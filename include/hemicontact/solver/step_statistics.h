@@ -5,21 +5,21 @@ namespace hemicontact
   /** What one time step did: iterations, branch counts, final residual. */
   struct StepStatistics
   {
-    unsigned int step                = 0;
-    double       time                = 0;
-    unsigned int newton_iterations   = 0;
-    unsigned int linear_iterations   = 0;
-    unsigned int n_separating        = 0;
-    unsigned int n_normal_stick      = 0;
-    unsigned int n_damped            = 0;
-    unsigned int n_stick             = 0;
-    unsigned int n_slip              = 0;
+    unsigned int step                   = 0;
+    double       time                   = 0;
+    unsigned int newton_iterations      = 0;
+    unsigned int linear_iterations      = 0;
+    unsigned int n_separating           = 0;
+    unsigned int n_normal_stick         = 0;
+    unsigned int n_damped               = 0;
+    unsigned int n_stick                = 0;
+    unsigned int n_slip                 = 0;
     unsigned int line_search_reductions = 0;
-    double       residual            = 0; ///< relative nonsmooth residual
-    double       wall_seconds        = 0;
-    unsigned int time_step_halvings  = 0; ///< sub-steps added after failures
-    unsigned int n_cells             = 0; ///< of the mesh the step ran on
-    unsigned int n_dofs              = 0;
+    double       residual               = 0; ///< relative nonsmooth residual
+    double       wall_seconds           = 0;
+    unsigned int time_step_halvings     = 0; ///< sub-steps added after failures
+    unsigned int n_cells                = 0; ///< of the mesh the step ran on
+    unsigned int n_dofs                 = 0;
     /** @name Mesh adaptation after this step (all zero if none) */
     bool   adapted                   = false;
     double kinetic_before_adaptation = 0;

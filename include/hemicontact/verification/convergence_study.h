@@ -19,11 +19,11 @@ namespace hemicontact
    */
   struct ErrorNorms
   {
-    double E_H       = 0;
-    double E_V       = 0;
-    double E_u       = 0;
-    double E_V_H1    = 0;
-    double E_u_H1    = 0;
+    double E_H    = 0;
+    double E_V    = 0;
+    double E_u    = 0;
+    double E_V_H1 = 0;
+    double E_u_H1 = 0;
   };
 
   /** One level of a convergence study. */
@@ -45,7 +45,7 @@ namespace hemicontact
     unsigned int max_newton_iterations  = 0;
     double       wall_seconds           = 0;
     /** Of those, the time loop: the steps, their errors and adaptations. */
-    double       step_wall_seconds      = 0;
+    double step_wall_seconds = 0;
     /** shares of (node, step) pairs: separating, normal stick, damped,
      *  tangential stick, slip */
     double branch_share[5] = {0, 0, 0, 0, 0};
@@ -76,6 +76,7 @@ namespace hemicontact
    */
   template <int dim>
   std::vector<LevelResult>
-  run_convergence_study(const Parameters &parameters, ParameterHandler &prm,
-                        MPI_Comm comm);
+  run_convergence_study(const Parameters &parameters,
+                        ParameterHandler &prm,
+                        MPI_Comm          comm);
 } // namespace hemicontact

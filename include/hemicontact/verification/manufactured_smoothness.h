@@ -22,14 +22,15 @@ namespace hemicontact
    * Along the segments between the vertices of (up to 32 of) the locally
    * owned cells of @p mesh, at t = 0, T/2 and T, and along [0, T] at those
    * vertices, each quarter of the path is bisected 40 times,
-   * following the larger increment of each field: a continuous field's increment vanishes with the segment, a
-   * jump's does not. Returns, on every rank, a description of the first
-   * jump found (field, place, time, relative size), or an empty string.
+   * following the larger increment of each field: a continuous field's
+   * increment vanishes with the segment, a jump's does not. Returns, on every
+   * rank, a description of the first jump found (field, place, time, relative
+   * size), or an empty string.
    */
   template <int dim>
   std::string
   find_manufactured_jump(const ManufacturedSolution<dim> &exact,
-                         const Triangulation<dim> &       mesh,
+                         const Triangulation<dim>        &mesh,
                          const double                     end_time,
                          MPI_Comm                         comm);
 } // namespace hemicontact

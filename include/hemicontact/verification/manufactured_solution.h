@@ -7,14 +7,14 @@
 
 #include <hemicontact/expressions/expression.h>
 #include <hemicontact/expressions/expression_tape.h>
+#include <hemicontact/expressions/spatial_cache.h>
+#include <hemicontact/input/parameters.h>
 #include <hemicontact/laws/friction_bound.h>
 #include <hemicontact/laws/friction_law.h>
-#include <hemicontact/model/kelvin_voigt.h>
 #include <hemicontact/laws/normal_law.h>
-#include <hemicontact/input/parameters.h>
+#include <hemicontact/model/kelvin_voigt.h>
 #include <hemicontact/model/problem_data.h>
 #include <hemicontact/model/step_scheme.h>
-#include <hemicontact/expressions/spatial_cache.h>
 
 #include <memory>
 #include <vector>
@@ -47,7 +47,8 @@ namespace hemicontact
       Tensor<2, dim> grad_u, grad_w;
     };
 
-    ManufacturedSolution(const Parameters &parameters, const NormalLaw &law,
+    ManufacturedSolution(const Parameters  &parameters,
+                         const NormalLaw   &law,
                          const FrictionLaw &friction);
 
     /** u, w, their gradients, dw/dt and Div sigma at (p, t). */
@@ -68,8 +69,9 @@ namespace hemicontact
      * (make_fields_cache()).
      */
     std::vector<Values>
-    evaluate_fields(const std::vector<Point<dim>> &points, const double t,
-                    SpatialCache *cache = nullptr) const;
+    evaluate_fields(const std::vector<Point<dim>> &points,
+                    const double                   t,
+                    SpatialCache                  *cache = nullptr) const;
 
     /** A cache for evaluate_fields() (SpatialCache). */
     std::unique_ptr<SpatialCache>
@@ -79,15 +81,17 @@ namespace hemicontact
     SymmetricTensor<2, dim>
     stress(const Values &v) const;
 
-    /** f0 = rho dw/dt - Div sigma (quasistatic: -Div sigma, doc/theory.md 9.7). */
+    /** f0 = rho dw/dt - Div sigma (quasistatic: -Div sigma, doc/theory.md 9.7).
+     */
     Tensor<1, dim>
     body_force(const Point<dim> &p, const double t) const;
 
     /** f0 at all @p points in one batch, with an optional @p cache
      *  (make_force_cache()). */
     std::vector<Tensor<1, dim>>
-    body_force(const std::vector<Point<dim>> &points, const double t,
-               SpatialCache *cache = nullptr) const;
+    body_force(const std::vector<Point<dim>> &points,
+               const double                   t,
+               SpatialCache                  *cache = nullptr) const;
 
     /** A cache for body_force() (SpatialCache). */
     std::unique_ptr<SpatialCache>
@@ -95,13 +99,15 @@ namespace hemicontact
 
     /** f2 = sigma nu. */
     Tensor<1, dim>
-    surface_traction(const Point<dim> &p, const Tensor<1, dim> &normal,
-                     const double t) const;
+    surface_traction(const Point<dim>     &p,
+                     const Tensor<1, dim> &normal,
+                     const double          t) const;
 
     /** f3 = sigma nu + xi_nu nu + xi_tau. */
     Tensor<1, dim>
-    contact_traction(const Point<dim> &p, const Tensor<1, dim> &normal,
-                     const double t) const;
+    contact_traction(const Point<dim>     &p,
+                     const Tensor<1, dim> &normal,
+                     const double          t) const;
 
     /**
      * The problem data: derived f0, f2, f3, u0, w0 and the friction bound
@@ -115,12 +121,12 @@ namespace hemicontact
     void
     unpack_second_derivatives(const double *r, Values &v) const;
 
-    const NormalLaw &                   law;
-    const FrictionLaw &                 friction;
-    KelvinVoigtMaterial<dim>            material;
+    const NormalLaw         &law;
+    const FrictionLaw       &friction;
+    KelvinVoigtMaterial<dim> material;
     /** rho in f0: the density (dynamic) or 0 (quasistatic). */
-    double                              inertia_density;
-    std::vector<Expression>             displacement;
+    double                  inertia_density;
+    std::vector<Expression> displacement;
     /** @name The derivatives of u, one expression per component */
     /** @{ */
     std::vector<Expression> velocity;              ///< w_c = du_c/dt
@@ -135,9 +141,9 @@ namespace hemicontact
     /** dw/dt and the second derivatives with j >= i (body_force()). */
     std::unique_ptr<ExpressionTape> force_tape;
     /** The fields tape's outputs, then the force tape's (evaluate()). */
-    std::unique_ptr<ExpressionTape> all_tape;
-    std::unique_ptr<Expression>         normal_multiplier;
-    std::vector<Expression>             tangential_multiplier;
+    std::unique_ptr<ExpressionTape>           all_tape;
+    std::unique_ptr<Expression>               normal_multiplier;
+    std::vector<Expression>                   tangential_multiplier;
     std::shared_ptr<const FrictionBound<dim>> friction_bound;
   };
 } // namespace hemicontact

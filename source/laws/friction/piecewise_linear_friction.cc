@@ -1,7 +1,7 @@
 #include <deal.II/base/utilities.h>
 
-#include <hemicontact/laws/friction/piecewise_linear_friction.h>
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/laws/friction/piecewise_linear_friction.h>
 
 #include <algorithm>
 #include <cmath>
@@ -49,7 +49,9 @@ namespace hemicontact
   {
     prm.enter_subsection(law_name);
     prm.declare_entry(
-      "response breakpoints", "0:1, 0.05:0.6, 0.5:0.8", Patterns::Anything(),
+      "response breakpoints",
+      "0:1, 0.05:0.6, 0.5:0.8",
+      Patterns::Anything(),
       "Breakpoints s:g of the friction force F(s) = g F_b at slip speed s, "
       "comma separated, s strictly increasing, g >= 0. g = 1 at s = 0 (the "
       "static bound; 0:1 is added if the list does not start at s = 0). "
@@ -59,11 +61,11 @@ namespace hemicontact
 
   PiecewiseLinearFrictionLaw::PiecewiseLinearFrictionLaw(ParameterHandler &prm)
     : PiecewiseLinearFrictionLaw([&prm]() {
-        prm.enter_subsection(law_name);
-        const std::string text = prm.get("response breakpoints");
-        prm.leave_subsection();
-        return parse_breakpoints(text);
-      }())
+      prm.enter_subsection(law_name);
+      const std::string text = prm.get("response breakpoints");
+      prm.leave_subsection();
+      return parse_breakpoints(text);
+    }())
   {}
 
   PiecewiseLinearFrictionLaw::PiecewiseLinearFrictionLaw(
@@ -75,8 +77,9 @@ namespace hemicontact
     if (points.front().first != 0.)
       points.insert(points.begin(), {0., 1.});
     require(points.front().second == 1.,
-            law_prefix + "the ratio at s = 0 must be 1 (the friction bound "
-                         "itself), not " +
+            law_prefix +
+              "the ratio at s = 0 must be 1 (the friction bound "
+              "itself), not " +
               std::to_string(points.front().second) + ".");
     for (unsigned int k = 0; k < points.size(); ++k)
       {
@@ -84,14 +87,15 @@ namespace hemicontact
                 law_prefix + "the slip speed s = " +
                   std::to_string(points[k].first) + " is negative.");
         require(points[k].second >= 0,
-                law_prefix + "the ratio g = " +
-                  std::to_string(points[k].second) + " at s = " +
-                  std::to_string(points[k].first) +
+                law_prefix +
+                  "the ratio g = " + std::to_string(points[k].second) +
+                  " at s = " + std::to_string(points[k].first) +
                   " is negative; friction opposes slip, so g >= 0.");
         if (k > 0)
           require(points[k].first > points[k - 1].first,
-                  law_prefix + "the breakpoints must have strictly "
-                               "increasing s, but s = " +
+                  law_prefix +
+                    "the breakpoints must have strictly "
+                    "increasing s, but s = " +
                     std::to_string(points[k].first) + " follows s = " +
                     std::to_string(points[k - 1].first) + ".");
       }
@@ -103,7 +107,9 @@ namespace hemicontact
     if (s >= points.back().first)
       return points.back().second;
     const auto upper =
-      std::upper_bound(points.begin(), points.end(), s,
+      std::upper_bound(points.begin(),
+                       points.end(),
+                       s,
                        [](const double x, const std::pair<double, double> &p) {
                          return x < p.first;
                        });
@@ -126,7 +132,9 @@ namespace hemicontact
     if (s >= points.back().first)
       return 0.;
     const auto upper =
-      std::upper_bound(points.begin(), points.end(), std::max(s, 0.),
+      std::upper_bound(points.begin(),
+                       points.end(),
+                       std::max(s, 0.),
                        [](const double x, const std::pair<double, double> &p) {
                          return x < p.first;
                        });
@@ -146,7 +154,8 @@ namespace hemicontact
     for (unsigned int k = 0; k + 1 < points.size() && points[k].first < s; ++k)
       {
         const double s1 = std::min(s, points[k + 1].first);
-        integral += 0.5 * (points[k].second + ratio(s1)) * (s1 - points[k].first);
+        integral +=
+          0.5 * (points[k].second + ratio(s1)) * (s1 - points[k].first);
       }
     if (s > points.back().first)
       integral += points.back().second * (s - points.back().first);
@@ -159,8 +168,9 @@ namespace hemicontact
   {
     double steepest = 0;
     for (unsigned int k = 0; k + 1 < points.size(); ++k)
-      steepest = std::max(steepest, -(points[k + 1].second - points[k].second) /
-                                      (points[k + 1].first - points[k].first));
+      steepest = std::max(steepest,
+                          -(points[k + 1].second - points[k].second) /
+                            (points[k + 1].first - points[k].first));
     return bound * steepest;
   }
 } // namespace hemicontact

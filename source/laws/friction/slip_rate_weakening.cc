@@ -1,5 +1,5 @@
-#include <hemicontact/laws/friction/slip_rate_weakening.h>
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/laws/friction/slip_rate_weakening.h>
 #include <hemicontact/laws/law_parameters.h>
 
 #include <cmath>
@@ -10,14 +10,20 @@ namespace hemicontact
   SlipRateWeakeningLaw::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection(law_name);
-    prm.declare_entry("static coefficient", "0.6", Patterns::Double(),
+    prm.declare_entry("static coefficient",
+                      "0.6",
+                      Patterns::Double(),
                       "Static friction coefficient mu_s > 0; 'data/friction "
                       "bound' is the static bound, reached at zero slip "
                       "speed.");
-    prm.declare_entry("dynamic coefficient", "0.4", Patterns::Double(),
+    prm.declare_entry("dynamic coefficient",
+                      "0.4",
+                      Patterns::Double(),
                       "Dynamic friction coefficient mu_d, 0 < mu_d <= mu_s: "
                       "the bound falls to F_b mu_d/mu_s at high slip speed.");
-    prm.declare_entry("characteristic slip speed", "0.1", Patterns::Double(),
+    prm.declare_entry("characteristic slip speed",
+                      "0.1",
+                      Patterns::Double(),
                       "Slip speed v0 > 0 over which the friction force decays "
                       "from the static towards the dynamic value "
                       "(exp(-s/v0)).");
@@ -25,14 +31,16 @@ namespace hemicontact
   }
 
   SlipRateWeakeningLaw::SlipRateWeakeningLaw(ParameterHandler &prm)
-    : SlipRateWeakeningLaw(
-        get_law_double(prm, law_name, "static coefficient"),
-        get_law_double(prm, law_name, "dynamic coefficient"),
-        get_law_double(prm, law_name, "characteristic slip speed"))
+    : SlipRateWeakeningLaw(get_law_double(prm, law_name, "static coefficient"),
+                           get_law_double(prm, law_name, "dynamic coefficient"),
+                           get_law_double(prm,
+                                          law_name,
+                                          "characteristic slip speed"))
   {}
 
   SlipRateWeakeningLaw::SlipRateWeakeningLaw(
-    const double static_coefficient, const double dynamic_coefficient,
+    const double static_coefficient,
+    const double dynamic_coefficient,
     const double characteristic_slip_speed)
     : drop(1. - dynamic_coefficient / static_coefficient)
     , v0(characteristic_slip_speed)
@@ -50,8 +58,9 @@ namespace hemicontact
               " exceeds the static coefficient " +
               std::to_string(static_coefficient) +
               "; the law weakens with slip speed, so mu_d <= mu_s.");
-    require(v0 > 0, law + "the characteristic slip speed " +
-                      std::to_string(v0) + " must be positive.");
+    require(v0 > 0,
+            law + "the characteristic slip speed " + std::to_string(v0) +
+              " must be positive.");
   }
 
   double

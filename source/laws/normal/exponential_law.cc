@@ -1,6 +1,6 @@
 #include <hemicontact/base/exceptions.h>
-#include <hemicontact/laws/normal/exponential_law.h>
 #include <hemicontact/laws/law_parameters.h>
+#include <hemicontact/laws/normal/exponential_law.h>
 
 #include <cmath>
 
@@ -10,12 +10,18 @@ namespace hemicontact
   ExponentialLaw::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection(law_name);
-    prm.declare_entry("a", "1", Patterns::Double(),
+    prm.declare_entry("a",
+                      "1",
+                      Patterns::Double(),
                       "Upper end of dj(0) = [0,a]; the response at the onset "
                       "of penetration. Must satisfy a >= b.");
-    prm.declare_entry("b", "0.5", Patterns::Double(),
+    prm.declare_entry("b",
+                      "0.5",
+                      Patterns::Double(),
                       "Asymptotic response for large normal velocity, b >= 0.");
-    prm.declare_entry("beta", "10", Patterns::Double(),
+    prm.declare_entry("beta",
+                      "10",
+                      Patterns::Double(),
                       "Decay rate beta >= 0 of the response from a to b.");
     prm.leave_subsection();
   }
@@ -26,17 +32,21 @@ namespace hemicontact
                      get_law_double(prm, law_name, "beta"))
   {}
 
-  ExponentialLaw::ExponentialLaw(const double a, const double b,
+  ExponentialLaw::ExponentialLaw(const double a,
+                                 const double b,
                                  const double beta)
-    : a(a), b(b), beta(beta)
+    : a(a)
+    , b(b)
+    , beta(beta)
   {
     require(b >= 0,
-            "normal law 'exponential': the parameter b = " +
-              std::to_string(b) + " must be non-negative.");
-    require(a >= b,
-            "normal law 'exponential': the parameter a = " +
-              std::to_string(a) + " is smaller than b = " + std::to_string(b) +
-              "; the law needs a >= b (a response that decreases from a to b).");
+            "normal law 'exponential': the parameter b = " + std::to_string(b) +
+              " must be non-negative.");
+    require(
+      a >= b,
+      "normal law 'exponential': the parameter a = " + std::to_string(a) +
+        " is smaller than b = " + std::to_string(b) +
+        "; the law needs a >= b (a response that decreases from a to b).");
     require(beta >= 0,
             "normal law 'exponential': the decay rate beta = " +
               std::to_string(beta) + " must be non-negative.");

@@ -1,6 +1,6 @@
 #include <hemicontact/base/exceptions.h>
-#include <hemicontact/laws/normal/linear_damping_law.h>
 #include <hemicontact/laws/law_parameters.h>
+#include <hemicontact/laws/normal/linear_damping_law.h>
 
 namespace hemicontact
 {
@@ -8,7 +8,9 @@ namespace hemicontact
   LinearDampingLaw::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection(law_name);
-    prm.declare_entry("coefficient", "1", Patterns::Double(),
+    prm.declare_entry("coefficient",
+                      "1",
+                      Patterns::Double(),
                       "Damping coefficient c >= 0 of xi = c r_+.");
     prm.leave_subsection();
   }

@@ -14,8 +14,7 @@ namespace hemicontact
     parse_breakpoints(const std::string &text)
     {
       std::vector<std::pair<double, double>> result;
-      for (const std::string &item :
-           Utilities::split_string_list(text, ','))
+      for (const std::string &item : Utilities::split_string_list(text, ','))
         {
           const std::vector<std::string> rp =
             Utilities::split_string_list(item, ':');
@@ -30,8 +29,9 @@ namespace hemicontact
             }
           catch (...)
             {
-              throw InputError("normal law 'piecewise linear': the breakpoint '" +
-                               item + "' does not hold two numbers r:p.");
+              throw InputError(
+                "normal law 'piecewise linear': the breakpoint '" + item +
+                "' does not hold two numbers r:p.");
             }
           require(std::isfinite(result.back().first) &&
                     std::isfinite(result.back().second),
@@ -48,7 +48,8 @@ namespace hemicontact
   {
     prm.enter_subsection(law_name);
     prm.declare_entry(
-      "subgradient breakpoints", "0:1, 0.05:1.5, 0.2:0.4",
+      "subgradient breakpoints",
+      "0:1, 0.05:1.5, 0.2:0.4",
       Patterns::Anything(),
       "Breakpoints r:p of the response p(r) for r > 0, comma separated, "
       "with r strictly increasing from r = 0 and p >= 0. p at r = 0 is the "
@@ -59,11 +60,11 @@ namespace hemicontact
 
   PiecewiseLinearLaw::PiecewiseLinearLaw(ParameterHandler &prm)
     : PiecewiseLinearLaw([&prm]() {
-        prm.enter_subsection(law_name);
-        const std::string text = prm.get("subgradient breakpoints");
-        prm.leave_subsection();
-        return parse_breakpoints(text);
-      }())
+      prm.enter_subsection(law_name);
+      const std::string text = prm.get("subgradient breakpoints");
+      prm.leave_subsection();
+      return parse_breakpoints(text);
+    }())
   {}
 
   PiecewiseLinearLaw::PiecewiseLinearLaw(
@@ -81,8 +82,8 @@ namespace hemicontact
       {
         require(points[k].second >= 0,
                 "normal law 'piecewise linear': the response p = " +
-                  std::to_string(points[k].second) + " at r = " +
-                  std::to_string(points[k].first) +
+                  std::to_string(points[k].second) +
+                  " at r = " + std::to_string(points[k].first) +
                   " is negative; the foundation can only resist penetration.");
         if (k > 0)
           require(points[k].first > points[k - 1].first,
@@ -98,14 +99,15 @@ namespace hemicontact
   {
     if (r >= points.back().first)
       return points.back().second;
-    const auto upper = std::upper_bound(
-      points.begin(), points.end(), r,
-      [](const double x, const std::pair<double, double> &p) {
-        return x < p.first;
-      });
-    const auto lower = upper - 1;
-    const double theta =
-      (r - lower->first) / (upper->first - lower->first);
+    const auto upper =
+      std::upper_bound(points.begin(),
+                       points.end(),
+                       r,
+                       [](const double x, const std::pair<double, double> &p) {
+                         return x < p.first;
+                       });
+    const auto   lower = upper - 1;
+    const double theta = (r - lower->first) / (upper->first - lower->first);
     return (1 - theta) * lower->second + theta * upper->second;
   }
 
@@ -120,11 +122,13 @@ namespace hemicontact
   {
     if (r <= 0 || r >= points.back().first)
       return 0.;
-    const auto upper = std::upper_bound(
-      points.begin(), points.end(), r,
-      [](const double x, const std::pair<double, double> &p) {
-        return x < p.first;
-      });
+    const auto upper =
+      std::upper_bound(points.begin(),
+                       points.end(),
+                       r,
+                       [](const double x, const std::pair<double, double> &p) {
+                         return x < p.first;
+                       });
     const auto lower = upper - 1;
     return (upper->second - lower->second) / (upper->first - lower->first);
   }
@@ -136,8 +140,7 @@ namespace hemicontact
       return 0.;
     // exact integral of the piecewise-linear response minus a
     double integral = 0;
-    for (unsigned int k = 0; k + 1 < points.size() && points[k].first < r;
-         ++k)
+    for (unsigned int k = 0; k + 1 < points.size() && points[k].first < r; ++k)
       {
         const double r1 = std::min(r, points[k + 1].first);
         integral +=
