@@ -24,6 +24,13 @@ namespace hemicontact
       young
     };
 
+    const SelectionNames<ProblemClass> problem_classes = {
+      {"dynamic", ProblemClass::dynamic},
+      {"quasistatic", ProblemClass::quasistatic},
+      {"static", ProblemClass::static_}};
+    const SelectionNames<TimeScheme> time_schemes = {
+      {"left point", TimeScheme::left_point},
+      {"implicit", TimeScheme::implicit}};
     const SelectionNames<MeshType> mesh_types = {{"rectangle",
                                                   MeshType::rectangle},
                                                  {"gmsh", MeshType::gmsh}};
@@ -366,15 +373,18 @@ namespace hemicontact
     prm.declare_entry(
       "class",
       "dynamic",
-      Patterns::Selection("dynamic|quasistatic"),
+      selection_pattern(problem_classes),
       "The problem class (doc/theory.md, section 9): 'dynamic' (rho dw/dt "
-      "= Div sigma + f0) or 'quasistatic' (0 = Div sigma + f0: no inertia; "
+      "= Div sigma + f0), 'quasistatic' (0 = Div sigma + f0: no inertia; "
       "'material/density' and 'data/initial velocity' are not used, the "
-      "initial velocity is the step problem at t = 0).");
+      "initial velocity is the step problem at t = 0) or 'static' (0 = Div "
+      "B eps(u) + f0, the laws act on the displacement; the time axis is a "
+      "load parameter, one problem per load value; density, viscosity, the "
+      "initial values and the time scheme are not used).");
     prm.declare_entry(
       "time scheme",
       "left point",
-      Patterns::Selection("left point|implicit"),
+      selection_pattern(time_schemes),
       "The rule for the displacement: 'left point' (u_{n+1} = u_n + k w_n, "
       "the elastic term explicit, stable below a time-step limit) or "
       "'implicit' (u_n = u_{n-1} + k w_n, the elastic term in the step "
@@ -386,11 +396,8 @@ namespace hemicontact
   ProblemParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("problem");
-    problem_class = prm.get("class") == "quasistatic" ?
-                      ProblemClass::quasistatic :
-                      ProblemClass::dynamic;
-    time_scheme = prm.get("time scheme") == "implicit" ? TimeScheme::implicit :
-                                                         TimeScheme::left_point;
+    problem_class = get_selection(prm, "class", problem_classes);
+    time_scheme   = get_selection(prm, "time scheme", time_schemes);
     prm.leave_subsection();
   }
 

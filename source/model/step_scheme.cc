@@ -1,9 +1,61 @@
 #include <hemicontact/model/step_scheme.h>
 
 #include <sstream>
+#include <utility>
+#include <vector>
 
 namespace hemicontact
 {
+  namespace
+  {
+    /** "a", "a and b", "a, b and c". */
+    std::string
+    joined(const std::vector<std::string> &items)
+    {
+      std::string text;
+      for (std::size_t i = 0; i < items.size(); ++i)
+        text += (i == 0                ? "" :
+                 i + 1 == items.size() ? " and " :
+                                         ", ") +
+                items[i];
+      return text;
+    }
+
+    /** The note of StepScheme::ignored_parameters() for the static class. */
+    std::string
+    ignored_by_static_class(const Parameters &parameters)
+    {
+      // the defaults: density 1, viscosity mu = lambda = 1, initial values
+      // 0, the left-point rule
+      std::vector<std::string>  ignored;
+      const MaterialParameters &m = parameters.material;
+      if (m.density != 1.)
+        {
+          std::ostringstream value;
+          value << m.density;
+          ignored.push_back("'material/density' = " + value.str());
+        }
+      if (m.viscosity.mu != 1. || m.viscosity.lambda != 1.)
+        ignored.push_back("'material/viscosity'");
+      if (!parameters.manufactured.enabled)
+        for (const auto &[name, value] :
+             {std::make_pair("initial displacement",
+                             parameters.data.initial_displacement),
+              std::make_pair("initial velocity",
+                             parameters.data.initial_velocity)})
+          if (value != "0")
+            ignored.push_back(std::string("'data/") + name + "' = '" + value +
+                              "'");
+      if (parameters.problem.time_scheme != TimeScheme::left_point)
+        ignored.push_back("'problem/time scheme'");
+      if (ignored.empty())
+        return "";
+      return "the static class does not use " + joined(ignored) +
+             " (no inertia, no viscosity, no initial state: one problem per "
+             "load value t_n = n k, doc/theory.md section 9.2).";
+    }
+  } // namespace
+
   StepScheme::StepScheme(const ProblemClass problem_class,
                          const TimeScheme   time_scheme)
     : the_class(problem_class)
@@ -14,9 +66,20 @@ namespace hemicontact
     : StepScheme(parameters.problem_class, parameters.time_scheme)
   {}
 
+  MaterialParameters
+  StepScheme::class_material(const MaterialParameters &material) const
+  {
+    MaterialParameters m = material;
+    if (is_static())
+      m.viscosity = LamePair{0., 0.};
+    return m;
+  }
+
   std::string
   StepScheme::name() const
   {
+    if (is_static())
+      return "static";
     return std::string(has_inertia() ? "dynamic" : "quasistatic") +
            (the_scheme == TimeScheme::left_point ? ", left point" :
                                                    ", implicit");
@@ -27,6 +90,8 @@ namespace hemicontact
   {
     // doc/theory.md, section 9 (the table)
     StepMatrixCoefficients c;
+    if (is_static())
+      return StepMatrixCoefficients{0., 0., 1.};
     c.mass    = has_inertia() ? 1. / k : 0.;
     c.viscous = 1.;
     c.elastic = the_scheme == TimeScheme::implicit ? k : 0.;
@@ -43,6 +108,8 @@ namespace hemicontact
   std::string
   StepScheme::step_matrix_name() const
   {
+    if (is_static())
+      return "B";
     return std::string(has_inertia() ? "rho/k M + A" : "A") +
            (the_scheme == TimeScheme::implicit ? " + k B" : "");
   }
@@ -82,6 +149,10 @@ namespace hemicontact
     std::ostringstream s;
     if (has_inertia())
       s << "reduce the time step k = " << k;
+    else if (is_static())
+      s << "in the static class the condition is one on the elastic "
+           "moduli, the geometry and the laws alone (K = B, doc/theory.md "
+           "section 9.5): use stiffer elastic moduli";
     else
       s << "in the quasistatic class the condition does not improve with the "
            "time step (K = "
@@ -95,6 +166,8 @@ namespace hemicontact
   {
     if (has_inertia())
       return "";
+    if (is_static())
+      return ignored_by_static_class(parameters);
     // the defaults of 'material/density' and 'data/initial velocity'
     std::string ignored;
     if (parameters.material.density != 1.)

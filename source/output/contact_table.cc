@@ -16,14 +16,17 @@ namespace hemicontact
     /**
      * On the root: the gathered rows (@p width values each) of step
      * @p step sorted by coordinates, written atomically to
-     * @p directory/contact_NNNNN.csv; returns the reason of a failure.
+     * @p directory/contact_NNNNN.csv, the columns of the step's unknown
+     * named with @p unknown ("w", or "u" in the static class); returns the
+     * reason of a failure.
      */
     template <int dim>
     std::string
     write_sorted_rows(const std::vector<std::vector<double>> &gathered,
                       const unsigned int                      width,
                       const std::string                      &directory,
-                      const unsigned int                      step)
+                      const unsigned int                      step,
+                      const std::string                      &unknown)
     {
       std::vector<std::vector<double>> table;
       for (const std::vector<double> &part : gathered)
@@ -48,9 +51,9 @@ namespace hemicontact
         file << xyz[d] << ",";
       for (unsigned int d = 0; d < dim; ++d)
         file << "normal_" << xyz[d] << ",";
-      file << "time,w_nu,w_tau_norm";
+      file << "time," << unknown << "_nu," << unknown << "_tau_norm";
       for (unsigned int d = 0; d < dim; ++d)
-        file << ",w_tau_" << xyz[d];
+        file << "," << unknown << "_tau_" << xyz[d];
       file << ",sigma_nu,sigma_tau_norm";
       for (unsigned int d = 0; d < dim; ++d)
         file << ",sigma_tau_" << xyz[d];
@@ -137,7 +140,8 @@ namespace hemicontact
       Utilities::MPI::gather(mpi_communicator, rows, 0);
     std::string error;
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      error = write_sorted_rows<dim>(gathered, width, directory, s.step_number);
+      error = write_sorted_rows<dim>(
+        gathered, width, directory, s.step_number, s.scheme.unknown_symbol());
     throw_if_any(error, mpi_communicator);
   }
 

@@ -170,7 +170,7 @@ namespace hemicontact
            "line_search_reductions,wall_seconds,adapted,"
            "kinetic_before_adaptation,elastic_before_adaptation,"
            "kinetic_after_adaptation,elastic_after_adaptation,"
-           "energy_transfer_change,time_step_halvings\n";
+           "energy_transfer_change,time_step_halvings,minimised_energy\n";
     // probes.csv (the points are checked above)
     if (!probe_points.empty() &&
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
@@ -356,7 +356,7 @@ namespace hemicontact
             << (s.adapted ? 1 : 0) << "," << s.kinetic_before_adaptation << ","
             << s.elastic_before_adaptation << "," << s.kinetic_after_adaptation
             << "," << s.elastic_after_adaptation << "," << e.transfer_change
-            << "," << s.time_step_halvings << "\n";
+            << "," << s.time_step_halvings << "," << e.minimised_energy << "\n";
         error = append_complete(steps_file,
                                 parameters.output.directory + "/steps.csv",
                                 row.str());

@@ -31,6 +31,80 @@ namespace hemicontact
      * every 10%.
      */
     constexpr double convexity_recheck_headroom = 1.1;
+
+    /** The nodal unknown of @p node in @p v (owned entries). */
+    template <int dim>
+    Tensor<1, dim>
+    nodal_vector(const ContactNode<dim>              &node,
+                 const TrilinosWrappers::MPI::Vector &v)
+    {
+      Tensor<1, dim> x;
+      for (unsigned int c = 0; c < dim; ++c)
+        x[c] = v[node.dofs[c]];
+      return x;
+    }
+
+    /**
+     * The step energy J = 1/2 v.K v - b.v + sum_i m_i [j_nu + phi] at @p v
+     * (constrained entries zero; doc/theory.md section 9): what the step
+     * minimised, at its solution.
+     */
+    template <int dim>
+    double
+    minimised_step_energy(const TrilinosWrappers::SparseMatrix &K,
+                          const TrilinosWrappers::MPI::Vector  &b,
+                          const TrilinosWrappers::MPI::Vector  &v,
+                          const std::vector<ContactNode<dim>>  &nodes,
+                          const NormalLaw                      &law,
+                          const FrictionLaw                    &friction)
+    {
+      TrilinosWrappers::MPI::Vector Kv(v);
+      K.vmult(Kv, v);
+      double nodal = 0;
+      for (const ContactNode<dim> &node : nodes)
+        if (node.locally_owned)
+          nodal += nodal::energy(node, nodal_vector(node, v), law, friction);
+      return 0.5 * (v * Kv) - b * v +
+             Utilities::MPI::sum(nodal, v.get_mpi_communicator());
+    }
+
+    /**
+     * The identity of the static class at one load value (doc/theory.md
+     * 9.4), u.B u + sum_i m_i (xi_nu u_nu + xi_tau . u_tau) = F.u, in the
+     * terms of EnergyBalance: the stored energy 1/2 u.B u as elastic, half
+     * the work of the contact forces (normal as damping, tangential as
+     * friction) and half the work of the loads as external work, so that
+     * the defect is the identity's, halved (Clapeyron's theorem: the work
+     * of forces raised in proportion from zero).
+     */
+    template <int dim>
+    EnergyBalance
+    clapeyron_balance(const TrilinosWrappers::SparseMatrix &B,
+                      const TrilinosWrappers::MPI::Vector  &F,
+                      const TrilinosWrappers::MPI::Vector  &u,
+                      const std::vector<ContactNode<dim>>  &nodes,
+                      const NormalLaw                      &law,
+                      const FrictionLaw                    &friction,
+                      MPI_Comm                              comm)
+    {
+      TrilinosWrappers::MPI::Vector Bu(u);
+      B.vmult(Bu, u);
+      double normal = 0, tangential = 0;
+      for (const ContactNode<dim> &node : nodes)
+        if (node.locally_owned)
+          {
+            const auto [n, t] =
+              nodal::contact_work(node, nodal_vector(node, u), law, friction);
+            normal += n;
+            tangential += t;
+          }
+      EnergyBalance e;
+      e.elastic              = 0.5 * (u * Bu);
+      e.damping_dissipation  = 0.5 * Utilities::MPI::sum(normal, comm);
+      e.friction_dissipation = 0.5 * Utilities::MPI::sum(tangential, comm);
+      e.external_work        = 0.5 * (F * u);
+      return e;
+    }
   } // namespace
 
   template <int dim>
@@ -63,12 +137,28 @@ namespace hemicontact
     const TrilinosWrappers::MPI::Vector w =
       without_constrained(velocity, base_constraints);
     TrilinosWrappers::MPI::Vector tmp(locally_owned_dofs, mpi_communicator);
+    if (scheme.is_static())
+      {
+        energy = clapeyron_balance(elastic_matrix,
+                                   load,
+                                   w,
+                                   contact_nodes,
+                                   *law,
+                                   *friction,
+                                   mpi_communicator);
+        if (!initial)
+          energy.minimised_energy = minimised_step_energy(
+            step_matrix, step_rhs, w, contact_nodes, *law, *friction);
+        return;
+      }
     std::tie(energy.kinetic, energy.elastic) = stored_energy();
     if (initial)
       {
         energy.initial_energy = energy.total_energy();
         return;
       }
+    energy.minimised_energy = minimised_step_energy(
+      step_matrix, step_rhs, w, contact_nodes, *law, *friction);
 
     // the terms of doc/theory.md, section 9.3: k a_A(w, w) from A, the
     // numerical dissipation rho/2 |w_n - w_{n-1}|^2 -+ k^2/2 a_B(w_n, w_n)

@@ -35,7 +35,8 @@ namespace hemicontact
             Utilities::MPI::this_mpi_process(comm) == 0 &&
               parameters.output.terminal != TerminalOutput::quiet)
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
-    , material(parameters.material)
+    , material(
+        StepScheme(parameters.problem).class_material(parameters.material))
     , scheme(parameters.problem)
     , law(std::move(laws.normal))
     , friction(std::move(laws.friction))
@@ -313,10 +314,22 @@ namespace hemicontact
                 " there); it must satisfy u = 0 on Gamma_1.");
       base_constraints.distribute(v);
     };
-    interpolate_checked(*data.initial_velocity, velocity, "initial velocity");
-    interpolate_checked(*data.initial_displacement,
-                        displacement,
-                        "initial displacement");
+    if (scheme.is_static())
+      {
+        // no initial state: the first load value starts from u = 0
+        // (doc/theory.md 9.2)
+        velocity     = 0;
+        displacement = 0;
+      }
+    else
+      {
+        interpolate_checked(*data.initial_velocity,
+                            velocity,
+                            "initial velocity");
+        interpolate_checked(*data.initial_displacement,
+                            displacement,
+                            "initial displacement");
+      }
     old_velocity = velocity;
     step_number  = 0;
     update_friction_bounds(0.);

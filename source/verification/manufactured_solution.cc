@@ -45,7 +45,8 @@ namespace hemicontact
                                                   const FrictionLaw &friction)
     : law(law)
     , friction(friction)
-    , material(parameters.material)
+    , material(
+        StepScheme(parameters.problem).class_material(parameters.material))
     , inertia_density(
         StepScheme(parameters.problem).inertia_density(material.density()))
   {
@@ -66,10 +67,21 @@ namespace hemicontact
       std::make_shared<FrictionBound<dim>>(parameters.data.friction_bound,
                                            parameters.data.constants);
 
-    // the derivatives, once: t is variable number dim
+    // the derivatives, once: t is variable number dim; in the static class
+    // the laws see u itself, which takes the place of w (doc/theory.md 9.7)
+    const bool laws_on_displacement =
+      StepScheme(parameters.problem).is_static();
+    std::vector<Expression> displacement_again =
+      laws_on_displacement ? parse_vector(m.exact_displacement,
+                                          dim,
+                                          constants,
+                                          "exact displacement") :
+                             std::vector<Expression>();
     for (int c = 0; c < dim; ++c)
       {
-        velocity.push_back(displacement[c].derivative(dim));
+        velocity.push_back(laws_on_displacement ?
+                             std::move(displacement_again[c]) :
+                             displacement[c].derivative(dim));
         acceleration.push_back(velocity[c].derivative(dim));
         for (int i = 0; i < dim; ++i)
           {

@@ -99,8 +99,9 @@ namespace hemicontact
   /** The problem class (doc/theory.md, section 9). */
   enum class ProblemClass
   {
-    dynamic,    ///< rho dw/dt = Div sigma + f0 (sections 1-8)
-    quasistatic ///< 0 = Div sigma + f0: no inertia, viscosity kept
+    dynamic,     ///< rho dw/dt = Div sigma + f0 (sections 1-8)
+    quasistatic, ///< 0 = Div sigma + f0: no inertia, viscosity kept
+    static_      ///< 0 = Div B eps(u) + f0: the laws act on u
   };
 
   /** The rule for the displacement of the velocity classes (section 9). */

@@ -7,8 +7,10 @@ namespace hemicontact
 {
   /**
    * The discrete energy identity that the scheme satisfies exactly, here
-   * for the dynamic left point (every class and rule: doc/theory.md,
-   * section 9.3, with the terms of StepScheme::step_energy()).
+   * for the dynamic left point (every velocity class and rule:
+   * doc/theory.md, section 9.3, with the terms of
+   * StepScheme::step_energy(); the static class books the identity of
+   * section 9.4 per load value in the same terms).
    * Testing step n of Problem 4.4 with w_n and using u_{n+1} = u_n + k w_n:
    *
    *   E_n - E_{n-1} + k a_A(w_n,w_n) + k sum_i m_i (xi_nu w_nu + F_b|w_tau|)
@@ -38,6 +40,8 @@ namespace hemicontact
     double numerical_dissipation = 0; ///< sum of the bracket above
     double transfer_change =
       0; ///< sum of E after - E before a mesh or k change
+    /** The step energy J_n at the step's solution (doc/theory.md 9). */
+    double minimised_energy = 0;
 
     double
     total_energy() const

@@ -25,8 +25,8 @@ namespace hemicontact
   };
 
   /**
-   * What differs between the problem classes and time schemes of the
-   * velocity classes (doc/theory.md, section 9): the step matrix and
+   * What differs between the problem classes and time schemes
+   * (doc/theory.md, section 9): the step matrix and
    * right-hand side, the update of the displacement, the initial velocity,
    * the terms of the energy identity (9.3), the matrix of the convexity
    * check (9.5) and the stability condition (9.6). Every step is one
@@ -37,6 +37,10 @@ namespace hemicontact
    * right-hand side uses: the left-point rule adds k w_{n-1} to it before
    * step n (u_n = u_{n-1} + k w_{n-1}), the implicit rule adds k w_n after
    * it (u_n = u_{n-1} + k w_n). After step n it approximates u(t_n) in both.
+   *
+   * In the static class the step's unknown is the displacement u_n itself
+   * (the vector the velocity classes call w): K = B, b = F_n, the laws act
+   * on it, and after the step the held displacement is set to it.
    */
   class StepScheme
   {
@@ -57,6 +61,25 @@ namespace hemicontact
     /** "dynamic, left point", "quasistatic, implicit", ... */
     std::string
     name() const;
+
+    /** Whether the step's unknown is the displacement u (static class). */
+    bool
+    is_static() const
+    {
+      return the_class == ProblemClass::static_;
+    }
+    /** The symbol of the step's unknown in output: "w", or "u" (static). */
+    std::string
+    unknown_symbol() const
+    {
+      return is_static() ? "u" : "w";
+    }
+    /**
+     * The material of the class: @p material itself, without viscosity in
+     * the static class (sigma = B eps(u), doc/theory.md 9.1).
+     */
+    MaterialParameters
+    class_material(const MaterialParameters &material) const;
 
     /** Whether the equations hold the inertia term rho dw/dt (dynamic). */
     bool
@@ -93,13 +116,13 @@ namespace hemicontact
     bool
     initial_velocity_from_step() const
     {
-      return !has_inertia();
+      return the_class == ProblemClass::quasistatic;
     }
 
     /**
      * b = rho/k M w_{n-1} - B u + F (without inertia: F - B u), u the
      * displacement held before the step: u_n (left point) or u_{n-1}
-     * (implicit). @p mass is rho M.
+     * (implicit); static: b = F. @p mass is rho M.
      */
     template <class Matrix, class VectorType>
     void
@@ -119,8 +142,11 @@ namespace hemicontact
         }
       else
         rhs = 0;
-      elastic.vmult(tmp, displacement);
-      rhs -= tmp;
+      if (!is_static())
+        {
+          elastic.vmult(tmp, displacement);
+          rhs -= tmp;
+        }
       rhs += load;
     }
 
@@ -137,14 +163,17 @@ namespace hemicontact
       rhs += load;
     }
 
-    /** Before step n: u += k w_{n-1} (left point), nothing (implicit). */
+    /**
+     * Before step n: u += k w_{n-1} (left point), nothing (implicit,
+     * static).
+     */
     template <class VectorType>
     void
     displacement_before_step(VectorType       &u,
                              const VectorType &old_velocity,
                              const double      k) const
     {
-      if (the_scheme == TimeScheme::left_point)
+      if (uses_left_point())
         u.add(k, old_velocity);
     }
     /** Take displacement_before_step() back (a step that failed). */
@@ -154,17 +183,22 @@ namespace hemicontact
                                   const VectorType &old_velocity,
                                   const double      k) const
     {
-      if (the_scheme == TimeScheme::left_point)
+      if (uses_left_point())
         u.add(-k, old_velocity);
     }
-    /** After step n: u += k w_n (implicit), nothing (left point). */
+    /**
+     * After step n: u += k w_n (implicit), nothing (left point); static:
+     * u = the step's unknown.
+     */
     template <class VectorType>
     void
     displacement_after_step(VectorType       &u,
                             const VectorType &velocity,
                             const double      k) const
     {
-      if (the_scheme == TimeScheme::implicit)
+      if (is_static())
+        u = velocity;
+      else if (the_scheme == TimeScheme::implicit)
         u.add(k, velocity);
     }
 
@@ -176,7 +210,7 @@ namespace hemicontact
     double
     held_displacement_offset(const double k) const
     {
-      return the_scheme == TimeScheme::left_point ? k : 0.;
+      return uses_left_point() ? k : 0.;
     }
 
     /** The terms of the energy identity of one step (doc/theory.md 9.3). */
@@ -209,7 +243,7 @@ namespace hemicontact
     bool
     has_time_step_limit() const
     {
-      return the_scheme == TimeScheme::left_point;
+      return uses_left_point();
     }
     /** The stability condition as text, for messages. */
     std::string
@@ -230,6 +264,13 @@ namespace hemicontact
     ignored_parameters(const Parameters &parameters) const;
 
   private:
+    /** The left-point rule in a velocity class. */
+    bool
+    uses_left_point() const
+    {
+      return !is_static() && the_scheme == TimeScheme::left_point;
+    }
+
     ProblemClass the_class;
     TimeScheme   the_scheme;
   };

@@ -34,7 +34,9 @@ namespace hemicontact
    * with xi_nu in dj(w_nu), xi_tau in dphi(w_tau) (the friction law's force
    * F(|w_tau|) w_tau/|w_tau| with the bound F_b(x, t, u_nu) of the exact
    * state) and the given multiplier choices where those sets are intervals
-   * (w_nu = 0, w_tau = 0).
+   * (w_nu = 0, w_tau = 0). In the static class (doc/theory.md 9.7) the
+   * laws act on u, which takes the place of w here ("w" is u), and the
+   * material has no viscosity: f0 = -Div B eps(u).
    */
   template <int dim>
   class ManufacturedSolution
