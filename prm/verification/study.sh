@@ -7,14 +7,17 @@
 # written to results/CASE-TYPE/convergence.csv (with the study's log).
 # CLASS=quasistatic and/or SCHEME=implicit in the environment set
 # 'problem/class' and 'problem/time scheme' (doc/theory.md, section 9) and
-# write to results/CASE-TYPE-CLASS-SCHEME/ instead.
+# write to results/CASE-TYPE-CLASS-SCHEME/ instead. The static cases
+# (*_static.prm) set their class themselves and write to
+# results/CASE-TYPE/.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 case_name=$1; type=$2; levels=$3; refinement=$4; time_step=$5; np=${6:-1}
-class=${CLASS:-dynamic}; scheme=${SCHEME:-left point}
+class=${CLASS:-}; scheme=${SCHEME:-}
 out="$root/results/$case_name-$type"
-if [ "$class" != dynamic ] || [ "$scheme" != "left point" ]; then
-  out="$out-$class-${scheme// /-}"
+if [ -n "$class$scheme" ]; then
+  out="$out-${class:-dynamic}-${scheme:-left point}"
+  out="${out// /-}"
 fi
 mkdir -p "$out"
 {
@@ -23,7 +26,8 @@ mkdir -p "$out"
   printf 'subsection time\n  set time step = %s\nend\n' "$time_step"
   printf 'subsection convergence study\n  set type = %s\n  set levels = %s\nend\n' "$type" "$levels"
   printf 'subsection output\n  set directory = %s\nend\n' "$out"
-  printf 'subsection problem\n  set class = %s\n  set time scheme = %s\nend\n' "$class" "$scheme"
+  [ -z "$class" ] || printf 'subsection problem\n  set class = %s\nend\n' "$class"
+  [ -z "$scheme" ] || printf 'subsection problem\n  set time scheme = %s\nend\n' "$scheme"
 } > "$out/study.prm"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 start=$(date +%s)
