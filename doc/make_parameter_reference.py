@@ -54,7 +54,7 @@ entry holds one expression per component, separated by `;`.
 | kind | what is read |
 |---|---|
 | numbers | `2`, `0.25`, `.5`, `1e-3` |
-| variables | `x`, `y`, `z` (3d), `t`; `u_nu` in the friction bound |
+| variables | `x`, `y`, `z` (3d), `t`; `u_nu`, `w_nu` in the friction bound |
 | constants | those of `data / constants`, and `pi`, `_pi` (both 3.14159...), `_e` (2.71828...) |
 | arithmetic | `+ - * /`, `a^b` (right-associative: `2^3^2` = 2^9), unary `-` and `+` looser than `^` (`-x^2` = -(x^2)), parentheses |
 | functions of one argument | `sin cos tan exp log sqrt abs tanh sinh cosh atan`; `pos(a)` = max(a, 0); `step(a)` = 1 if a > 0, else 0; `sign(a)` = -1 if a < 0, else 1 |

@@ -405,13 +405,14 @@ namespace hemicontact
   DataParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("data");
-    prm.declare_entry("constants",
-                      "",
-                      Patterns::Anything(),
-                      "User constants for the expressions below, e.g. "
-                      "'g=9.81, v=0.1': finite numbers, each name once and "
-                      "none of a variable (x, y, z, t, u_nu) or a function "
-                      "(sin, ...). 'pi', '_pi' and '_e' are predefined.");
+    prm.declare_entry(
+      "constants",
+      "",
+      Patterns::Anything(),
+      "User constants for the expressions below, e.g. "
+      "'g=9.81, v=0.1': finite numbers, each name once and "
+      "none of a variable (x, y, z, t, u_nu, w_nu) or a function "
+      "(sin, ...). 'pi', '_pi' and '_e' are predefined.");
     const std::string vec_help =
       " Vector-valued: 'dimension' expressions (doc/parameters.md, "
       "Expressions) separated by ';' in x, y, z and t. A single number (e.g. "
@@ -437,11 +438,15 @@ namespace hemicontact
                       "Friction bound F_b >= 0 on Gamma_3: the radius of the "
                       "friction disk (the static bound of a weakening law). A "
                       "scalar expression (doc/parameters.md, Expressions) in "
-                      "x, y, z, t and u_nu, the normal displacement at the "
-                      "node (positive into the foundation), evaluated at the "
-                      "start of each step with the known u_n; e.g. "
-                      "mu*cp*pos(u_nu) for normal compliance with friction, "
-                      "or x < 0.5 ? 0.3 : 0.2.");
+                      "x, y, z, t, u_nu, the normal displacement at the "
+                      "node (positive into the foundation), and w_nu, the "
+                      "normal velocity (velocity classes). u_nu is the "
+                      "displacement known when the step starts; a bound in "
+                      "the step's own unknown (w_nu; u_nu in the static "
+                      "class) is found by fixed-point iterations "
+                      "(doc/theory.md, section 9.8). E.g. mu*cp*pos(u_nu) for "
+                      "normal compliance with friction, or "
+                      "x < 0.5 ? 0.3 : 0.2.");
     prm.declare_entry("initial displacement",
                       "0",
                       Patterns::Anything(),

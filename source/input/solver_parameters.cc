@@ -63,6 +63,20 @@ namespace hemicontact
                       "If the per-step convexity condition fails for the "
                       "chosen time step: stop with an error (true) or warn "
                       "(false).");
+    prm.declare_entry(
+      "friction bound tolerance",
+      "1e-8",
+      Patterns::Double(0),
+      "A friction bound that depends on the step's unknown (u_nu in the "
+      "static class, w_nu in the velocity classes) is found by fixed-point "
+      "iterations on the bound (doc/theory.md, section 9.8); they stop when "
+      "no nodal bound changes by more than this times the largest bound.");
+    prm.declare_entry("friction bound iterations",
+                      "30",
+                      Patterns::Integer(1),
+                      "Fixed-point iterations on the friction bound allowed "
+                      "in one step; a step whose bound has not settled by "
+                      "then fails (see 'time step halvings').");
     prm.leave_subsection();
   }
 
@@ -76,6 +90,8 @@ namespace hemicontact
     line_search        = prm.get_bool("line search");
     initial_guess      = get_selection(prm, "initial guess", initial_guesses);
     strict_convexity_check = prm.get_bool("strict convexity check");
+    bound_tolerance        = prm.get_double("friction bound tolerance");
+    bound_iterations       = prm.get_integer("friction bound iterations");
     prm.leave_subsection();
   }
 

@@ -12,8 +12,9 @@ namespace hemicontact
     std::vector<std::string>
     bound_variables(const int dim)
     {
-      return dim == 2 ? std::vector<std::string>{"x", "y", "t", "u_nu"} :
-                        std::vector<std::string>{"x", "y", "z", "t", "u_nu"};
+      return dim == 2 ?
+               std::vector<std::string>{"x", "y", "t", "u_nu", "w_nu"} :
+               std::vector<std::string>{"x", "y", "z", "t", "u_nu", "w_nu"};
     }
   } // namespace
 
@@ -32,26 +33,30 @@ namespace hemicontact
       }
     catch (const InputError &e)
       {
-        throw InputError(std::string("data: ") + e.what() +
-                         " The variables are " +
-                         (dim == 2 ? "x, y" : "x, y, z") +
-                         ", t and u_nu (the normal displacement).");
+        throw InputError(
+          std::string("data: ") + e.what() + " The variables are " +
+          (dim == 2 ? "x, y" : "x, y, z") +
+          ", t, u_nu (the normal displacement) and w_nu (the normal "
+          "velocity).");
       }
-    state_dependent =
-      expression->uses_variable(dim) || expression->uses_variable(dim + 1);
+    state_dependent = expression->uses_variable(dim) ||
+                      expression->uses_variable(dim + 1) ||
+                      expression->uses_variable(dim + 2);
   }
 
   template <int dim>
   double
   FrictionBound<dim>::value(const Point<dim> &p,
                             const double      t,
-                            const double      u_nu) const
+                            const double      u_nu,
+                            const double      w_nu) const
   {
-    std::vector<double> at(dim + 2);
+    std::vector<double> at(dim + 3);
     for (int d = 0; d < dim; ++d)
       at[d] = p[d];
     at[dim]        = t;
     at[dim + 1]    = u_nu;
+    at[dim + 2]    = w_nu;
     const double v = expression->evaluate(at);
     if (!(v >= 0) || !std::isfinite(v))
       {
@@ -59,7 +64,8 @@ namespace hemicontact
         s << "data: 'friction bound' = " << quoted_expression(text) << " is "
           << (std::isfinite(v) ? "negative" : "not a finite number") << " ("
           << v << ") at the contact node x = (" << p << "), t = " << t
-          << ", u_nu = " << u_nu << "; F_b must be a finite number >= 0.";
+          << ", u_nu = " << u_nu << ", w_nu = " << w_nu
+          << "; F_b must be a finite number >= 0.";
         throw InputError(s.str());
       }
     return v;

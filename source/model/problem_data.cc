@@ -50,10 +50,10 @@ namespace hemicontact
         return "is not a name (letters, digits and '_', not starting with "
                "a digit)";
       static const std::set<std::string> variables = {
-        "x", "y", "z", "t", "u_nu"};
+        "x", "y", "z", "t", "u_nu", "w_nu"};
       if (variables.count(name) != 0)
-        return "is a variable of the expressions (x, y, z, t, and u_nu in "
-               "the friction bound)";
+        return "is a variable of the expressions (x, y, z, t, and u_nu, "
+               "w_nu in the friction bound)";
       if (name == "pi" || name == "_pi" || name == "_e")
         return "is a predefined constant";
       // muparser's functions besides those of the grammar

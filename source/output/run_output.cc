@@ -170,7 +170,8 @@ namespace hemicontact
            "line_search_reductions,wall_seconds,adapted,"
            "kinetic_before_adaptation,elastic_before_adaptation,"
            "kinetic_after_adaptation,elastic_after_adaptation,"
-           "energy_transfer_change,time_step_halvings,minimised_energy\n";
+           "energy_transfer_change,time_step_halvings,minimised_energy,"
+           "bound_iterations\n";
     // probes.csv (the points are checked above)
     if (!probe_points.empty() &&
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
@@ -356,7 +357,8 @@ namespace hemicontact
             << (s.adapted ? 1 : 0) << "," << s.kinetic_before_adaptation << ","
             << s.elastic_before_adaptation << "," << s.kinetic_after_adaptation
             << "," << s.elastic_after_adaptation << "," << e.transfer_change
-            << "," << s.time_step_halvings << "," << e.minimised_energy << "\n";
+            << "," << s.time_step_halvings << "," << e.minimised_energy << ","
+            << s.bound_iterations << "\n";
         error = append_complete(steps_file,
                                 parameters.output.directory + "/steps.csv",
                                 row.str());
@@ -390,6 +392,8 @@ namespace hemicontact
              << energy.kinetic << ", elastic " << energy.elastic
              << ", energy defect < 1e-7: "
              << (energy.relative_defect() < 1e-7 ? "yes" : "no");
+        if (s.bound_iterations > 0)
+          line << ", friction bound iterations " << s.bound_iterations;
         if (s.adapted)
           line << "\n  adapted: "
                << state.discretization.triangulation->n_global_active_cells()
@@ -425,6 +429,8 @@ namespace hemicontact
              << std::setprecision(2) << "  residual " << s.residual
              << "  energy " << energy.total_energy() << "  defect "
              << energy.relative_defect();
+        if (s.bound_iterations > 0)
+          line << "  bound iterations " << s.bound_iterations;
       }
     if (parameters.output.terminal != TerminalOutput::quiet)
       pcout << line.str() << std::endl;

@@ -7,8 +7,10 @@
 #include <hemicontact/problem/contact_problem.h>
 
 #include <algorithm>
+#include <functional>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <tuple>
 
@@ -22,6 +24,67 @@ namespace hemicontact
      * viscosity only dissipate.
      */
     constexpr double unstable_energy_growth = 100;
+
+    /**
+     * The fixed point of doc/theory.md, section 9.8: @p update_bounds
+     * evaluates the bounds at the step's current solution and returns their
+     * relative change, @p solve solves the step again with them frozen;
+     * until the change is below 'friction bound tolerance'. The iterations
+     * and the extra Newton and Krylov iterations are added to @p stats. A
+     * bound that has not settled within 'friction bound iterations', or
+     * whose change grows three times in a row, fails the step
+     * (SolverFailure).
+     */
+    void
+    iterate_friction_bound(const std::function<double()>         &update_bounds,
+                           const std::function<StepStatistics()> &solve,
+                           const NonlinearSolverParameters       &settings,
+                           StepStatistics                        &stats)
+    {
+      double       last_change = std::numeric_limits<double>::infinity();
+      unsigned int growths     = 0;
+      for (;;)
+        {
+          const double change = update_bounds();
+          ++stats.bound_iterations;
+          if (change <= settings.bound_tolerance)
+            return;
+          growths = change > last_change ? growths + 1 : 0;
+          if (stats.bound_iterations >= settings.bound_iterations ||
+              growths >= 3)
+            {
+              std::ostringstream message;
+              message << std::setprecision(3)
+                      << "the friction bound, which depends on the step's "
+                         "own unknown, did not settle: after "
+                      << stats.bound_iterations
+                      << " fixed-point iterations its relative change is "
+                      << change << " (tolerance " << settings.bound_tolerance
+                      << ", 'nonlinear solver/friction bound tolerance')"
+                      << (growths >= 3 ? " and it grows: the bound does not "
+                                         "contract (doc/theory.md, section "
+                                         "9.8, gives a sufficient condition)" :
+                                         "")
+                      << ". Make the bound depend less steeply on the "
+                         "state, or raise 'friction bound iterations'.";
+              throw SolverFailure(message.str());
+            }
+          last_change                = change;
+          const StepStatistics again = solve();
+          stats.newton_iterations += again.newton_iterations;
+          stats.linear_iterations += again.linear_iterations;
+          stats.line_search_reductions += again.line_search_reductions;
+          const unsigned int bound_iterations = stats.bound_iterations;
+          const unsigned int newton           = stats.newton_iterations;
+          const unsigned int linear           = stats.linear_iterations;
+          const unsigned int reductions       = stats.line_search_reductions;
+          stats                               = again;
+          stats.bound_iterations              = bound_iterations;
+          stats.newton_iterations             = newton;
+          stats.linear_iterations             = linear;
+          stats.line_search_reductions        = reductions;
+        }
+    }
 
 
     /**
@@ -118,7 +181,20 @@ namespace hemicontact
     assemble_step_rhs();
     try
       {
-        const StepStatistics stats = solve_step();
+        StepStatistics stats = solve_step();
+        // a bound in the step's own unknown: fixed-point iterations on it
+        // (doc/theory.md, section 9.8)
+        const FrictionBound<dim> &bound = *data.friction_bound;
+        if (scheme.is_static() ? bound.uses_normal_displacement() :
+                                 bound.uses_normal_velocity())
+          iterate_friction_bound(
+            [&]() { return update_friction_bounds(start + k); },
+            [&]() {
+              recheck_convexity_if_bounds_grew(start + k);
+              return solve_step();
+            },
+            parameters.nonlinear_solver,
+            stats);
         scheme.displacement_after_step(displacement, velocity, k);
         update_energy_balance(/*initial=*/false);
         last_step_length = k;
@@ -153,6 +229,7 @@ namespace hemicontact
     second.linear_iterations += first.linear_iterations;
     second.line_search_reductions += first.line_search_reductions;
     second.time_step_halvings += 1 + first.time_step_halvings;
+    second.bound_iterations += first.bound_iterations;
     return second;
   }
 

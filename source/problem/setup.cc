@@ -242,29 +242,46 @@ namespace hemicontact
   }
 
   template <int dim>
-  void
+  double
   ContactProblem<dim>::update_friction_bounds(const double t)
   {
-    const bool with_u_nu = data.friction_bound->depends_on_state();
-    TrilinosWrappers::MPI::Vector u;
-    if (with_u_nu)
+    const FrictionBound<dim> &bound = *data.friction_bound;
+    require(!(scheme.is_static() && bound.uses_normal_velocity()),
+            "data: 'friction bound' uses w_nu, the normal velocity, which the "
+            "static class does not have (the laws act on the displacement); "
+            "write the bound in u_nu.");
+    // the static class's u is its step's unknown (doc/theory.md 9.1)
+    TrilinosWrappers::MPI::Vector u, w;
+    if (bound.depends_on_state())
       {
         u.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
-        u = displacement;
+        w.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
+        u = scheme.is_static() ? velocity : displacement;
+        w = velocity;
       }
     // a bad value is reported by every rank, so that none waits for another
     // in the step that follows
     std::string error;
+    double      largest = 0, change = 0;
     for (ContactNode<dim> &node : contact_nodes)
       {
-        double u_nu = 0;
-        if (with_u_nu)
+        double u_nu = 0, w_nu = 0;
+        if (bound.depends_on_state())
           for (unsigned int c = 0; c < dim; ++c)
-            u_nu += u[node.dofs[c]] * node.normal[c];
+            {
+              u_nu += u[node.dofs[c]] * node.normal[c];
+              w_nu += w[node.dofs[c]] * node.normal[c];
+            }
         try
           {
-            node.friction_bound =
-              data.friction_bound->value(node.position, t, u_nu);
+            const double before = node.friction_bound;
+            node.friction_bound = bound.value(node.position, t, u_nu, w_nu);
+            if (node.locally_owned)
+              {
+                largest = std::max(largest, node.friction_bound);
+                change =
+                  std::max(change, std::abs(node.friction_bound - before));
+              }
           }
         catch (const InputError &e)
           {
@@ -276,6 +293,9 @@ namespace hemicontact
          Utilities::MPI::all_gather(mpi_communicator, error))
       if (!message.empty())
         throw InputError(message);
+    largest = Utilities::MPI::max(largest, mpi_communicator);
+    change  = Utilities::MPI::max(change, mpi_communicator);
+    return largest > 0 ? change / largest : 0.;
   }
 
   template <int dim>
@@ -372,21 +392,21 @@ namespace hemicontact
     update_energy_balance(/*initial=*/true);
   }
 
-#define HEMICONTACT_INSTANTIATE(dim)                                       \
-  template ContactProblem<dim>::ContactProblem(const Parameters &,         \
-                                               ContactLaws,                \
-                                               MPI_Comm);                  \
-  template ContactProblem<dim>::ContactProblem(const Parameters &,         \
-                                               ContactLaws,                \
-                                               ProblemData<dim>,           \
-                                               MPI_Comm);                  \
-  template void ContactProblem<dim>::update_friction_bounds(const double); \
-  template void ContactProblem<dim>::setup();                              \
-  template void ContactProblem<dim>::setup_on_current_mesh();              \
-  template void ContactProblem<dim>::setup_dofs();                         \
-  template void ContactProblem<dim>::setup_base_constraints();             \
-  template void ContactProblem<dim>::setup_contact_nodes();                \
-  template void ContactProblem<dim>::initialize_state();
+#define HEMICONTACT_INSTANTIATE(dim)                                         \
+  template ContactProblem<dim>::ContactProblem(const Parameters &,           \
+                                               ContactLaws,                  \
+                                               MPI_Comm);                    \
+  template ContactProblem<dim>::ContactProblem(const Parameters &,           \
+                                               ContactLaws,                  \
+                                               ProblemData<dim>,             \
+                                               MPI_Comm);                    \
+  template double ContactProblem<dim>::update_friction_bounds(const double); \
+  template void   ContactProblem<dim>::setup();                              \
+  template void   ContactProblem<dim>::setup_on_current_mesh();              \
+  template void   ContactProblem<dim>::setup_dofs();                         \
+  template void   ContactProblem<dim>::setup_base_constraints();             \
+  template void   ContactProblem<dim>::setup_contact_nodes();                \
+  template void   ContactProblem<dim>::initialize_state();
 
   HEMICONTACT_INSTANTIATE(2)
   HEMICONTACT_INSTANTIATE(3)

@@ -301,7 +301,8 @@ namespace hemicontact
     const double         w_n   = v.w * normal;
     const Tensor<1, dim> w_t   = v.w - w_n * normal;
     const double         scale = 1e-13 * (1 + v.w.norm());
-    const double         bound = friction_bound->value(p, t, v.u * normal);
+    const double         bound =
+      friction_bound->value(p, t, v.u * normal, v.w * normal);
 
     std::vector<double> at(dim + 1);
     for (int i = 0; i < dim; ++i)

@@ -157,6 +157,13 @@ namespace hemicontact
     bool         line_search;
     InitialGuess initial_guess;
     bool         strict_convexity_check;
+    /**
+     * The fixed point on a friction bound that depends on the step's
+     * unknown (doc/theory.md 9.8): relative change of the bounds at which
+     * it stops, and the iterations allowed.
+     */
+    double       bound_tolerance;
+    unsigned int bound_iterations;
 
     static void
     declare(ParameterHandler &prm);

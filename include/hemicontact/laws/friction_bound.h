@@ -12,12 +12,14 @@ namespace hemicontact
   using namespace dealii;
 
   /**
-   * The friction bound F_b(x, t, u_nu) >= 0 of 'data/friction bound': an
-   * expression in x, y[, z], t and u_nu, the normal displacement u . nu
-   * at the contact node (positive into the foundation). The time loop
-   * evaluates it at the start of step n with t_n and the known u_n (the
-   * left-point rule), so each step stays a minimisation (doc/theory.md,
-   * section 7). Example: mu * cp * pos(u_nu), normal compliance with
+   * The friction bound F_b(x, t, u_nu, w_nu) >= 0 of 'data/friction
+   * bound': an expression in x, y[, z], t, u_nu, the normal displacement
+   * u . nu at the contact node (positive into the foundation), and w_nu,
+   * the normal velocity (velocity classes). In the velocity classes u_nu
+   * is the displacement held when the step starts (doc/theory.md, section
+   * 7); a bound in w_nu, and in the static class a bound in u_nu, depends
+   * on the step's own unknown and is found by fixed-point iterations
+   * (section 9.8). Example: mu * cp * pos(u_nu), normal compliance with
    * friction.
    */
   template <int dim>
@@ -33,13 +35,29 @@ namespace hemicontact
      * the value is negative or not finite.
      */
     double
-    value(const Point<dim> &p, const double t, const double u_nu) const;
+    value(const Point<dim> &p,
+          const double      t,
+          const double      u_nu,
+          const double      w_nu) const;
 
-    /** Whether the expression depends on t or u_nu (else: once per mesh). */
+    /** Whether it depends on t, u_nu or w_nu (else: once per mesh). */
     bool
     depends_on_state() const
     {
       return state_dependent;
+    }
+
+    /** Whether the expression uses u_nu. */
+    bool
+    uses_normal_displacement() const
+    {
+      return expression->uses_variable(dim + 1);
+    }
+    /** Whether the expression uses w_nu. */
+    bool
+    uses_normal_velocity() const
+    {
+      return expression->uses_variable(dim + 2);
     }
 
   private:

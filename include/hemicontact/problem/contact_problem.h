@@ -275,10 +275,13 @@ namespace hemicontact
     void
     initialize_state();
     /**
-     * F_b at every contact node from 'data/friction bound' at time @p t and
-     * the displacement u_n (the left-point rule: known when step n starts).
+     * F_b at every contact node from 'data/friction bound' at time @p t,
+     * u_nu from the displacement held (static class: from the step's
+     * unknown) and w_nu from the step's unknown (doc/theory.md 7, 9.8).
+     * Returns the largest change of a nodal bound relative to the largest
+     * bound (0 if every bound is 0).
      */
-    void
+    double
     update_friction_bounds(const double t);
 
     /** @name assembly.cc */

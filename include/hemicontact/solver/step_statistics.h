@@ -18,8 +18,10 @@ namespace hemicontact
     double       residual               = 0; ///< relative nonsmooth residual
     double       wall_seconds           = 0;
     unsigned int time_step_halvings     = 0; ///< sub-steps added after failures
-    unsigned int n_cells                = 0; ///< of the mesh the step ran on
-    unsigned int n_dofs                 = 0;
+    /** Fixed-point iterations on the friction bound (doc/theory.md 9.8). */
+    unsigned int bound_iterations = 0;
+    unsigned int n_cells          = 0; ///< of the mesh the step ran on
+    unsigned int n_dofs           = 0;
     /** @name Mesh adaptation after this step (all zero if none) */
     bool   adapted                   = false;
     double kinetic_before_adaptation = 0;
