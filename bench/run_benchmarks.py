@@ -4,7 +4,7 @@
 Runs fixed cases -- the default 2D example and its 3D version at three
 successive refinements, once at the examples' time step and once with the
 time step halved with h, the non-default solver choices on the middle
-levels, and a large
+levels, the static and quasistatic classes on the finest levels, and a large
 3D case (811,923 dofs) on 1 and 2 MPI ranks -- with 'performance summary =
 true', reads each run's performance.csv and prints one table plus the growth
 exponents of the time per step against the number of dofs. Every figure is
@@ -102,6 +102,16 @@ def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None):
                            extra="subsection geometry\n" + geometry + "end\n"
                            "subsection convergence study\n"
                            "  set type = single\nend\n"))
+    # the other problem classes on the finest levels, 20 steps: a static
+    # load step and a quasistatic step, each against one solve of its own
+    # step matrix (B, A) in the same run (the 'ratio' column)
+    for problem_class in ("static", "quasistatic"):
+        for name, base, r in (("2d", "block_2d.prm", levels_2d[-1]),
+                              ("3d", "block_3d.prm", levels_3d[-1])):
+            result.append(case(f"{name}-r{r}-{problem_class}", base, r,
+                               end_time=0.2,
+                               extra="subsection problem\n  set class = %s\n"
+                               "end\n" % problem_class))
     if not skip_large and not quick:
         # tetrahedra against hexahedra on the same vertices (421,443 dofs),
         # the first steps, on 1 and 2 ranks
