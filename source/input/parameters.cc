@@ -282,16 +282,8 @@ namespace hemicontact
     prm.leave_subsection();
     prm.leave_subsection();
 
-    require(density > 0,
-            "material: 'density' = " + std::to_string(density) +
-              " must be positive.");
-    require(viscosity.mu > 0,
-            "material/viscosity: 'mu' = " + std::to_string(viscosity.mu) +
-              " must be positive (the viscosity A must be coercive, m_A > 0).");
-    require(viscosity.lambda + 2. / 3. * viscosity.mu > 0,
-            "material/viscosity: 'lambda' = " +
-              std::to_string(viscosity.lambda) +
-              " makes the bulk viscosity lambda + 2 mu / 3 non-positive.");
+    // the density and the viscosity are checked with the problem class,
+    // which may not use them (require_consistent())
     require(elasticity.mu >= 0,
             "material/elasticity: 'mu' = " + std::to_string(elasticity.mu) +
               " must be non-negative.");
@@ -821,6 +813,36 @@ namespace hemicontact
     const AdaptivityParameters &adaptivity   = parameters.adaptivity;
     const CheckpointParameters &checkpoint   = parameters.checkpoint;
     const bool                  manufactured = parameters.manufactured.enabled;
+
+    // what the problem class uses of the material (doc/theory.md 9.2)
+    const MaterialParameters &material      = parameters.material;
+    const ProblemClass        problem_class = parameters.problem.problem_class;
+    if (problem_class == ProblemClass::dynamic)
+      require(material.density > 0,
+              "material: 'density' = " + std::to_string(material.density) +
+                " must be positive.");
+    if (problem_class != ProblemClass::static_)
+      {
+        require(material.viscosity.mu > 0,
+                "material/viscosity: 'mu' = " +
+                  std::to_string(material.viscosity.mu) +
+                  " must be positive (the viscosity A must be coercive, m_A "
+                  "> 0).");
+        require(material.viscosity.lambda + 2. / 3. * material.viscosity.mu > 0,
+                "material/viscosity: 'lambda' = " +
+                  std::to_string(material.viscosity.lambda) +
+                  " makes the bulk viscosity lambda + 2 mu / 3 non-positive.");
+      }
+    else
+      require(material.elasticity.mu > 0 &&
+                material.elasticity.lambda + 2. / 3. * material.elasticity.mu >
+                  0,
+              "material/elasticity: 'mu' = " +
+                std::to_string(material.elasticity.mu) + " and 'lambda' = " +
+                std::to_string(material.elasticity.lambda) +
+                " leave the elastic operator B without coercivity; the static "
+                "class needs mu > 0 and lambda + 2 mu / 3 > 0 (its step "
+                "matrix is B, doc/theory.md section 9.1).");
 
     {
       std::ostringstream message;
