@@ -203,6 +203,9 @@ namespace hemicontact
       const NormalLaw                      &normal_law;
       const FrictionLaw                    &friction_law;
       const TrilinosWrappers::SparseMatrix &step_matrix; ///< K0 = rho/k M + A
+      const TrilinosWrappers::SparseMatrix &mass_matrix; ///< rho M
+      const TrilinosWrappers::SparseMatrix &elastic_matrix; ///< B
+      const TrilinosWrappers::SparseMatrix &viscous_matrix; ///< A
       /** Hanging nodes and u = 0 on Gamma_1. */
       const AffineConstraints<double>     &base_constraints;
       const TrilinosWrappers::MPI::Vector &velocity;     ///< w_n
@@ -237,6 +240,9 @@ namespace hemicontact
               *law,
               *friction,
               step_matrix,
+              mass_matrix,
+              elastic_matrix,
+              viscous_matrix,
               base_constraints,
               velocity,
               old_velocity,

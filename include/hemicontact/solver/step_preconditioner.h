@@ -7,10 +7,12 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <hemicontact/output/memory_breakdown.h>
 #include <hemicontact/solver/projected_operator.h>
 #include <hemicontact/solver/solver_tuning.h>
 
 #include <array>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -127,6 +129,13 @@ namespace hemicontact
       return setup_wall_seconds;
     }
 
+    /**
+     * Add to @p breakdown each AMG hierarchy held (the heap it added when
+     * built), the penalised matrix and the rigid-body modes.
+     */
+    void
+    add_memory(MemoryBreakdown &breakdown) const;
+
     /** Number of AMG set-ups so far. */
     unsigned int
     n_setups() const
@@ -179,6 +188,9 @@ namespace hemicontact
     const TrilinosWrappers::PreconditionAMG *amg_in_use = nullptr;
     std::vector<NodeSplit>                   splits;
     mutable TrilinosWrappers::MPI::Vector    projected_src;
+
+    /** Heap bytes each AMG held added when it was built. */
+    std::map<const TrilinosWrappers::PreconditionAMG *, double> amg_bytes;
 
     unsigned int setups             = 0;
     double       setup_wall_seconds = 0;
