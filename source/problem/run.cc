@@ -320,6 +320,14 @@ namespace hemicontact
       }
 
     output.finish_solution_output();
+    if (parameters.output.performance_summary)
+      {
+        // the memory of the run; its AMG hierarchies freed, so that the
+        // summary's reference solve, which builds its own, does not add to
+        // the run's peak
+        totals.memory = memory_breakdown(*this);
+        preconditioner.clear();
+      }
     output.finish(*this, totals, run_timer.wall_time());
   }
 

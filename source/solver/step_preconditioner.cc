@@ -175,6 +175,10 @@ namespace hemicontact
     // diagonal is penalised (a point smoother cannot handle a large penalty
     // coupling the components of a node): exact for constrained directions
     // along the coordinate axes, a diagonal approximation otherwise.
+    // the AMG of K0 is not used while this one is: freed before the set-up
+    // (whose transient memory is about twice the hierarchy it leaves), and
+    // built again if this one is dropped (doc/performance.md, "Memory")
+    k0_amg.reset();
     const TrilinosWrappers::SparseMatrix &k0 = op.get_step_matrix();
     penalised_step_matrix.copy_from(k0);
     for (const auto &node : op.nodes())

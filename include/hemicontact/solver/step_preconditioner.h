@@ -47,7 +47,8 @@ namespace hemicontact
    * directions the contact branches of the mesh's first Newton iteration
    * constrain, so that stuck nodes are Dirichlet conditions for it -- until
    * too many nodes have freed such a direction, and the AMG of K0 after
-   * that (doc/performance.md, "Design choices").
+   * that (doc/performance.md, "Design choices"). The AMG of K0 is freed
+   * when the constrained AMG is built (doc/performance.md, "Memory").
    */
   template <int dim>
   class StepPreconditioner
