@@ -43,7 +43,6 @@ namespace hemicontact
     breakdown.add_matrix("step matrix K", s.step_matrix);
     breakdown.add_matrix("mass matrix M", s.mass_matrix);
     breakdown.add_matrix("elastic matrix B", s.elastic_matrix);
-    breakdown.add_matrix("viscous matrix A", s.viscous_matrix);
     s.preconditioner.add_memory(breakdown);
     // w_n, w_{n-1}, u_n, F_n, b, the contact traction
     breakdown.add("vectors",

@@ -165,7 +165,7 @@ namespace hemicontact
     // change of k changes E_n by itself, booked like a mesh transfer
     const std::pair<double, double> before = stored_energy();
     time_step                              = k;
-    assemble_constant_matrices();
+    assemble_constant_matrices(scheme.step_matrix(time_step));
     preconditioner.clear();
     std::tie(energy.kinetic, energy.elastic) = stored_energy();
     energy.transfer_change +=
