@@ -1,29 +1,62 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
+#include <hemicontact/output/memory_breakdown.h>
 #include <hemicontact/output/performance_summary.h>
 #include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/solver/linear_solver.h>
 
-#include <sys/resource.h>
-
+#include <cctype>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 #include <map>
 
 namespace hemicontact
 {
   namespace
   {
-    /** Peak resident set size of this process in bytes. */
-    double
-    peak_resident_bytes()
+    /** "AMG of K0" -> "amg_of_k0". */
+    std::string
+    csv_name(const std::string &part)
     {
-      rusage usage;
-      getrusage(RUSAGE_SELF, &usage);
-      return 1024. * usage.ru_maxrss; // Linux reports kilobytes
+      std::string name;
+      for (const char c : part)
+        if (std::isalnum(static_cast<unsigned char>(c)))
+          name +=
+            static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        else if (!name.empty() && name.back() != '_')
+          name += '_';
+      while (!name.empty() && name.back() == '_')
+        name.pop_back();
+      return name;
     }
+
   } // namespace
+
+  template <int dim>
+  MemoryBreakdown
+  memory_breakdown(const ContactProblem<dim> &problem)
+  {
+    const typename ContactProblem<dim>::State s = problem.state();
+    MemoryBreakdown                           breakdown;
+    breakdown.add_matrix("step matrix K", s.step_matrix);
+    breakdown.add_matrix("mass matrix M", s.mass_matrix);
+    breakdown.add_matrix("elastic matrix B", s.elastic_matrix);
+    s.preconditioner.add_memory(breakdown);
+    // w_n, w_{n-1}, u_n, F_n, b, the contact traction
+    breakdown.add("vectors",
+                  6. * s.locally_owned_dofs.n_elements() * sizeof(double));
+    breakdown.add("mesh, dofs and constraints",
+                  s.discretization.triangulation->memory_consumption() +
+                    s.dof_handler.memory_consumption() +
+                    s.base_constraints.memory_consumption() +
+                    s.locally_owned_dofs.memory_consumption() +
+                    s.locally_relevant_dofs.memory_consumption());
+    breakdown.add("contact nodes",
+                  s.contact_nodes.capacity() * sizeof(ContactNode<dim>));
+    return breakdown;
+  }
 
   template <int dim>
   void
@@ -35,9 +68,12 @@ namespace hemicontact
                             const unsigned int         solution_writes,
                             MPI_Comm                   mpi_communicator)
   {
-    const typename ContactProblem<dim>::State s              = problem.state();
-    const DoFHandler<dim>                    &dof_handler    = s.dof_handler;
-    const Discretization<dim>                &discretization = s.discretization;
+    const typename ContactProblem<dim>::State s           = problem.state();
+    const DoFHandler<dim>                    &dof_handler = s.dof_handler;
+    // the peak of the run, before the reference solve below adds its AMG
+    const double run_peak_bytes =
+      Utilities::MPI::sum(peak_resident_bytes(), mpi_communicator);
+    const Discretization<dim> &discretization = s.discretization;
     // the linear solver of the run (its parameters; it keeps no state)
     LinearSolver linear_solver(parameters.linear_solver, mpi_communicator);
     // the reference cost: one solve of the step matrix K0 = rho/k M + A with
@@ -80,6 +116,18 @@ namespace hemicontact
                             discretization.triangulation->memory_consumption() +
                             dof_handler.memory_consumption()),
                           mpi_communicator);
+    // the parts at the end of the time loop (the run's AMG hierarchies were
+    // freed after it) and the reference solve's AMG
+    MemoryBreakdown parts = totals.memory;
+    MemoryBreakdown of_reference;
+    reference.add_memory(of_reference);
+    for (const auto &part : of_reference.summed(MPI_COMM_SELF))
+      if (part.first == "AMG of K0")
+        parts.add("AMG of the reference solve", part.second);
+    const std::vector<std::pair<std::string, double>> memory =
+      parts.summed(mpi_communicator);
+    const double heap_bytes =
+      Utilities::MPI::sum(heap_bytes_in_use(), mpi_communicator);
     const double steps = std::max(totals.steps, 1u);
     const double step_wall =
       Utilities::MPI::max(totals.step_wall_seconds, mpi_communicator) / steps;
@@ -135,16 +183,46 @@ namespace hemicontact
         << "solution_writes," << solution_writes << "\n"
         << "peak_memory_bytes," << peak_bytes << "\n"
         << "bytes_per_dof," << peak_bytes / dof_handler.n_dofs() << "\n"
-        << "mesh_bytes_max_rank," << mesh_bytes << "\n";
+        << "mesh_bytes_max_rank," << mesh_bytes << "\n"
+        << "run_peak_memory_bytes," << run_peak_bytes << "\n"
+        << "heap_in_use_bytes," << heap_bytes << "\n";
+    double accounted = 0;
+    for (const auto &part : memory)
+      {
+        out << "memory_" << csv_name(part.first) << "_bytes," << part.second
+            << "\n";
+        accounted += part.second;
+      }
+    out << "memory_accounted_bytes," << accounted << "\n";
+
+    if (parameters.output.terminal != TerminalOutput::progress)
+      return;
+    const double n_dofs = dof_handler.n_dofs();
+    std::cout << "memory, summed over "
+              << Utilities::MPI::n_mpi_processes(mpi_communicator)
+              << " rank(s): peak " << std::fixed << std::setprecision(1)
+              << peak_bytes / 1e6 << " MB (" << peak_bytes / n_dofs
+              << " B/dof), before the reference solve " << run_peak_bytes / 1e6
+              << " MB, heap in use at the end " << heap_bytes / 1e6
+              << " MB, of which\n";
+    for (const auto &part : memory)
+      if (part.second > 0)
+        std::cout << "  " << std::left << std::setw(30) << part.first
+                  << std::right << std::setw(10) << part.second / 1e6 << " MB "
+                  << std::setw(8) << part.second / n_dofs << " B/dof\n";
+    std::cout << "  " << std::left << std::setw(30) << "(the parts above)"
+              << std::right << std::setw(10) << accounted / 1e6 << " MB "
+              << std::setw(8) << accounted / n_dofs << " B/dof" << std::endl;
   }
 
-#define HEMICONTACT_INSTANTIATE(dim)                                        \
-  template void write_performance_summary<dim>(const ContactProblem<dim> &, \
-                                               const Parameters &,          \
-                                               const TimerOutput &,         \
-                                               const RunTotals &,           \
-                                               double,                      \
-                                               unsigned int,                \
+#define HEMICONTACT_INSTANTIATE(dim)                                           \
+  template MemoryBreakdown memory_breakdown<dim>(const ContactProblem<dim> &); \
+  template void write_performance_summary<dim>(const ContactProblem<dim> &,    \
+                                               const Parameters &,             \
+                                               const TimerOutput &,            \
+                                               const RunTotals &,              \
+                                               double,                         \
+                                               unsigned int,                   \
                                                MPI_Comm);
 
   HEMICONTACT_INSTANTIATE(2)

@@ -16,16 +16,15 @@ namespace hemicontact
 {
   template <int dim>
   void
-  ContactProblem<dim>::assemble_constant_matrices()
+  ContactProblem<dim>::assemble_constant_matrices(
+    const StepMatrixCoefficients &c)
   {
     TimerOutput::Scope t(timer, "assembly: constant matrices");
     mass_matrix    = 0;
     step_matrix    = 0;
     elastic_matrix = 0;
-    viscous_matrix = 0;
     // K = c_M rho M + c_A A + c_B B of the class and scheme (doc/theory.md,
     // section 9); the dynamic left point is rho/k M + A
-    const StepMatrixCoefficients c = scheme.step_matrix(time_step);
 
     const FiniteElement<dim> &fe = *discretization.fe;
     FEValues<dim>             fe_values(*discretization.mapping,
@@ -60,12 +59,8 @@ namespace hemicontact
           base_constraints.distribute_local_to_global(cell_elastic,
                                                       dofs,
                                                       elastic_matrix);
-          base_constraints.distribute_local_to_global(cell_viscous,
-                                                      dofs,
-                                                      viscous_matrix);
         }
     mass_matrix.compress(VectorOperation::add);
-    viscous_matrix.compress(VectorOperation::add);
     step_matrix.compress(VectorOperation::add);
     elastic_matrix.compress(VectorOperation::add);
   }
@@ -271,7 +266,8 @@ namespace hemicontact
   }
 
 #define HEMICONTACT_INSTANTIATE(dim)                                      \
-  template void ContactProblem<dim>::assemble_constant_matrices();        \
+  template void ContactProblem<dim>::assemble_constant_matrices(          \
+    const StepMatrixCoefficients &);                                      \
   template void ContactProblem<dim>::cell_matrices(const FEValues<dim> &, \
                                                    FullMatrix<double> &,  \
                                                    FullMatrix<double> &,  \

@@ -162,16 +162,23 @@ namespace hemicontact
 
     // the terms of doc/theory.md, section 9.3: k a_A(w, w) from A, the
     // numerical dissipation rho/2 |w_n - w_{n-1}|^2 -+ k^2/2 a_B(w_n, w_n)
-    viscous_matrix.vmult(tmp, w);
-    const double                  w_A_w = w * tmp;
+    // A is not held: w.A w = (w.K w - c_M w.rho M w - c_B w.B w) / c_A
+    const StepMatrixCoefficients c = scheme.step_matrix(k);
+    step_matrix.vmult(tmp, w);
+    const double w_K_w = w * tmp;
+    mass_matrix.vmult(tmp, w);
+    const double w_M_w = w * tmp;
+    elastic_matrix.vmult(tmp, w);
+    const double w_B_w = w * tmp;
+    const double w_A_w =
+      (w_K_w - c.mass * w_M_w - c.elastic * w_B_w) / c.viscous;
     TrilinosWrappers::MPI::Vector dw(velocity);
     dw -= old_velocity;
     dw = without_constrained(dw, base_constraints);
     mass_matrix.vmult(tmp, dw);
-    const double dw_M_dw = dw * tmp;
-    elastic_matrix.vmult(tmp, w);
+    const double                 dw_M_dw = dw * tmp;
     const StepScheme::StepEnergy terms =
-      scheme.step_energy(k, w_A_w, dw_M_dw, w * tmp);
+      scheme.step_energy(k, w_A_w, dw_M_dw, w_B_w);
     energy.viscous_dissipation += terms.viscous;
     energy.numerical_dissipation += terms.numerical;
     energy.external_work += k * (load * w);

@@ -73,7 +73,7 @@ namespace hemicontact
   ContactProblem<dim>::setup_on_current_mesh()
   {
     setup_dofs();
-    assemble_constant_matrices();
+    assemble_constant_matrices(scheme.step_matrix(time_step));
     setup_contact_nodes();
     preconditioner.reinit(dof_handler, *discretization.mapping);
   }
@@ -100,7 +100,7 @@ namespace hemicontact
                                       mpi_communicator));
     sparsity.compress();
     for (TrilinosWrappers::SparseMatrix *m :
-         {&mass_matrix, &step_matrix, &elastic_matrix, &viscous_matrix})
+         {&mass_matrix, &step_matrix, &elastic_matrix})
       m->reinit(sparsity);
 
     for (TrilinosWrappers::MPI::Vector *v : {&velocity,
@@ -361,7 +361,7 @@ namespace hemicontact
           !(scheme.initial_matrix() == scheme.step_matrix(time_step));
         if (other_matrix)
           {
-            step_matrix.copy_from(viscous_matrix);
+            assemble_constant_matrices(scheme.initial_matrix());
             preconditioner.clear();
           }
         assemble_load(0.);
@@ -384,7 +384,7 @@ namespace hemicontact
         old_velocity = velocity;
         if (other_matrix)
           {
-            assemble_constant_matrices();
+            assemble_constant_matrices(scheme.step_matrix(time_step));
             preconditioner.clear();
           }
       }

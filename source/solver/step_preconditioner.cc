@@ -114,8 +114,10 @@ namespace hemicontact
     ml_list.set("null space: dimension", static_cast<int>(n_modes));
     ml_list.set("null space: vectors", const_cast<double *>(modes.data()));
 
-    auto result = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    const double heap_before = heap_bytes_in_use();
+    auto         result = std::make_unique<TrilinosWrappers::PreconditionAMG>();
     result->initialize(matrix, ml_list);
+    amg_bytes[result.get()] = heap_bytes_in_use() - heap_before;
     ++setups;
     setup_wall_seconds +=
       Utilities::MPI::max(timer.wall_time(), mpi_communicator);
@@ -173,6 +175,10 @@ namespace hemicontact
     // diagonal is penalised (a point smoother cannot handle a large penalty
     // coupling the components of a node): exact for constrained directions
     // along the coordinate axes, a diagonal approximation otherwise.
+    // the AMG of K0 is not used while this one is: freed before the set-up
+    // (whose transient memory is about twice the hierarchy it leaves), and
+    // built again if this one is dropped (doc/performance.md, "Memory")
+    k0_amg.reset();
     const TrilinosWrappers::SparseMatrix &k0 = op.get_step_matrix();
     penalised_step_matrix.copy_from(k0);
     for (const auto &node : op.nodes())
@@ -310,6 +316,23 @@ namespace hemicontact
     amg_in_use->vmult(dst, projected_src);
     apply_node_tensors<dim>(splits, &NodeSplit::soft_projector, dst);
     add_node_tensors<dim>(splits, &NodeSplit::stiff_inverse, src, dst);
+  }
+
+  template <int dim>
+  void
+  StepPreconditioner<dim>::add_memory(MemoryBreakdown &breakdown) const
+  {
+    const auto bytes_of = [&](const auto &amg) {
+      const auto it = amg_bytes.find(amg.get());
+      return amg == nullptr || it == amg_bytes.end() ? 0. : it->second;
+    };
+    breakdown.add("AMG of K0", bytes_of(k0_amg));
+    breakdown.add("constrained AMG", bytes_of(constrained_amg));
+    breakdown.add("AMG of another matrix", bytes_of(other_amg));
+    breakdown.add_matrix("penalised step matrix", penalised_step_matrix);
+    breakdown.add("rigid-body modes", rigid_body_modes.size() * sizeof(double));
+    breakdown.add("vectors",
+                  projected_src.locally_owned_size() * sizeof(double));
   }
 
   template class StepPreconditioner<2>;

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/timer.h>
 
+#include <hemicontact/output/memory_breakdown.h>
 #include <hemicontact/solver/step_statistics.h>
 
 #include <mpi.h>
@@ -25,6 +26,8 @@ namespace hemicontact
     unsigned int max_newton        = 0;
     unsigned int linear_iterations = 0;
     double       step_wall_seconds = 0; ///< advance() only, no output
+    /** The parts of the memory at the end of the time loop. */
+    MemoryBreakdown memory;
 
     /** Count the step of @p stats. */
     void
@@ -37,6 +40,14 @@ namespace hemicontact
       step_wall_seconds += stats.wall_seconds;
     }
   };
+
+  /**
+   * The parts of the memory of @p problem on this rank: its matrices, AMG
+   * hierarchies, vectors, mesh, dofs and contact nodes.
+   */
+  template <int dim>
+  MemoryBreakdown
+  memory_breakdown(const ContactProblem<dim> &problem);
 
   /**
    * Write OUTPUT/performance.csv (doc/outputs.md): the run's costs by

@@ -203,6 +203,8 @@ namespace hemicontact
       const NormalLaw                      &normal_law;
       const FrictionLaw                    &friction_law;
       const TrilinosWrappers::SparseMatrix &step_matrix; ///< K0 = rho/k M + A
+      const TrilinosWrappers::SparseMatrix &mass_matrix; ///< rho M
+      const TrilinosWrappers::SparseMatrix &elastic_matrix; ///< B
       /** Hanging nodes and u = 0 on Gamma_1. */
       const AffineConstraints<double>     &base_constraints;
       const TrilinosWrappers::MPI::Vector &velocity;     ///< w_n
@@ -237,6 +239,8 @@ namespace hemicontact
               *law,
               *friction,
               step_matrix,
+              mass_matrix,
+              elastic_matrix,
               base_constraints,
               velocity,
               old_velocity,
@@ -285,8 +289,12 @@ namespace hemicontact
     update_friction_bounds(const double t);
 
     /** @name assembly.cc */
+    /**
+     * rho M, B and the step matrix K = @p c.mass rho M + @p c.viscous A +
+     * @p c.elastic B; A is not kept (doc/performance.md, "Memory").
+     */
     void
-    assemble_constant_matrices();
+    assemble_constant_matrices(const StepMatrixCoefficients &c);
     /**
      * The cell matrices of rho M, A and B at @p fe_values (reinit on the
      * cell; values, gradients and JxW), as assemble_constant_matrices()
@@ -419,12 +427,14 @@ namespace hemicontact
     /** Hanging nodes and u = 0 on Gamma_1. */
     AffineConstraints<double> base_constraints;
 
-    /** Constant on a fixed mesh, condensed with the base constraints. */
-    TrilinosWrappers::SparseMatrix mass_matrix; ///< M
+    /**
+     * Constant on a fixed mesh, condensed with the base constraints. The
+     * viscous matrix A is not held: w.A w is formed from K, M and B.
+     */
+    TrilinosWrappers::SparseMatrix mass_matrix; ///< rho M
     TrilinosWrappers::SparseMatrix
       step_matrix; ///< K (StepScheme::step_matrix())
     TrilinosWrappers::SparseMatrix elastic_matrix; ///< B
-    TrilinosWrappers::SparseMatrix viscous_matrix; ///< A
 
     TrilinosWrappers::MPI::Vector velocity;     ///< w_n
     TrilinosWrappers::MPI::Vector old_velocity; ///< w_{n-1}

@@ -7,10 +7,12 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <hemicontact/output/memory_breakdown.h>
 #include <hemicontact/solver/projected_operator.h>
 #include <hemicontact/solver/solver_tuning.h>
 
 #include <array>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -45,7 +47,8 @@ namespace hemicontact
    * directions the contact branches of the mesh's first Newton iteration
    * constrain, so that stuck nodes are Dirichlet conditions for it -- until
    * too many nodes have freed such a direction, and the AMG of K0 after
-   * that (doc/performance.md, "Design choices").
+   * that (doc/performance.md, "Design choices"). The AMG of K0 is freed
+   * when the constrained AMG is built (doc/performance.md, "Memory").
    */
   template <int dim>
   class StepPreconditioner
@@ -127,6 +130,13 @@ namespace hemicontact
       return setup_wall_seconds;
     }
 
+    /**
+     * Add to @p breakdown each AMG hierarchy held (the heap it added when
+     * built), the penalised matrix and the rigid-body modes.
+     */
+    void
+    add_memory(MemoryBreakdown &breakdown) const;
+
     /** Number of AMG set-ups so far. */
     unsigned int
     n_setups() const
@@ -179,6 +189,9 @@ namespace hemicontact
     const TrilinosWrappers::PreconditionAMG *amg_in_use = nullptr;
     std::vector<NodeSplit>                   splits;
     mutable TrilinosWrappers::MPI::Vector    projected_src;
+
+    /** Heap bytes each AMG held added when it was built. */
+    std::map<const TrilinosWrappers::PreconditionAMG *, double> amg_bytes;
 
     unsigned int setups             = 0;
     double       setup_wall_seconds = 0;
