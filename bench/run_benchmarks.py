@@ -5,12 +5,13 @@ Runs fixed cases -- the default 2D example and its 3D version at three
 successive refinements, once at the examples' time step and once with the
 time step halved with h, the non-default solver choices on the middle
 levels, the static and quasistatic classes on the finest levels, and a large
-3D case (811,923 dofs) on 1 and 2 MPI ranks -- with 'performance summary =
+3D case (811,923 dofs) on 1 and 2 MPI ranks and the largest block the
+machine holds (2,193,075 dofs, 1 rank) -- with 'performance summary =
 true', reads each run's performance.csv and prints one table plus the growth
 exponents of the time per step against the number of dofs. Every figure is
 also written to bench/results/benchmark.csv (or --output).
 
-  /usr/bin/python3 bench/run_benchmarks.py            # everything (~40 min)
+  /usr/bin/python3 bench/run_benchmarks.py            # everything (~50 min)
   /usr/bin/python3 bench/run_benchmarks.py --large-steps 5   # shorter large case
   /usr/bin/python3 bench/run_benchmarks.py --quick    # small levels only
   /usr/bin/python3 bench/run_benchmarks.py --only '^3d-r[234]' --repeat 3
@@ -127,6 +128,10 @@ def cases(quick, skip_large, large_steps, levels_2d=None, levels_3d=None):
             result.append(case(f"3d-large-np{ranks}", "block_3d.prm", 3,
                                end_time=0.01 * large_steps, ranks=ranks,
                                subdivisions="20, 5, 5"))
+        # the largest block a 24 GB workstation holds with room to spare:
+        # 224 x 56 x 56 hexahedra, 2,193,075 dofs, 3 steps on 1 rank
+        result.append(case("3d-largest-np1", "block_3d.prm", 2,
+                           end_time=0.03, subdivisions="56, 14, 14"))
     return result
 
 
