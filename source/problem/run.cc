@@ -69,20 +69,14 @@ namespace hemicontact
                          "state, or raise 'friction bound iterations'.";
               throw SolverFailure(message.str());
             }
-          last_change                = change;
-          const StepStatistics again = solve();
-          stats.newton_iterations += again.newton_iterations;
-          stats.linear_iterations += again.linear_iterations;
-          stats.line_search_reductions += again.line_search_reductions;
-          const unsigned int bound_iterations = stats.bound_iterations;
-          const unsigned int newton           = stats.newton_iterations;
-          const unsigned int linear           = stats.linear_iterations;
-          const unsigned int reductions       = stats.line_search_reductions;
-          stats                               = again;
-          stats.bound_iterations              = bound_iterations;
-          stats.newton_iterations             = newton;
-          stats.linear_iterations             = linear;
-          stats.line_search_reductions        = reductions;
+          last_change = change;
+          // the last solve's state and branches, every solve's iterations
+          StepStatistics again   = solve();
+          again.bound_iterations = stats.bound_iterations;
+          again.newton_iterations += stats.newton_iterations;
+          again.linear_iterations += stats.linear_iterations;
+          again.line_search_reductions += stats.line_search_reductions;
+          stats = again;
         }
     }
 

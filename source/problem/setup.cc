@@ -53,6 +53,11 @@ namespace hemicontact
                                        parameters.time.end_time /
                                        parameters.time.time_step)));
     time_step = parameters.time.end_time / n_steps;
+    require(!(scheme.is_static() &&
+              this->data.friction_bound->uses_normal_velocity()),
+            "data: 'friction bound' uses w_nu, the normal velocity, which the "
+            "static class does not have (the laws act on the displacement); "
+            "write the bound in u_nu.");
   }
 
   template <int dim>
@@ -246,10 +251,6 @@ namespace hemicontact
   ContactProblem<dim>::update_friction_bounds(const double t)
   {
     const FrictionBound<dim> &bound = *data.friction_bound;
-    require(!(scheme.is_static() && bound.uses_normal_velocity()),
-            "data: 'friction bound' uses w_nu, the normal velocity, which the "
-            "static class does not have (the laws act on the displacement); "
-            "write the bound in u_nu.");
     // the static class's u is its step's unknown (doc/theory.md 9.1)
     TrilinosWrappers::MPI::Vector u, w;
     if (bound.depends_on_state())

@@ -1,0 +1,136 @@
+/**
+ * The checks of a parameter file that span subsections
+ * (require_consistent(), include/hemicontact/input/parameters.h).
+ */
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/input/parameters.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace hemicontact
+{
+  void
+  require_consistent(const Parameters &parameters)
+  {
+    const unsigned int          dimension    = parameters.dimension;
+    const GeometryParameters   &geometry     = parameters.geometry;
+    const AdaptivityParameters &adaptivity   = parameters.adaptivity;
+    const CheckpointParameters &checkpoint   = parameters.checkpoint;
+    const bool                  manufactured = parameters.manufactured.enabled;
+
+    // what the problem class uses of the material (doc/theory.md 9.2)
+    const MaterialParameters &material      = parameters.material;
+    const ProblemClass        problem_class = parameters.problem.problem_class;
+    if (problem_class == ProblemClass::dynamic)
+      require(material.density > 0,
+              "material: 'density' = " + std::to_string(material.density) +
+                " must be positive.");
+    if (problem_class != ProblemClass::static_)
+      {
+        require(material.viscosity.mu > 0,
+                "material/viscosity: 'mu' = " +
+                  std::to_string(material.viscosity.mu) +
+                  " must be positive (the viscosity A must be coercive, m_A "
+                  "> 0).");
+        require(material.viscosity.lambda + 2. / 3. * material.viscosity.mu > 0,
+                "material/viscosity: 'lambda' = " +
+                  std::to_string(material.viscosity.lambda) +
+                  " makes the bulk viscosity lambda + 2 mu / 3 non-positive.");
+      }
+    else
+      require(material.elasticity.mu > 0 &&
+                material.elasticity.lambda + 2. / 3. * material.elasticity.mu >
+                  0,
+              "material/elasticity: 'mu' = " +
+                std::to_string(material.elasticity.mu) + " and 'lambda' = " +
+                std::to_string(material.elasticity.lambda) +
+                " leave the elastic operator B without coercivity; the static "
+                "class needs mu > 0 and lambda + 2 mu / 3 > 0 (its step "
+                "matrix is B, doc/theory.md section 9.1).");
+
+    {
+      std::ostringstream message;
+      message << "nonlinear solver: 'tolerance' = "
+              << parameters.nonlinear_solver.tolerance
+              << " is below 'linear solver/relative tolerance' = "
+              << parameters.linear_solver.relative_tolerance
+              << ", the accuracy of every linear solve; Newton could not "
+                 "reach it. Raise the Newton tolerance or lower the linear "
+                 "solver's relative tolerance below it.";
+      require(parameters.nonlinear_solver.tolerance >=
+                parameters.linear_solver.relative_tolerance,
+              message.str());
+    }
+
+    require(adaptivity.interval == 0 ||
+              geometry.cell_type == CellType::hypercube,
+            "adaptivity: adaptive refinement needs 'geometry/cell type = "
+            "hypercube' (p4est meshes); set 'adaptivity/interval = 0' for "
+            "simplex meshes.");
+    require(adaptivity.pre_refinement_steps == 0 ||
+              (adaptivity.interval > 0 && !manufactured &&
+               checkpoint.interval == 0 && checkpoint.wall_interval == 0 &&
+               checkpoint.stop_after == 0 && !checkpoint.resume),
+            "adaptivity: 'pre-refinement steps' > 0 needs 'interval' > 0 and "
+            "works neither with checkpoints nor with manufactured solutions.");
+    // the number of steps of the run (TimeParameters::parse() made sure
+    // that the time step divides the end time)
+    const unsigned int n_steps = std::max<unsigned int>(
+      1,
+      static_cast<unsigned int>(
+        std::llround(parameters.time.end_time / parameters.time.time_step)));
+    require(adaptivity.pre_refinement_steps <= n_steps,
+            "adaptivity: 'pre-refinement steps' (" +
+              std::to_string(adaptivity.pre_refinement_steps) +
+              ") exceeds the number of time steps (" + std::to_string(n_steps) +
+              ").");
+
+    require(geometry.mesh_type != MeshType::rectangle ||
+              (geometry.lower_left.size() >= dimension &&
+               geometry.upper_right.size() >= dimension &&
+               geometry.subdivisions.size() >= dimension),
+            "geometry: the corners and subdivisions need at least " +
+              std::to_string(dimension) + " entries for dimension " +
+              std::to_string(dimension) + ".");
+    if (geometry.mesh_type == MeshType::rectangle)
+      for (unsigned int d = 0; d < dimension; ++d)
+        require(geometry.upper_right[d] > geometry.lower_left[d],
+                "geometry: 'upper right corner' must exceed 'lower left "
+                "corner' in every coordinate (coordinate " +
+                  std::to_string(d) + ").");
+
+    // a convergence study runs its levels from the start, without
+    // checkpoints
+    if (manufactured)
+      {
+        std::vector<std::string> set;
+        if (checkpoint.resume)
+          set.push_back("'checkpoint/resume' (hemicontact --resume)");
+        if (checkpoint.interval > 0)
+          set.push_back("'checkpoint/interval' = " +
+                        std::to_string(checkpoint.interval));
+        if (checkpoint.wall_interval > 0)
+          {
+            std::ostringstream value;
+            value << checkpoint.wall_interval;
+            set.push_back("'checkpoint/wall interval' = " + value.str());
+          }
+        if (checkpoint.stop_after > 0)
+          set.push_back("'checkpoint/stop after' = " +
+                        std::to_string(checkpoint.stop_after));
+        std::string list;
+        for (const std::string &s : set)
+          list += (list.empty() ? "" : ", ") + s;
+        require(set.empty(),
+                "convergence study: a convergence study ('manufactured "
+                "solution/enabled = true') neither writes checkpoints nor "
+                "resumes from them, but the parameter file sets " +
+                  list + "; remove " + (set.size() > 1 ? "them" : "it") +
+                  " (a study runs from the start).");
+      }
+  }
+} // namespace hemicontact
