@@ -231,6 +231,10 @@ namespace hemicontact
                 node.normal /= node.normal.norm();
                 node.c = parameters.solver_tuning.complementarity_factor *
                          diag / node.mass;
+                // above the law's steepest rise, so that q = s + c w_nu
+                // grows along every free segment of the path even where an
+                // iterate sits off its segment (doc/theory.md 10.3)
+                node.c = std::max(node.c, 2 * law->largest_remainder_slope());
                 node.locally_owned =
                   locally_owned_dofs.is_element(node.dofs[0]);
                 contact_nodes.push_back(node);

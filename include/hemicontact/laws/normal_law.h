@@ -88,6 +88,17 @@ namespace hemicontact
     virtual double
     relaxed_monotonicity_constant() const = 0;
 
+    /**
+     * An upper bound of the remainder's increasing slopes, max p'(r) > 0 (0
+     * if p never increases): the complementarity constant c_i of a node
+     * must exceed it (doc/theory.md section 10.3).
+     */
+    virtual double
+    largest_remainder_slope() const
+    {
+      return 0.;
+    }
+
     /** The potential j(r) = a r_+ + sum_j J_j (r - r_j)_+ + P(r). */
     double
     potential(const double r) const;

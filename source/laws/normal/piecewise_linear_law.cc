@@ -188,4 +188,18 @@ namespace hemicontact
       }
     return alpha;
   }
+
+  double
+  PiecewiseLinearLaw::largest_remainder_slope() const
+  {
+    double slope = 0;
+    for (unsigned int k = 0; k + 1 < points.size(); ++k)
+      {
+        const double dr = points[k + 1].first - points[k].first;
+        if (dr > 0)
+          slope =
+            std::max(slope, (points[k + 1].second - points[k].second) / dr);
+      }
+    return slope;
+  }
 } // namespace hemicontact

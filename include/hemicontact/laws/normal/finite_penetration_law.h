@@ -53,6 +53,11 @@ namespace hemicontact
       return 0.;
     }
     double
+    largest_remainder_slope() const override
+    {
+      return stiffness;
+    }
+    double
     penetration_limit() const override
     {
       return limit;

@@ -48,6 +48,11 @@ namespace hemicontact
     {
       return 0.;
     }
+    double
+    largest_remainder_slope() const override
+    {
+      return coefficient;
+    }
 
   private:
     double coefficient;

@@ -46,6 +46,8 @@ namespace hemicontact
     remainder_primitive(const double r) const override;
     double
     relaxed_monotonicity_constant() const override;
+    double
+    largest_remainder_slope() const override;
     const std::vector<Kink> &
     kinks() const override
     {
