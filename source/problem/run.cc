@@ -169,7 +169,13 @@ namespace hemicontact
         velocity.add(k / last_step_length, trend);
         base_constraints.distribute(velocity);
       }
-    update_friction_bounds(start + k);
+    // the contact pressure p_nu of the bound: in the velocity classes the
+    // step before's throughout the step, in the static class the last
+    // solve's (doc/theory.md, section 9.9)
+    const TrilinosWrappers::MPI::Vector  traction_before(contact_traction);
+    const TrilinosWrappers::MPI::Vector *pressure =
+      scheme.is_static() ? &contact_traction : &traction_before;
+    update_friction_bounds(start + k, pressure);
     recheck_convexity_if_bounds_grew(start + k);
     assemble_load(start + k);
     assemble_step_rhs();
@@ -177,12 +183,13 @@ namespace hemicontact
       {
         StepStatistics stats = solve_step();
         // a bound in the step's own unknown: fixed-point iterations on it
-        // (doc/theory.md, section 9.8)
+        // (doc/theory.md, sections 9.8 and 9.9)
         const FrictionBound<dim> &bound = *data.friction_bound;
-        if (scheme.is_static() ? bound.uses_normal_displacement() :
+        if (scheme.is_static() ? bound.uses_normal_displacement() ||
+                                   bound.uses_contact_pressure() :
                                  bound.uses_normal_velocity())
           iterate_friction_bound(
-            [&]() { return update_friction_bounds(start + k); },
+            [&]() { return update_friction_bounds(start + k, pressure); },
             [&]() {
               recheck_convexity_if_bounds_grew(start + k);
               return solve_step();
@@ -198,7 +205,8 @@ namespace hemicontact
       {
         // back to the last converged state (w_{n-1}, u_{n-1})
         scheme.undo_displacement_before_step(displacement, old_velocity, k);
-        velocity = old_velocity;
+        velocity         = old_velocity;
+        contact_traction = traction_before;
         if (depth >= parameters.nonlinear_solver.time_step_halvings)
           throw;
       }
