@@ -66,7 +66,9 @@ namespace hemicontact
                                          "9.8, gives a sufficient condition)" :
                                          "")
                       << ". Make the bound depend less steeply on the "
-                         "state, or raise 'friction bound iterations'.";
+                         "state (for Coulomb friction, mu*pos(p_nu): a "
+                         "smaller coefficient mu), or raise 'friction bound "
+                         "iterations'.";
               throw SolverFailure(message.str());
             }
           last_change = change;
