@@ -7,6 +7,7 @@
 
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/solver/friction_bound_iteration.h>
 
 #include <cmath>
 #include <map>
@@ -379,7 +380,15 @@ namespace hemicontact
         velocity = 0;
         try
           {
-            solve_step();
+            StepStatistics stats = solve_step();
+            // no step before w_0 whose pressure a bound in p_nu could read:
+            // its own, a fixed point (doc/theory.md, section 9.9)
+            if (data.friction_bound->uses_contact_pressure())
+              iterate_friction_bound(
+                [&]() { return update_friction_bounds(0.); },
+                [&]() { return solve_step(); },
+                parameters.nonlinear_solver,
+                stats);
           }
         catch (const SolverFailure &failure)
           {

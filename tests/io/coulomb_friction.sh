@@ -9,7 +9,8 @@
 #    each other (the last change may fall on either side of the tolerance);
 # 2. the quasistatic class (tests/coulomb_quasistatic_2d.prm): the bound of
 #    step n is mu (-sigma_nu)_+ of step n-1, no fixed point, the same
-#    slip/stick conditions with that bound;
+#    slip/stick conditions with that bound; the w_0 problem before step 1
+#    reads its own pressure (a fixed point);
 # 3. the same with the mesh adapted every other step on 2 ranks: the lag
 #    holds at every node the two meshes share (the pressure moves with the
 #    mesh).
@@ -88,6 +89,9 @@ print("static: %d load values, fixed-point iterations %d to %d, "
 for d in ("quasistatic", "adapted"):
     steps = table(d + "/steps.csv")
     assert all(r["bound_iterations"] == "0" for r in steps), d
+    # w_0 has no step before it: its bound reads its own pressure
+    for p in contact(d, 0):
+        assert abs(float(p["friction_bound"]) - MU * pressure(p)) <= 1e-9, (d, "w_0", p["x"])
     slip = stick = shared = 0
     for r in steps:
         n = int(r["step"])
