@@ -42,7 +42,7 @@ namespace hemicontact
           const double      t,
           const double      u_nu,
           const double      w_nu,
-          const double      p_nu = 0) const;
+          const double      p_nu) const;
 
     /** Whether it depends on t, u_nu, w_nu or p_nu (else: once per mesh). */
     bool
