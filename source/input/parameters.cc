@@ -431,13 +431,16 @@ namespace hemicontact
                       "friction disk (the static bound of a weakening law). A "
                       "scalar expression (doc/parameters.md, Expressions) in "
                       "x, y, z, t, u_nu, the normal displacement at the "
-                      "node (positive into the foundation), and w_nu, the "
-                      "normal velocity (velocity classes). u_nu is the "
-                      "displacement known when the step starts; a bound in "
-                      "the step's own unknown (w_nu; u_nu in the static "
-                      "class) is found by fixed-point iterations "
-                      "(doc/theory.md, section 9.8). E.g. mu*cp*pos(u_nu) for "
-                      "normal compliance with friction, or "
+                      "node (positive into the foundation), w_nu, the "
+                      "normal velocity (velocity classes), and p_nu, the "
+                      "contact pressure -sigma_nu at the node. u_nu is the "
+                      "displacement known when the step starts, p_nu in the "
+                      "velocity classes the pressure of the step before; a "
+                      "bound in the step's own unknown (w_nu; u_nu or p_nu "
+                      "in the static class) is found by fixed-point "
+                      "iterations (doc/theory.md, sections 9.8 and 9.9). "
+                      "E.g. mu*cp*pos(u_nu) for normal compliance with "
+                      "friction, mu*pos(p_nu) for Coulomb friction, or "
                       "x < 0.5 ? 0.3 : 0.2.");
     prm.declare_entry("initial displacement",
                       "0",

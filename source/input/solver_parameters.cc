@@ -67,10 +67,11 @@ namespace hemicontact
       "friction bound tolerance",
       "1e-8",
       Patterns::Double(0),
-      "A friction bound that depends on the step's unknown (u_nu in the "
-      "static class, w_nu in the velocity classes) is found by fixed-point "
-      "iterations on the bound (doc/theory.md, section 9.8); they stop when "
-      "no nodal bound changes by more than this times the largest bound.");
+      "A friction bound that depends on the step's unknown (u_nu or p_nu in "
+      "the static class, w_nu in the velocity classes) is found by "
+      "fixed-point iterations on the bound (doc/theory.md, sections 9.8 and "
+      "9.9); they stop when no nodal bound changes by more than this times "
+      "the largest bound.");
     prm.declare_entry("friction bound iterations",
                       "30",
                       Patterns::Integer(1),

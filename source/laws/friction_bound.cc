@@ -13,8 +13,9 @@ namespace hemicontact
     bound_variables(const int dim)
     {
       return dim == 2 ?
-               std::vector<std::string>{"x", "y", "t", "u_nu", "w_nu"} :
-               std::vector<std::string>{"x", "y", "z", "t", "u_nu", "w_nu"};
+               std::vector<std::string>{"x", "y", "t", "u_nu", "w_nu", "p_nu"} :
+               std::vector<std::string>{
+                 "x", "y", "z", "t", "u_nu", "w_nu", "p_nu"};
     }
   } // namespace
 
@@ -36,12 +37,12 @@ namespace hemicontact
         throw InputError(
           std::string("data: ") + e.what() + " The variables are " +
           (dim == 2 ? "x, y" : "x, y, z") +
-          ", t, u_nu (the normal displacement) and w_nu (the normal "
-          "velocity).");
+          ", t, u_nu (the normal displacement), w_nu (the normal "
+          "velocity) and p_nu (the contact pressure).");
       }
-    state_dependent = expression->uses_variable(dim) ||
-                      expression->uses_variable(dim + 1) ||
-                      expression->uses_variable(dim + 2);
+    state_dependent =
+      expression->uses_variable(dim) || expression->uses_variable(dim + 1) ||
+      expression->uses_variable(dim + 2) || expression->uses_variable(dim + 3);
   }
 
   template <int dim>
@@ -49,14 +50,16 @@ namespace hemicontact
   FrictionBound<dim>::value(const Point<dim> &p,
                             const double      t,
                             const double      u_nu,
-                            const double      w_nu) const
+                            const double      w_nu,
+                            const double      p_nu) const
   {
-    std::vector<double> at(dim + 3);
+    std::vector<double> at(dim + 4);
     for (int d = 0; d < dim; ++d)
       at[d] = p[d];
     at[dim]        = t;
     at[dim + 1]    = u_nu;
     at[dim + 2]    = w_nu;
+    at[dim + 3]    = p_nu;
     const double v = expression->evaluate(at);
     if (!(v >= 0) || !std::isfinite(v))
       {
@@ -64,7 +67,7 @@ namespace hemicontact
         s << "data: 'friction bound' = " << quoted_expression(text) << " is "
           << (std::isfinite(v) ? "negative" : "not a finite number") << " ("
           << v << ") at the contact node x = (" << p << "), t = " << t
-          << ", u_nu = " << u_nu << ", w_nu = " << w_nu
+          << ", u_nu = " << u_nu << ", w_nu = " << w_nu << ", p_nu = " << p_nu
           << "; F_b must be a finite number >= 0.";
         throw InputError(s.str());
       }

@@ -193,8 +193,9 @@ namespace hemicontact
       }
     throw_if_any(error, mpi_communicator);
 
-    // the fields: w_n, u_n, the branches, w_{n-1} and the branches the
-    // constrained AMG was built for: attached to the p4est mesh, or, on a
+    // the fields: w_n, u_n, the branches, w_{n-1}, the branches the
+    // constrained AMG was built for and the contact traction (p_nu of a
+    // friction bound in the next step): attached to the p4est mesh, or, on a
     // simplex mesh (rebuilt from the parameters on resume), one file per
     // rank in dof order
     TrilinosWrappers::MPI::Vector branches(s.locally_owned_dofs,
@@ -205,7 +206,12 @@ namespace hemicontact
                                                s.preconditioner),
                       amg_branches);
     const std::vector<const TrilinosWrappers::MPI::Vector *> owned_fields{
-      &s.velocity, &s.displacement, &branches, &s.old_velocity, &amg_branches};
+      &s.velocity,
+      &s.displacement,
+      &branches,
+      &s.old_velocity,
+      &amg_branches,
+      &s.contact_traction};
     if (s.discretization.is_simplex())
       throw_if_any(write_rank_fields(
                      aside / (name + ".fields." +

@@ -135,17 +135,20 @@ namespace hemicontact
             cell->set_coarsen_flag();
         }
 
-    // transfer w_n and u_n (everything a step needs: w_{n-1} of the next
-    // step is w_n, branches are recomputed in its first Newton iteration);
+    // transfer w_n, u_n and the contact traction (everything a step needs:
+    // w_{n-1} of the next step is w_n, the traction gives p_nu of its
+    // friction bound, branches are recomputed in its first Newton
+    // iteration);
     // 'projection' moves u_{n+1} = u_n + k w_n instead of u_n and keeps the
     // functionals of coarsened cells (state_projection.cc)
     const bool project = settings.state_transfer == StateTransfer::projection;
     TrilinosWrappers::MPI::Vector w(locally_owned_dofs,
                                     locally_relevant_dofs,
                                     mpi_communicator);
-    TrilinosWrappers::MPI::Vector u(w);
-    w = velocity;
-    u = displacement;
+    TrilinosWrappers::MPI::Vector u(w), traction(w);
+    w        = velocity;
+    u        = displacement;
+    traction = contact_traction;
     if (project)
       {
         // the displacement held after the step (StepScheme): u_n + k w_n
@@ -158,7 +161,7 @@ namespace hemicontact
       transfer(dof_handler);
     tria->prepare_coarsening_and_refinement();
     transfer.prepare_for_coarsening_and_refinement(
-      std::vector<const TrilinosWrappers::MPI::Vector *>{&w, &u});
+      std::vector<const TrilinosWrappers::MPI::Vector *>{&w, &u, &traction});
     const unsigned int functionals =
       project ? attach_coarsened_functionals(w, u) : 0;
     tria->execute_coarsening_and_refinement();
@@ -166,7 +169,8 @@ namespace hemicontact
     // rebuild everything that lives on the mesh
     setup_on_current_mesh();
     std::vector<TrilinosWrappers::MPI::Vector *> new_fields{&velocity,
-                                                            &displacement};
+                                                            &displacement,
+                                                            &contact_traction};
     transfer.interpolate(new_fields);
     // (before the hanging-node values are distributed: a kept cell next to
     // a coarsened one still holds the old field there)

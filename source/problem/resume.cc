@@ -47,10 +47,14 @@ namespace hemicontact
                                            mpi_communicator);
     TrilinosWrappers::MPI::Vector amg_branches(locally_owned_dofs,
                                                mpi_communicator);
-    checkpointer.load_fields(
-      dof_handler,
-      locally_owned_dofs,
-      {&velocity, &displacement, &branches, &old_velocity, &amg_branches});
+    checkpointer.load_fields(dof_handler,
+                             locally_owned_dofs,
+                             {&velocity,
+                              &displacement,
+                              &branches,
+                              &old_velocity,
+                              &amg_branches,
+                              &contact_traction});
     branches_from_field(branches,
                         locally_owned_dofs,
                         locally_relevant_dofs,

@@ -5,6 +5,7 @@
 #include <hemicontact/output/checkpointer.h>
 #include <hemicontact/output/run_output.h>
 #include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/solver/friction_bound_iteration.h>
 
 #include <algorithm>
 #include <functional>
@@ -24,62 +25,6 @@ namespace hemicontact
      * viscosity only dissipate.
      */
     constexpr double unstable_energy_growth = 100;
-
-    /**
-     * The fixed point of doc/theory.md, section 9.8: @p update_bounds
-     * evaluates the bounds at the step's current solution and returns their
-     * relative change, @p solve solves the step again with them frozen;
-     * until the change is below 'friction bound tolerance'. The iterations
-     * and the extra Newton and Krylov iterations are added to @p stats. A
-     * bound that has not settled within 'friction bound iterations', or
-     * whose change grows three times in a row, fails the step
-     * (SolverFailure).
-     */
-    void
-    iterate_friction_bound(const std::function<double()>         &update_bounds,
-                           const std::function<StepStatistics()> &solve,
-                           const NonlinearSolverParameters       &settings,
-                           StepStatistics                        &stats)
-    {
-      double       last_change = std::numeric_limits<double>::infinity();
-      unsigned int growths     = 0;
-      for (;;)
-        {
-          const double change = update_bounds();
-          ++stats.bound_iterations;
-          if (change <= settings.bound_tolerance)
-            return;
-          growths = change > last_change ? growths + 1 : 0;
-          if (stats.bound_iterations >= settings.bound_iterations ||
-              growths >= 3)
-            {
-              std::ostringstream message;
-              message << std::setprecision(3)
-                      << "the friction bound, which depends on the step's "
-                         "own unknown, did not settle: after "
-                      << stats.bound_iterations
-                      << " fixed-point iterations its relative change is "
-                      << change << " (tolerance " << settings.bound_tolerance
-                      << ", 'nonlinear solver/friction bound tolerance')"
-                      << (growths >= 3 ? " and it grows: the bound does not "
-                                         "contract (doc/theory.md, section "
-                                         "9.8, gives a sufficient condition)" :
-                                         "")
-                      << ". Make the bound depend less steeply on the "
-                         "state, or raise 'friction bound iterations'.";
-              throw SolverFailure(message.str());
-            }
-          last_change = change;
-          // the last solve's state and branches, every solve's iterations
-          StepStatistics again   = solve();
-          again.bound_iterations = stats.bound_iterations;
-          again.newton_iterations += stats.newton_iterations;
-          again.linear_iterations += stats.linear_iterations;
-          again.line_search_reductions += stats.line_search_reductions;
-          stats = again;
-        }
-    }
-
 
     /**
      * Refuse (SolverFailure) a stored energy E_n above
@@ -169,7 +114,13 @@ namespace hemicontact
         velocity.add(k / last_step_length, trend);
         base_constraints.distribute(velocity);
       }
-    update_friction_bounds(start + k);
+    // the contact pressure p_nu of the bound: in the velocity classes the
+    // step before's throughout the step, in the static class the last
+    // solve's (doc/theory.md, section 9.9)
+    const TrilinosWrappers::MPI::Vector  traction_before(contact_traction);
+    const TrilinosWrappers::MPI::Vector *pressure =
+      scheme.is_static() ? &contact_traction : &traction_before;
+    update_friction_bounds(start + k, pressure);
     recheck_convexity_if_bounds_grew(start + k);
     assemble_load(start + k);
     assemble_step_rhs();
@@ -177,12 +128,13 @@ namespace hemicontact
       {
         StepStatistics stats = solve_step();
         // a bound in the step's own unknown: fixed-point iterations on it
-        // (doc/theory.md, section 9.8)
+        // (doc/theory.md, sections 9.8 and 9.9)
         const FrictionBound<dim> &bound = *data.friction_bound;
-        if (scheme.is_static() ? bound.uses_normal_displacement() :
+        if (scheme.is_static() ? bound.uses_normal_displacement() ||
+                                   bound.uses_contact_pressure() :
                                  bound.uses_normal_velocity())
           iterate_friction_bound(
-            [&]() { return update_friction_bounds(start + k); },
+            [&]() { return update_friction_bounds(start + k, pressure); },
             [&]() {
               recheck_convexity_if_bounds_grew(start + k);
               return solve_step();
@@ -198,7 +150,8 @@ namespace hemicontact
       {
         // back to the last converged state (w_{n-1}, u_{n-1})
         scheme.undo_displacement_before_step(displacement, old_velocity, k);
-        velocity = old_velocity;
+        velocity         = old_velocity;
+        contact_traction = traction_before;
         if (depth >= parameters.nonlinear_solver.time_step_halvings)
           throw;
       }

@@ -7,6 +7,7 @@
 
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/solver/friction_bound_iteration.h>
 
 #include <cmath>
 #include <map>
@@ -252,17 +253,21 @@ namespace hemicontact
 
   template <int dim>
   double
-  ContactProblem<dim>::update_friction_bounds(const double t)
+  ContactProblem<dim>::update_friction_bounds(
+    const double                         t,
+    const TrilinosWrappers::MPI::Vector *traction)
   {
     const FrictionBound<dim> &bound = *data.friction_bound;
     // the static class's u is its step's unknown (doc/theory.md 9.1)
-    TrilinosWrappers::MPI::Vector u, w;
+    TrilinosWrappers::MPI::Vector u, w, p;
     if (bound.depends_on_state())
       {
         u.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
         w.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
+        p.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
         u = scheme.is_static() ? velocity : displacement;
         w = velocity;
+        p = traction != nullptr ? *traction : contact_traction;
       }
     // a bad value is reported by every rank, so that none waits for another
     // in the step that follows
@@ -270,17 +275,19 @@ namespace hemicontact
     double      largest = 0, change = 0;
     for (ContactNode<dim> &node : contact_nodes)
       {
-        double u_nu = 0, w_nu = 0;
+        double u_nu = 0, w_nu = 0, p_nu = 0;
         if (bound.depends_on_state())
           for (unsigned int c = 0; c < dim; ++c)
             {
               u_nu += u[node.dofs[c]] * node.normal[c];
               w_nu += w[node.dofs[c]] * node.normal[c];
+              p_nu += p[node.dofs[c]] * node.normal[c];
             }
         try
           {
             const double before = node.friction_bound;
-            node.friction_bound = bound.value(node.position, t, u_nu, w_nu);
+            node.friction_bound =
+              bound.value(node.position, t, u_nu, w_nu, p_nu);
             if (node.locally_owned)
               {
                 largest = std::max(largest, node.friction_bound);
@@ -357,6 +364,8 @@ namespace hemicontact
       }
     old_velocity = velocity;
     step_number  = 0;
+    // no contact pressure before the first step (doc/theory.md 9.9)
+    contact_traction = 0;
     update_friction_bounds(0.);
     if (scheme.initial_velocity_from_step())
       {
@@ -375,7 +384,15 @@ namespace hemicontact
         velocity = 0;
         try
           {
-            solve_step();
+            StepStatistics stats = solve_step();
+            // no step before w_0 whose pressure a bound in p_nu could read:
+            // its own, a fixed point (doc/theory.md, section 9.9)
+            if (data.friction_bound->uses_contact_pressure())
+              iterate_friction_bound(
+                [&]() { return update_friction_bounds(0.); },
+                [&]() { return solve_step(); },
+                parameters.nonlinear_solver,
+                stats);
           }
         catch (const SolverFailure &failure)
           {
@@ -397,21 +414,22 @@ namespace hemicontact
     update_energy_balance(/*initial=*/true);
   }
 
-#define HEMICONTACT_INSTANTIATE(dim)                                         \
-  template ContactProblem<dim>::ContactProblem(const Parameters &,           \
-                                               ContactLaws,                  \
-                                               MPI_Comm);                    \
-  template ContactProblem<dim>::ContactProblem(const Parameters &,           \
-                                               ContactLaws,                  \
-                                               ProblemData<dim>,             \
-                                               MPI_Comm);                    \
-  template double ContactProblem<dim>::update_friction_bounds(const double); \
-  template void   ContactProblem<dim>::setup();                              \
-  template void   ContactProblem<dim>::setup_on_current_mesh();              \
-  template void   ContactProblem<dim>::setup_dofs();                         \
-  template void   ContactProblem<dim>::setup_base_constraints();             \
-  template void   ContactProblem<dim>::setup_contact_nodes();                \
-  template void   ContactProblem<dim>::initialize_state();
+#define HEMICONTACT_INSTANTIATE(dim)                               \
+  template ContactProblem<dim>::ContactProblem(const Parameters &, \
+                                               ContactLaws,        \
+                                               MPI_Comm);          \
+  template ContactProblem<dim>::ContactProblem(const Parameters &, \
+                                               ContactLaws,        \
+                                               ProblemData<dim>,   \
+                                               MPI_Comm);          \
+  template double ContactProblem<dim>::update_friction_bounds(     \
+    const double, const TrilinosWrappers::MPI::Vector *);          \
+  template void ContactProblem<dim>::setup();                      \
+  template void ContactProblem<dim>::setup_on_current_mesh();      \
+  template void ContactProblem<dim>::setup_dofs();                 \
+  template void ContactProblem<dim>::setup_base_constraints();     \
+  template void ContactProblem<dim>::setup_contact_nodes();        \
+  template void ContactProblem<dim>::initialize_state();
 
   HEMICONTACT_INSTANTIATE(2)
   HEMICONTACT_INSTANTIATE(3)

@@ -311,8 +311,6 @@ namespace hemicontact
     const double         w_n   = v.w * normal;
     const Tensor<1, dim> w_t   = v.w - w_n * normal;
     const double         scale = 1e-13 * (1 + v.w.norm());
-    const double         bound =
-      friction_bound->value(p, t, v.u * normal, v.w * normal);
 
     std::vector<double> at(dim + 1);
     for (int i = 0; i < dim; ++i)
@@ -327,6 +325,9 @@ namespace hemicontact
       held = held || std::abs(w_n - kink.position) <= scale;
     const double xi_n =
       held ? normal_multiplier->evaluate(at) : law.subgradient(w_n);
+    // the exact contact pressure p_nu of the bound is xi_nu
+    const double bound =
+      friction_bound->value(p, t, v.u * normal, v.w * normal, xi_n);
     // xi_tau in dphi(w_tau): the given multiplier where w_tau = 0
     Tensor<1, dim> xi_t;
     if (w_t.norm() <= scale)

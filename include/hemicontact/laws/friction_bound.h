@@ -12,15 +12,17 @@ namespace hemicontact
   using namespace dealii;
 
   /**
-   * The friction bound F_b(x, t, u_nu, w_nu) >= 0 of 'data/friction
+   * The friction bound F_b(x, t, u_nu, w_nu, p_nu) >= 0 of 'data/friction
    * bound': an expression in x, y[, z], t, u_nu, the normal displacement
-   * u . nu at the contact node (positive into the foundation), and w_nu,
-   * the normal velocity (velocity classes). In the velocity classes u_nu
-   * is the displacement held when the step starts (doc/theory.md, section
-   * 7); a bound in w_nu, and in the static class a bound in u_nu, depends
-   * on the step's own unknown and is found by fixed-point iterations
-   * (section 9.8). Example: mu * cp * pos(u_nu), normal compliance with
-   * friction.
+   * u . nu at the contact node (positive into the foundation), w_nu, the
+   * normal velocity (velocity classes), and p_nu, the contact pressure
+   * -sigma_nu at the node. In the velocity classes u_nu is the
+   * displacement held when the step starts and p_nu the pressure of the
+   * step before (doc/theory.md, sections 7 and 9.9); a bound in w_nu, and
+   * in the static class a bound in u_nu or p_nu, depends on the step's own
+   * unknown and is found by fixed-point iterations (sections 9.8, 9.9).
+   * Examples: mu * cp * pos(u_nu), normal compliance with friction;
+   * mu * pos(p_nu), Coulomb friction.
    */
   template <int dim>
   class FrictionBound
@@ -30,17 +32,19 @@ namespace hemicontact
     FrictionBound(const std::string &expression, const std::string &constants);
 
     /**
-     * F_b at point @p p, time @p t and normal displacement @p u_nu. Throws
-     * an InputError naming the expression, the point, the time and u_nu if
-     * the value is negative or not finite.
+     * F_b at point @p p, time @p t, normal displacement @p u_nu, normal
+     * velocity @p w_nu and contact pressure @p p_nu. Throws an InputError
+     * naming the expression, the point, the time and the state if the
+     * value is negative or not finite.
      */
     double
     value(const Point<dim> &p,
           const double      t,
           const double      u_nu,
-          const double      w_nu) const;
+          const double      w_nu,
+          const double      p_nu) const;
 
-    /** Whether it depends on t, u_nu or w_nu (else: once per mesh). */
+    /** Whether it depends on t, u_nu, w_nu or p_nu (else: once per mesh). */
     bool
     depends_on_state() const
     {
@@ -58,6 +62,12 @@ namespace hemicontact
     uses_normal_velocity() const
     {
       return expression->uses_variable(dim + 2);
+    }
+    /** Whether the expression uses p_nu. */
+    bool
+    uses_contact_pressure() const
+    {
+      return expression->uses_variable(dim + 3);
     }
 
   private:

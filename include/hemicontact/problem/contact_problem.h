@@ -281,12 +281,15 @@ namespace hemicontact
     /**
      * F_b at every contact node from 'data/friction bound' at time @p t,
      * u_nu from the displacement held (static class: from the step's
-     * unknown) and w_nu from the step's unknown (doc/theory.md 7, 9.8).
-     * Returns the largest change of a nodal bound relative to the largest
-     * bound (0 if every bound is 0).
+     * unknown), w_nu from the step's unknown and p_nu = traction . nu from
+     * @p traction (by default contact_traction, the last solve's)
+     * (doc/theory.md 7, 9.8, 9.9). Returns the largest change of a nodal
+     * bound relative to the largest bound (0 if every bound is 0).
      */
     double
-    update_friction_bounds(const double t);
+    update_friction_bounds(
+      const double                         t,
+      const TrilinosWrappers::MPI::Vector *traction = nullptr);
 
     /** @name assembly.cc */
     /**
@@ -442,6 +445,12 @@ namespace hemicontact
     TrilinosWrappers::MPI::Vector load;         ///< F_n = (f0, f2, f3) tested
     TrilinosWrappers::MPI::Vector
       step_rhs; ///< b = rho/k M w_{n-1} - B u_n + F_n
+    /**
+     * The nodal traction -(K w - b)_i / m_i of the last solve at the owned
+     * contact node dofs: the contact pressure p_nu = -sigma_nu of a
+     * friction bound is its normal part. Checkpointed and moved to an
+     * adapted mesh with the state.
+     */
     TrilinosWrappers::MPI::Vector contact_traction;
 
     std::vector<ContactNode<dim>> contact_nodes; ///< locally relevant nodes
