@@ -2,6 +2,7 @@
 #include <hemicontact/laws/normal/exponential_law.h>
 #include <hemicontact/laws/normal/linear_damping_law.h>
 #include <hemicontact/laws/normal/no_normal_resistance.h>
+#include <hemicontact/laws/normal/penalised_softening_compliance.h>
 #include <hemicontact/laws/normal/piecewise_linear_law.h>
 #include <hemicontact/laws/normal_law.h>
 
@@ -48,6 +49,7 @@ namespace hemicontact
           normal_law_entry<PiecewiseLinearLaw>(),
           normal_law_entry<LinearDampingLaw>(),
           normal_law_entry<NoNormalResistance>(),
+          normal_law_entry<PenalisedSofteningCompliance>(),
         });
       return laws;
     }
