@@ -26,7 +26,7 @@ fit of the last points, and draws the deformed body at
 `signorini`, the largest penalty stands in for the limit (and is left
 out of the fit); the notebook says which it used.
 
-Run from the repository root (about a minute on one core):
+Run from the repository root (about two minutes on one core):
 
     jupyter nbconvert --to notebook --execute --output-dir /tmp jupyter-notes/example_b.ipynb
 
