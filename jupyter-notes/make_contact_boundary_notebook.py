@@ -70,6 +70,8 @@ later = data[data.time > 0]          # step 0 holds the initial state
 sep = later[later.normal_branch == 0]
 nstick = later[later.normal_branch == 1]
 damped = later[later.normal_branch == 2]
+held = later[later.normal_branch == 3]     # at a breakpoint of the law
+wall = later[later.normal_branch == 4]     # at the wall
 tstick = later[later.tangential_branch == 0]
 slip = later[later.tangential_branch == 1]
 w_tau = later[[f"w_tau_{c}" for c in xyz]].to_numpy()
@@ -81,6 +83,8 @@ checks = {
     "normal stick: -sigma_nu >= 0": (-nstick.sigma_nu >= -tol_s).all(),
     "damped: w_nu >= 0": (damped.w_nu >= -tol_w).all(),
     "damped: -sigma_nu > 0": (-damped.sigma_nu > 0).all(),
+    "at a breakpoint: -sigma_nu > 0": (-held.sigma_nu > 0).all(),
+    "at the wall: reaction >= 0": ("wall_pressure" not in wall.columns or (wall.wall_pressure >= -tol_s).all()),
     "tangential stick: w_tau = 0": (tstick.w_tau_norm <= tol_w).all(),
     "|w_tau| is the norm of w_tau": np.allclose(np.linalg.norm(w_tau, axis=1), later.w_tau_norm, atol=tol_w),
 }
@@ -103,7 +107,8 @@ elif len(slip):
 for name, ok in checks.items():
     print(f"{'ok ' if ok else 'FAIL'} {name}")
 print(f"(node, time) pairs: separating {len(sep)}, normal stick {len(nstick)}, damped {len(damped)}, "
-      f"stick {len(tstick)}, slip {len(slip)}")
+      + (f"at a breakpoint {len(held)}, at the wall {len(wall)}, " if len(held) + len(wall) else "")
+      + f"stick {len(tstick)}, slip {len(slip)}")
 assert all(checks.values()), "a contact condition is violated in the contact CSV files" """),
 ("markdown", """## Along Γ3 at a few times
 
@@ -161,7 +166,9 @@ def edges(v):
 t_values = np.array([line[line.step == s].time.iloc[0] for s in steps_sorted])
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(9, 4), sharey=True)
 for ax, column, names, colors in [
-        (ax1, "normal_branch", ["separating", "normal stick", "damped"], ["#4c72b0", "#dd8452", "#55a868"]),
+        (ax1, "normal_branch",
+         ["separating", "normal stick", "damped", "at a breakpoint", "at the wall"][:max(3, int(line.normal_branch.max()) + 1)],
+         ["#4c72b0", "#dd8452", "#55a868", "#937860", "#222222"][:max(3, int(line.normal_branch.max()) + 1)]),
         (ax2, "tangential_branch", ["stick", "slip"], ["#c44e52", "#8172b3"])]:
     grid = np.array([line[line.step == s].sort_values(along)[column].to_numpy() for s in steps_sorted])
     cmap = ListedColormap(colors)

@@ -12,7 +12,7 @@ Sofonea & Tarzia: a static elastic body on a polygon, clamped on x = 0,
 loaded by its weight and resting with the segment y = 0, 0.8 ≤ x ≤ 1.2
 on a foundation with the penalised normal compliance λ⁻¹ j(u_ν)
 (`penalised softening compliance`, a = b = 0.1) and Tresca friction
-F_b = 1 (`doc/examples.md`, section 8). As λ⁻¹ → ∞ the compliance
+F_b = 1 (`doc/examples.md`, section 9). As λ⁻¹ → ∞ the compliance
 becomes the Signorini condition u_ν ≤ 0 (the normal law `signorini`).
 
 This notebook runs the program itself: the shipped file with the penalty

@@ -224,7 +224,7 @@ namespace
               << yes((gradient - force).norm() < 1e-7 * force.norm()) << "\n";
 
     // the work rate booked in the energy balance is xi . w = m F(s) s
-    const auto work = nodal::contact_work(node, w, none, law);
+    const auto work = nodal::contact_work(node, w, 0., none, law);
     std::cout << "  friction work = m F(s) s: "
               << yes(std::abs(work.second - force * w) < 1e-14) << "\n";
   }

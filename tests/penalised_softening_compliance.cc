@@ -1,5 +1,5 @@
 // Unit test of the normal law 'penalised softening compliance' (Example B,
-// doc/examples.md section 8): p, P and p' at sample points against the
+// doc/examples.md section 9): p, P and p' at sample points against the
 // closed forms of j' and j, continuity of p and P at r = b, P' = p and
 // p' against central difference quotients, alpha against the steepest
 // descent of p on a grid, and the rejected parameters.

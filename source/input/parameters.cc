@@ -566,13 +566,17 @@ namespace hemicontact
                       "u(x,t): 'dimension' expressions (doc/parameters.md, "
                       "Expressions) separated by ';' in x, y, z, t and the "
                       "data constants. It must vanish on Gamma_1.");
-    prm.declare_entry("normal multiplier",
-                      "0",
-                      Patterns::Anything(),
-                      "The choice xi_nu = s*(x,t) in dj(0) = [0,a] where the "
-                      "normal velocity vanishes, an expression "
-                      "(doc/parameters.md, Expressions); should lie strictly "
-                      "inside (0, a).");
+    prm.declare_entry(
+      "normal multiplier",
+      "0",
+      Patterns::Anything(),
+      "The choice xi_nu = s*(x,t) in dj(0) = [0,a] where the "
+      "normal velocity vanishes, an expression "
+      "(doc/parameters.md, Expressions); should lie strictly "
+      "inside (0, a). Also the choice where the exact w_nu (u_nu "
+      "in the static class) sits at a kink of the law or at "
+      "its wall (doc/theory.md section 10): inside the interval "
+      "there.");
     prm.declare_entry("tangential multiplier",
                       "0",
                       Patterns::Anything(),

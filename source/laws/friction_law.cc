@@ -1,5 +1,6 @@
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/laws/friction/piecewise_linear_friction.h>
+#include <hemicontact/laws/friction/rational_weakening.h>
 #include <hemicontact/laws/friction/slip_rate_weakening.h>
 #include <hemicontact/laws/friction/tresca.h>
 #include <hemicontact/laws/friction_law.h>
@@ -43,6 +44,7 @@ namespace hemicontact
           friction_law_entry<TrescaLaw>(),
           friction_law_entry<SlipRateWeakeningLaw>(),
           friction_law_entry<PiecewiseLinearFrictionLaw>(),
+          friction_law_entry<RationalWeakeningLaw>(),
         });
       return laws;
     }

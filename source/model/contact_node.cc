@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hemicontact
 {
@@ -33,17 +34,87 @@ namespace hemicontact
     }
 
     template <int dim>
+    std::vector<HoldPoint>
+    hold_points(const ContactNode<dim> &node, const NormalLaw &law)
+    {
+      std::vector<HoldPoint> points;
+      const double           limit = node.upper_limit;
+      double                 s     = 0;
+      if (0 < limit)
+        {
+          points.push_back({0., 0., law.jump(), NormalBranch::stick});
+          s = law.jump();
+        }
+      for (const NormalLaw::Kink &kink : law.kinks())
+        if (kink.position < limit)
+          {
+            points.push_back(
+              {kink.position, s, s + kink.jump, NormalBranch::breakpoint});
+            s += kink.jump;
+          }
+      if (std::isfinite(limit))
+        points.push_back({limit,
+                          s,
+                          std::numeric_limits<double>::infinity(),
+                          NormalBranch::wall});
+      return points;
+    }
+
+    namespace
+    {
+      /** normal_hold() together with P(q), the multiplier it projects to. */
+      template <int dim>
+      std::pair<NormalHold, double>
+      project_on_path(const ContactNode<dim> &node,
+                      const NodeState<dim>   &m,
+                      const NormalLaw        &law)
+      {
+        const double                 q      = m.s + node.c * m.w_normal;
+        const std::vector<HoldPoint> points = hold_points(node, law);
+        for (const HoldPoint &point : points)
+          {
+            const double x = point.position;
+            if (q < point.lower + node.c * x)
+              return {{x <= 0 ? NormalBranch::separating : NormalBranch::damped,
+                       0.},
+                      point.lower};
+            if (q <= point.upper + node.c * x)
+              return {{point.branch, x}, q - node.c * x};
+          }
+        return {{NormalBranch::damped, 0.}, points.back().upper};
+      }
+    } // namespace
+
+    template <int dim>
+    NormalHold
+    normal_hold(const ContactNode<dim> &node,
+                const NodeState<dim>   &m,
+                const NormalLaw        &law)
+    {
+      return project_on_path(node, m, law).first;
+    }
+
+    template <int dim>
     NormalBranch
     normal_branch(const ContactNode<dim> &node,
                   const NodeState<dim>   &m,
                   const NormalLaw        &law)
     {
-      const double q = m.s + node.c * m.w_normal;
-      if (q < 0)
-        return NormalBranch::separating;
-      if (q > law.jump())
-        return NormalBranch::damped;
-      return NormalBranch::stick;
+      return normal_hold(node, m, law).branch;
+    }
+
+    template <int dim>
+    double
+    wall_reaction(const ContactNode<dim> &node,
+                  const double            normal_traction,
+                  const NormalLaw        &law)
+    {
+      if (node.normal_branch != NormalBranch::wall ||
+          !std::isfinite(node.upper_limit))
+        return 0.;
+      const double limit = node.upper_limit;
+      return normal_traction - law.remainder(limit) -
+             hold_points(node, law).back().lower;
     }
 
     NormalBranch
@@ -75,8 +146,7 @@ namespace hemicontact
                            const NodeState<dim>   &m,
                            const NormalLaw        &law)
     {
-      const double q = m.s + node.c * m.w_normal;
-      return m.s - std::clamp(q, 0., law.jump());
+      return m.s - project_on_path(node, m, law).second;
     }
 
     template <int dim>
@@ -100,8 +170,9 @@ namespace hemicontact
       const Tensor<1, dim>  &nu = node.normal;
       if (node.normal_branch == NormalBranch::damped)
         {
-          lin.force +=
-            node.mass * (law.jump() + law.remainder(m.w_normal)) * nu;
+          // the multiplier of the free segment the node is on, plus p
+          const double s = project_on_path(node, m, law).second;
+          lin.force += node.mass * (s + law.remainder(m.w_normal)) * nu;
           lin.matrix += node.mass * law.remainder_derivative(m.w_normal) *
                         outer_product(nu, nu);
         }
@@ -160,12 +231,18 @@ namespace hemicontact
     std::pair<double, double>
     contact_work(const ContactNode<dim> &node,
                  const Tensor<1, dim>   &velocity,
+                 const double            normal_traction,
                  const NormalLaw        &law,
                  const FrictionLaw      &friction)
     {
       const double wn   = velocity * node.normal;
       const double slip = (velocity - wn * node.normal).norm();
-      return {node.mass * law.subgradient(wn) * wn,
+      const bool   held_away_from_zero =
+        node.normal_branch == NormalBranch::breakpoint ||
+        node.normal_branch == NormalBranch::wall;
+      const double xi_nu =
+        held_away_from_zero ? normal_traction : law.subgradient(wn);
+      return {node.mass * xi_nu * wn,
               slip > 0 ? node.mass *
                            friction.response(node.friction_bound, slip) * slip :
                          0.};
@@ -202,7 +279,9 @@ namespace hemicontact
     constrained_directions(const ContactNode<dim> &node)
     {
       std::vector<Tensor<1, dim>> directions;
-      if (node.normal_branch == NormalBranch::stick)
+      if (node.normal_branch == NormalBranch::stick ||
+          node.normal_branch == NormalBranch::breakpoint ||
+          node.normal_branch == NormalBranch::wall)
         directions.push_back(node.normal);
       if (node.tangential_branch == TangentialBranch::stick)
         for (const Tensor<1, dim> &t : tangent_basis(node.normal))
@@ -220,38 +299,47 @@ namespace hemicontact
       return projector;
     }
 
-#define HEMICONTACT_INSTANTIATE(dim)                                             \
-  template NodeState<dim>   state(const ContactNode<dim> &,                      \
-                                  const Tensor<1, dim> &,                        \
-                                  const Tensor<1, dim> &,                        \
-                                  const NormalLaw &,                             \
-                                  const FrictionLaw &);                          \
-  template NormalBranch     normal_branch(const ContactNode<dim> &,              \
-                                          const NodeState<dim> &,                \
-                                          const NormalLaw &);                    \
-  template TangentialBranch tangential_branch(const ContactNode<dim> &,          \
-                                              const NodeState<dim> &);           \
-  template double           normal_complementarity(const ContactNode<dim> &,     \
-                                                   const NodeState<dim> &,       \
-                                                   const NormalLaw &);           \
-  template Tensor<1, dim>   tangential_complementarity(const ContactNode<dim> &, \
-                                                       const NodeState<dim> &);  \
-  template NodeLinearization<dim>    linearize(const ContactNode<dim> &,         \
-                                               const NodeState<dim> &,           \
-                                               const NormalLaw &,                \
-                                               const FrictionLaw &);             \
-  template double                    energy(const ContactNode<dim> &,            \
-                                            const Tensor<1, dim> &,              \
-                                            const NormalLaw &,                   \
-                                            const FrictionLaw &);                \
-  template std::pair<double, double> contact_work(const ContactNode<dim> &,      \
-                                                  const Tensor<1, dim> &,        \
-                                                  const NormalLaw &,             \
-                                                  const FrictionLaw &);          \
-  template std::array<Tensor<1, dim>, dim - 1> tangent_basis(                    \
-    const Tensor<1, dim> &);                                                     \
-  template std::vector<Tensor<1, dim>> constrained_directions(                   \
-    const ContactNode<dim> &);                                                   \
+#define HEMICONTACT_INSTANTIATE(dim)                                           \
+  template NodeState<dim>         state(const ContactNode<dim> &,              \
+                                        const Tensor<1, dim> &,                \
+                                        const Tensor<1, dim> &,                \
+                                        const NormalLaw &,                     \
+                                        const FrictionLaw &);                  \
+  template std::vector<HoldPoint> hold_points(const ContactNode<dim> &,        \
+                                              const NormalLaw &);              \
+  template NormalHold             normal_hold(const ContactNode<dim> &,        \
+                                              const NodeState<dim> &,          \
+                                              const NormalLaw &);              \
+  template double                 wall_reaction(const ContactNode<dim> &,      \
+                                                const double,                  \
+                                                const NormalLaw &);            \
+  template NormalBranch           normal_branch(const ContactNode<dim> &,      \
+                                                const NodeState<dim> &,        \
+                                                const NormalLaw &);            \
+  template TangentialBranch       tangential_branch(const ContactNode<dim> &,  \
+                                                    const NodeState<dim> &);   \
+  template double         normal_complementarity(const ContactNode<dim> &,     \
+                                                 const NodeState<dim> &,       \
+                                                 const NormalLaw &);           \
+  template Tensor<1, dim> tangential_complementarity(const ContactNode<dim> &, \
+                                                     const NodeState<dim> &);  \
+  template NodeLinearization<dim>    linearize(const ContactNode<dim> &,       \
+                                               const NodeState<dim> &,         \
+                                               const NormalLaw &,              \
+                                               const FrictionLaw &);           \
+  template double                    energy(const ContactNode<dim> &,          \
+                                            const Tensor<1, dim> &,            \
+                                            const NormalLaw &,                 \
+                                            const FrictionLaw &);              \
+  template std::pair<double, double> contact_work(const ContactNode<dim> &,    \
+                                                  const Tensor<1, dim> &,      \
+                                                  const double,                \
+                                                  const NormalLaw &,           \
+                                                  const FrictionLaw &);        \
+  template std::array<Tensor<1, dim>, dim - 1> tangent_basis(                  \
+    const Tensor<1, dim> &);                                                   \
+  template std::vector<Tensor<1, dim>> constrained_directions(                 \
+    const ContactNode<dim> &);                                                 \
   template Tensor<2, dim> free_projector(const ContactNode<dim> &);
 
     HEMICONTACT_INSTANTIATE(2)

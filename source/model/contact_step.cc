@@ -74,12 +74,18 @@ namespace hemicontact
         node_states[k] =
           nodal::state(node, velocity, force, system.law, system.friction);
 
-        NormalBranch nb =
-          nodal::normal_branch(node, node_states[k], system.law);
+        node.normal_traction = force * node.normal / node.mass;
+        const nodal::NormalHold hold =
+          nodal::normal_hold(node, node_states[k], system.law);
+        NormalBranch nb = hold.branch;
+        node.held_value = hold.value;
         // not in the first iteration: its "current" branches are the
-        // previous step's, or the default of a new mesh
-        if (gradual_normal_branches && iteration > 0)
+        // previous step's, or the default of a new mesh; not behind a wall
+        // at or below zero, where w_nu = 0 is out of bounds
+        if (gradual_normal_branches && iteration > 0 && node.upper_limit > 0)
           nb = nodal::gradual_normal_branch(node.normal_branch, nb, system.law);
+        if (nb == NormalBranch::stick)
+          node.held_value = 0;
         const TangentialBranch tb =
           nodal::tangential_branch(node, node_states[k]);
         if (node.locally_owned &&
@@ -150,8 +156,27 @@ namespace hemicontact
               rhs[node.dofs[c]] = system.step_rhs[node.dofs[c]] + g_node[c];
           }
       rhs.compress(VectorOperation::insert);
-      op.project(rhs);
     }
+    // a node held at w_nu = r != 0: the minimiser is x0 + y, y in
+    // range(Pi), with Pi K Pi y = Pi (g - K x0); the nodal tangents L_i act
+    // in the tangent plane only, so K x0 = K0 x0
+    VectorType x0(system.step_rhs);
+    const bool inhomogeneous = held_offset(x0);
+    // the scale of the Krylov tolerance: the load's part of the right-hand
+    // side, not K0 x0, which can dwarf it (stiff K0, many held nodes)
+    double rhs_scale = 0;
+    if (inhomogeneous)
+      {
+        VectorType projected(rhs);
+        op.project(projected);
+        rhs_scale = projected.l2_norm();
+        VectorType k_x0(x0);
+        system.step_matrix.vmult(k_x0, x0);
+        rhs -= k_x0;
+      }
+    op.project(rhs);
+    if (!inhomogeneous)
+      rhs_scale = rhs.l2_norm();
 
     TimerOutput::Scope t(system.timer, "linear solve");
     unsigned int       n_iterations = 1;
@@ -167,18 +192,60 @@ namespace hemicontact
         trial = w;
         system.base_constraints.set_zero(trial);
         op.project(trial);
-        n_iterations =
-          system.linear_solver.solve_cg(op,
-                                        system.preconditioner,
-                                        trial,
-                                        rhs,
-                                        reduction,
-                                        std::max(absolute_tolerance,
-                                                 linear_relative_tolerance *
-                                                   rhs.l2_norm()));
+        n_iterations = system.linear_solver.solve_cg(
+          op,
+          system.preconditioner,
+          trial,
+          rhs,
+          reduction,
+          std::max(absolute_tolerance, linear_relative_tolerance * rhs_scale));
       }
+    if (inhomogeneous)
+      trial += x0;
     system.base_constraints.distribute(trial);
     return n_iterations;
+  }
+
+  template <int dim>
+  bool
+  ContactStep<dim>::held_offset(VectorType &x0) const
+  {
+    x0           = 0;
+    bool any_set = false;
+    for (const ContactNode<dim> &node : system.contact_nodes)
+      if (node.locally_owned && node.held_value != 0 &&
+          (node.normal_branch == NormalBranch::breakpoint ||
+           node.normal_branch == NormalBranch::wall))
+        {
+          for (unsigned int c = 0; c < dim; ++c)
+            x0[node.dofs[c]] = node.held_value * node.normal[c];
+          any_set = true;
+        }
+    x0.compress(VectorOperation::insert);
+    return Utilities::MPI::logical_or(any_set, system.mpi_communicator);
+  }
+
+  template <int dim>
+  void
+  ContactStep<dim>::make_feasible(VectorType &w) const
+  {
+    bool any_wall = false;
+    for (const ContactNode<dim> &node : system.contact_nodes)
+      any_wall = any_wall || std::isfinite(node.upper_limit);
+    if (!Utilities::MPI::logical_or(any_wall, system.mpi_communicator))
+      return;
+    for (const ContactNode<dim> &node : system.contact_nodes)
+      if (node.locally_owned && std::isfinite(node.upper_limit))
+        {
+          Tensor<1, dim> v;
+          for (unsigned int c = 0; c < dim; ++c)
+            v[c] = w[node.dofs[c]];
+          const double excess = v * node.normal - node.upper_limit;
+          if (excess > 0)
+            for (unsigned int c = 0; c < dim; ++c)
+              w[node.dofs[c]] = v[c] - excess * node.normal[c];
+        }
+    w.compress(VectorOperation::insert);
   }
 
   template <int dim>

@@ -58,7 +58,7 @@ namespace hemicontact
       for (unsigned int d = 0; d < dim; ++d)
         file << ",sigma_tau_" << xyz[d];
       file << ",normal_branch,tangential_branch,mass,friction_bound,"
-              "friction_response\n";
+              "friction_response,wall_pressure\n";
 
       // small values at the solver tolerance are printed as 0 so that the
       // file does not depend on the number of MPI ranks in the last digits
@@ -72,7 +72,7 @@ namespace hemicontact
             {
               if (j > 0)
                 file << ",";
-              if (j >= width - 5 && j < width - 3)
+              if (j >= width - 6 && j < width - 4)
                 file << static_cast<int>(row[j]);
               else
                 file << clean(row[j]);
@@ -95,7 +95,8 @@ namespace hemicontact
     // sigma_tau, normal_branch, tangential_branch, mass, friction_bound (F_b
     // of the step), friction_response (the force F(|w_tau|) = F_b +
     // r(|w_tau|) that the friction law opposes to the node's slip speed)
-    const unsigned int  width = dim + dim + 1 + 2 + dim + 2 + dim + 3 + 2;
+    // wall_pressure (the wall's reaction at nodes held there)
+    const unsigned int  width = dim + dim + 1 + 2 + dim + 2 + dim + 3 + 2 + 1;
     std::vector<double> rows;
     for (const ContactNode<dim> &node : s.contact_nodes)
       if (node.locally_owned)
@@ -134,6 +135,7 @@ namespace hemicontact
           rows.push_back(node.friction_bound);
           rows.push_back(
             s.friction_law.response(node.friction_bound, w_tau.norm()));
+          rows.push_back(nodal::wall_reaction(node, -sigma_nu, s.normal_law));
         }
 
     const std::vector<std::vector<double>> gathered =

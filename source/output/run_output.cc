@@ -171,7 +171,7 @@ namespace hemicontact
            "kinetic_before_adaptation,elastic_before_adaptation,"
            "kinetic_after_adaptation,elastic_after_adaptation,"
            "energy_transfer_change,time_step_halvings,minimised_energy,"
-           "bound_iterations\n";
+           "bound_iterations,n_at_breakpoint,n_at_wall\n";
     // probes.csv (the points are checked above)
     if (!probe_points.empty() &&
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
@@ -358,7 +358,8 @@ namespace hemicontact
             << s.elastic_before_adaptation << "," << s.kinetic_after_adaptation
             << "," << s.elastic_after_adaptation << "," << e.transfer_change
             << "," << s.time_step_halvings << "," << e.minimised_energy << ","
-            << s.bound_iterations << "\n";
+            << s.bound_iterations << "," << s.n_at_breakpoint << ","
+            << s.n_at_wall << "\n";
         error = append_complete(steps_file,
                                 parameters.output.directory + "/steps.csv",
                                 row.str());
@@ -381,7 +382,10 @@ namespace hemicontact
     const typename ContactProblem<dim>::State state   = problem.state();
     const EnergyBalance                      &energy  = state.energy;
     const unsigned int                        n_steps = state.n_steps;
-    std::ostringstream                        line;
+    // the branch counts of kinks and walls, for laws that have them
+    const bool has_holds = !state.normal_law.kinks().empty() ||
+                           std::isfinite(state.normal_law.penetration_limit());
+    std::ostringstream line;
     if (parameters.output.terminal == TerminalOutput::test)
       {
         line << "step " << s.step << ": newton " << s.newton_iterations
@@ -394,6 +398,9 @@ namespace hemicontact
              << (energy.relative_defect() < 1e-7 ? "yes" : "no");
         if (s.bound_iterations > 0)
           line << ", friction bound iterations " << s.bound_iterations;
+        if (has_holds)
+          line << ", at breakpoint/wall " << s.n_at_breakpoint << "/"
+               << s.n_at_wall;
         if (s.adapted)
           line << "\n  adapted: "
                << state.discretization.triangulation->n_global_active_cells()
@@ -431,6 +438,9 @@ namespace hemicontact
              << energy.relative_defect();
         if (s.bound_iterations > 0)
           line << "  bound iterations " << s.bound_iterations;
+        if (has_holds)
+          line << "  breakpoint/wall " << s.n_at_breakpoint << "/"
+               << s.n_at_wall;
       }
     if (parameters.output.terminal != TerminalOutput::quiet)
       pcout << line.str() << std::endl;

@@ -93,8 +93,8 @@ namespace hemicontact
       for (const ContactNode<dim> &node : nodes)
         if (node.locally_owned)
           {
-            const auto [n, t] =
-              nodal::contact_work(node, nodal_vector(node, u), law, friction);
+            const auto [n, t] = nodal::contact_work(
+              node, nodal_vector(node, u), node.normal_traction, law, friction);
             normal += n;
             tangential += t;
           }
@@ -193,7 +193,7 @@ namespace hemicontact
           for (unsigned int c = 0; c < dim; ++c)
             v[c] = velocity[node.dofs[c]];
           const auto [normal, tangential] =
-            nodal::contact_work(node, v, *law, *friction);
+            nodal::contact_work(node, v, node.normal_traction, *law, *friction);
           damping += normal;
           friction_work += tangential;
         }

@@ -2,6 +2,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <hemicontact/model/contact_step.h>
+#include <hemicontact/model/contact_wall.h>
 #include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/solver/active_set_newton.h>
 
@@ -19,7 +20,7 @@ namespace hemicontact
                    StepStatistics                      &stats)
     {
       // one count per branch, summed over the ranks in one reduction
-      unsigned int counts[5] = {0, 0, 0, 0, 0};
+      unsigned int counts[7] = {0, 0, 0, 0, 0, 0, 0};
       for (const ContactNode<dim> &node : contact_nodes)
         if (node.locally_owned)
           {
@@ -28,15 +29,19 @@ namespace hemicontact
             counts[2] += node.normal_branch == NormalBranch::damped;
             counts[3] += node.tangential_branch == TangentialBranch::stick;
             counts[4] += node.tangential_branch == TangentialBranch::slip;
+            counts[5] += node.normal_branch == NormalBranch::breakpoint;
+            counts[6] += node.normal_branch == NormalBranch::wall;
           }
-      Utilities::MPI::sum(ArrayView<const unsigned int>(counts, 5),
+      Utilities::MPI::sum(ArrayView<const unsigned int>(counts, 7),
                           mpi_communicator,
-                          ArrayView<unsigned int>(counts, 5));
-      stats.n_separating   = counts[0];
-      stats.n_normal_stick = counts[1];
-      stats.n_damped       = counts[2];
-      stats.n_stick        = counts[3];
-      stats.n_slip         = counts[4];
+                          ArrayView<unsigned int>(counts, 7));
+      stats.n_separating    = counts[0];
+      stats.n_normal_stick  = counts[1];
+      stats.n_damped        = counts[2];
+      stats.n_stick         = counts[3];
+      stats.n_slip          = counts[4];
+      stats.n_at_breakpoint = counts[5];
+      stats.n_at_wall       = counts[6];
     }
   } // namespace
 
@@ -44,6 +49,17 @@ namespace hemicontact
   StepStatistics
   ContactProblem<dim>::solve_step()
   {
+    // the wall in the step's unknown (doc/theory.md section 10)
+    if (std::isfinite(law->penetration_limit()) && !scheme.is_static())
+      {
+        TrilinosWrappers::MPI::Vector u(locally_owned_dofs,
+                                        locally_relevant_dofs,
+                                        mpi_communicator);
+        u = displacement;
+        set_wall_limits(contact_nodes, *law, &u, time_step);
+      }
+    else
+      set_wall_limits(contact_nodes, *law, nullptr, time_step);
     ContactStep<dim>      step({step_matrix,
                                 step_rhs,
                                 base_constraints,

@@ -85,6 +85,7 @@ namespace hemicontact
     const double target =
       settings.tolerance * load_norm + settings.absolute_tolerance;
 
+    problem.make_feasible(w);
     problem.residual(w, residual); // then kept up to date by line_search()
     for (unsigned int iteration = 0;; ++iteration)
       {
@@ -148,6 +149,7 @@ namespace hemicontact
                                      settings.krylov_floor_fraction * target :
                                      0.,
                                    trial);
+        problem.make_feasible(trial);
         line_search(problem, w, trial, residual, report.line_search_reductions);
         ++report.newton_iterations;
       }

@@ -116,7 +116,7 @@ namespace hemicontact
       ErrorNorms   errors;
       double       sum_V = 0, sum_V_H1 = 0, sum_dofs = 0;
       unsigned int newton = 0, max_newton = 0, n_steps = 0, max_dofs = 0;
-      double       branch[5] = {0, 0, 0, 0, 0};
+      double       branch[7] = {0, 0, 0, 0, 0, 0, 0};
 
       /** Add step @p s (of length @p k) with its errors @p e. */
       void
@@ -132,9 +132,14 @@ namespace hemicontact
         sum_dofs += s.n_dofs;
         max_dofs = std::max(max_dofs, s.n_dofs);
         ++n_steps;
-        const unsigned int counts[5] = {
-          s.n_separating, s.n_normal_stick, s.n_damped, s.n_stick, s.n_slip};
-        for (unsigned int b = 0; b < 5; ++b)
+        const unsigned int counts[7] = {s.n_separating,
+                                        s.n_normal_stick,
+                                        s.n_damped,
+                                        s.n_stick,
+                                        s.n_slip,
+                                        s.n_at_breakpoint,
+                                        s.n_at_wall};
+        for (unsigned int b = 0; b < 7; ++b)
           branch[b] += counts[b];
       }
 
@@ -143,17 +148,20 @@ namespace hemicontact
       result() const
       {
         LevelResult r;
-        r.n_steps                   = n_steps;
-        r.errors                    = errors;
-        r.errors.E_V                = std::sqrt(sum_V);
-        r.errors.E_V_H1             = std::sqrt(sum_V_H1);
-        r.mean_dofs                 = sum_dofs / n_steps;
-        r.max_dofs                  = max_dofs;
-        r.mean_newton_iterations    = double(newton) / n_steps;
-        r.max_newton_iterations     = max_newton;
-        const double n_pairs_normal = branch[0] + branch[1] + branch[2];
+        r.n_steps                = n_steps;
+        r.errors                 = errors;
+        r.errors.E_V             = std::sqrt(sum_V);
+        r.errors.E_V_H1          = std::sqrt(sum_V_H1);
+        r.mean_dofs              = sum_dofs / n_steps;
+        r.max_dofs               = max_dofs;
+        r.mean_newton_iterations = double(newton) / n_steps;
+        r.max_newton_iterations  = max_newton;
+        const double n_pairs_normal =
+          branch[0] + branch[1] + branch[2] + branch[5] + branch[6];
         for (unsigned int b = 0; b < 5; ++b)
           r.branch_share[b] = branch[b] / n_pairs_normal;
+        r.breakpoint_share = branch[5] / n_pairs_normal;
+        r.wall_share       = branch[6] / n_pairs_normal;
         return r;
       }
     };
@@ -281,8 +289,11 @@ namespace hemicontact
       std::cout << "level " << level << ": " << r.n_steps
                 << " steps, share of (node, step) pairs: separating "
                 << std::fixed << std::setprecision(3) << share[0]
-                << ", normal stick " << share[1] << ", damped " << share[2]
-                << ", stick " << share[3] << ", slip " << share[4]
+                << ", normal stick " << share[1] << ", damped " << share[2];
+      if (r.breakpoint_share > 0 || r.wall_share > 0)
+        std::cout << ", at a breakpoint " << r.breakpoint_share
+                  << ", at the wall " << r.wall_share;
+      std::cout << ", stick " << share[3] << ", slip " << share[4]
                 << std::defaultfloat << std::endl;
     }
 

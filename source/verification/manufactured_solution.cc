@@ -71,6 +71,16 @@ namespace hemicontact
     // the laws see u itself, which takes the place of w (doc/theory.md 9.7)
     const bool laws_on_displacement =
       StepScheme(parameters.problem).is_static();
+    // in the velocity classes the wall bounds w_nu by (g - u_nu)/k with the
+    // discrete u: no exact field sits at it (doc/theory.md section 10)
+    require(laws_on_displacement || !std::isfinite(law.penetration_limit()),
+            "manufactured solution: the normal law '" + law.name() +
+              "' has a wall ('penetration limit'), which manufactured "
+              "solutions support in the static class only ('problem/class "
+              "= static'): in the velocity classes the wall bounds the "
+              "step's velocity by (g - u_nu)/k with the discrete "
+              "displacement, which no exact field can follow. Choose the "
+              "static class or a law without a wall.");
     std::vector<Expression> displacement_again =
       laws_on_displacement ? parse_vector(m.exact_displacement,
                                           dim,
@@ -309,10 +319,14 @@ namespace hemicontact
       at[i] = p[i];
     at[dim] = t;
 
-    // xi_nu in dj(w_nu): the given multiplier where w_nu = 0
-    const double xi_n = std::abs(w_n) <= scale ?
-                          normal_multiplier->evaluate(at) :
-                          law.subgradient(w_n);
+    // xi_nu in dj(w_nu) + N(w_nu): the given multiplier where w_nu is at a
+    // hold point (0, a kink, the wall: doc/theory.md section 10)
+    bool held = std::abs(w_n) <= scale ||
+                std::abs(w_n - law.penetration_limit()) <= scale;
+    for (const NormalLaw::Kink &kink : law.kinks())
+      held = held || std::abs(w_n - kink.position) <= scale;
+    const double xi_n =
+      held ? normal_multiplier->evaluate(at) : law.subgradient(w_n);
     // xi_tau in dphi(w_tau): the given multiplier where w_tau = 0
     Tensor<1, dim> xi_t;
     if (w_t.norm() <= scale)

@@ -8,6 +8,7 @@
 #include <hemicontact/laws/normal_law.h>
 
 #include <array>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -20,7 +21,9 @@ namespace hemicontact
   {
     separating = 0, ///< s + c w_nu < 0: s = 0, w_nu free
     stick      = 1, ///< 0 <= s + c w_nu <= a: w_nu = 0
-    damped     = 2  ///< s + c w_nu > a: s = a plus the remainder p(w_nu)
+    damped     = 2, ///< s + c w_nu > a: s = a plus the remainder p(w_nu)
+    breakpoint = 3, ///< held at a convex kink r_j of the law: w_nu = r_j
+    wall       = 4  ///< held at the wall: w_nu = the node's upper limit
   };
 
   /** Tangential branch of a contact node. */
@@ -46,6 +49,18 @@ namespace hemicontact
     double                                   friction_bound = 0;
     double                                   c              = 1;
     bool                                     locally_owned  = false;
+    /**
+     * The wall in the step's unknown, w_nu <= upper_limit (g in the static
+     * class, (g - u_nu)/k in the velocity classes; +inf without a wall).
+     */
+    double upper_limit = std::numeric_limits<double>::infinity();
+    /** w_nu on the branches that hold it (stick, breakpoint, wall). */
+    double held_value = 0;
+    /**
+     * -sigma_nu, the normal contact traction (law and wall) at the last
+     * Newton iterate: the contact pressure where it is positive.
+     */
+    double           normal_traction   = 0;
     NormalBranch     normal_branch     = NormalBranch::separating;
     TangentialBranch tangential_branch = TangentialBranch::stick;
   };
@@ -89,11 +104,62 @@ namespace hemicontact
           const NormalLaw        &law,
           const FrictionLaw      &friction);
 
-    /** Branch from s + c w_nu against [0, a]. */
+    /**
+     * A point where w_nu can be held: position, the interval [lower, upper]
+     * of the convex part's multiplier s there, and the branch.
+     */
+    struct HoldPoint
+    {
+      double       position;
+      double       lower;
+      double       upper;
+      NormalBranch branch;
+    };
+
+    /**
+     * The node's hold points in increasing position: r = 0 (the jump
+     * [0, a]), the law's kinks below the wall, and the wall at
+     * node.upper_limit (doc/theory.md section 10). Between them w_nu is free.
+     */
+    template <int dim>
+    std::vector<HoldPoint>
+    hold_points(const ContactNode<dim> &node, const NormalLaw &law);
+
+    /** The normal branch and the w_nu it holds (0 where it holds none). */
+    struct NormalHold
+    {
+      NormalBranch branch;
+      double       value;
+    };
+
+    /**
+     * Branch from q = s + c w_nu against the path of the convex part's
+     * graph: held at a hold point x where lower + c x <= q <= upper + c x,
+     * free between them (doc/theory.md section 10; with the one hold point r =
+     * 0 this is q against [0, a]).
+     */
+    template <int dim>
+    NormalHold
+    normal_hold(const ContactNode<dim> &node,
+                const NodeState<dim>   &m,
+                const NormalLaw        &law);
+
+    /** The branch of normal_hold(). */
     template <int dim>
     NormalBranch
     normal_branch(const ContactNode<dim> &node,
                   const NodeState<dim>   &m,
+                  const NormalLaw        &law);
+
+    /**
+     * The reaction of the wall at a node held there, -sigma_nu minus the
+     * law's response left of the wall (>= 0 at a solution); zero on the
+     * other branches. @p normal_traction is -sigma_nu.
+     */
+    template <int dim>
+    double
+    wall_reaction(const ContactNode<dim> &node,
+                  const double            normal_traction,
                   const NormalLaw        &law);
 
     /**
@@ -118,7 +184,11 @@ namespace hemicontact
     TangentialBranch
     tangential_branch(const ContactNode<dim> &node, const NodeState<dim> &m);
 
-    /** Complementarity function s - P_[0,a](s + c w_nu) (a traction). */
+    /**
+     * Complementarity function s - P(s + c w_nu) (a traction), P the
+     * projection onto the convex part's graph (P_[0,a] without kinks and
+     * wall).
+     */
     template <int dim>
     double
     normal_complementarity(const ContactNode<dim> &node,
@@ -159,19 +229,21 @@ namespace hemicontact
      * The work rates m_i xi_nu w_nu (normal) and m_i xi_tau . w_tau
      * (friction) of the laws' contact forces xi at @p velocity: what the
      * energy balance books as dissipated. Where w_nu = 0 or w_tau = 0 the
-     * work is zero whatever the multiplier.
+     * work is zero whatever the multiplier; at a breakpoint or the wall
+     * xi_nu is the solution's @p normal_traction (-sigma_nu).
      */
     template <int dim>
     std::pair<double, double>
     contact_work(const ContactNode<dim> &node,
                  const Tensor<1, dim>   &velocity,
+                 const double            normal_traction,
                  const NormalLaw        &law,
                  const FrictionLaw      &friction);
 
     /**
      * Unit vectors of the directions on which the node's constrained
-     * branches impose w . e = 0 (normal stick: nu; tangential stick: the
-     * tangent plane).
+     * branches impose w . e = const (normal stick, breakpoint, wall: nu,
+     * w . nu = held_value; tangential stick: the tangent plane, w . e = 0).
      */
     template <int dim>
     std::vector<Tensor<1, dim>>

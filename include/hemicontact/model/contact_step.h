@@ -90,7 +90,18 @@ namespace hemicontact
     double
     nodal_energy(const VectorType &w) const override;
 
+    void
+    make_feasible(VectorType &w) const override;
+
   private:
+    /**
+     * The vector x0 with w . nu = held_value at the owned nodes held away
+     * from zero (breakpoint, wall) and zero elsewhere, and whether any
+     * rank has one: the inhomogeneous part of the constraints.
+     */
+    bool
+    held_offset(VectorType &x0) const;
+
     StepSystem<dim>        system;
     const LinearSolverType solver_type;
     const double           linear_relative_tolerance;

@@ -71,6 +71,15 @@ namespace hemicontact
     /** Phi(w), the node-wise part of J_n. */
     virtual double
     nodal_energy(const VectorType &w) const = 0;
+
+    /**
+     * Move @p w into the feasible set of Phi where it has one (the nodal
+     * walls w . nu <= limit: doc/theory.md section 10), so that the line search
+     * runs between feasible points. Nothing by default.
+     */
+    virtual void
+    make_feasible(VectorType &) const
+    {}
   };
 
   /**

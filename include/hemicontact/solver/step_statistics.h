@@ -14,6 +14,8 @@ namespace hemicontact
     unsigned int n_damped               = 0;
     unsigned int n_stick                = 0;
     unsigned int n_slip                 = 0;
+    unsigned int n_at_breakpoint        = 0; ///< normal: held at a kink
+    unsigned int n_at_wall              = 0; ///< normal: held at the wall
     unsigned int line_search_reductions = 0;
     double       residual               = 0; ///< relative nonsmooth residual
     double       wall_seconds           = 0;

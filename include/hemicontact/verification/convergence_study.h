@@ -49,6 +49,9 @@ namespace hemicontact
     /** shares of (node, step) pairs: separating, normal stick, damped,
      *  tangential stick, slip */
     double branch_share[5] = {0, 0, 0, 0, 0};
+    /** shares of (node, step) pairs held at a breakpoint and at the wall */
+    double breakpoint_share = 0;
+    double wall_share       = 0;
   };
 
   /**

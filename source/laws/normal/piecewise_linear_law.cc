@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hemicontact
 {
@@ -52,9 +53,11 @@ namespace hemicontact
       "0:1, 0.05:1.5, 0.2:0.4",
       Patterns::Anything(),
       "Breakpoints r:p of the response p(r) for r > 0, comma separated, "
-      "with r strictly increasing from r = 0 and p >= 0. p at r = 0 is the "
-      "jump a (dj(0) = [0,a]); the response is linear between breakpoints "
-      "and constant after the last one.");
+      "with r increasing from r = 0 and p >= 0. p at r = 0 is the jump a "
+      "(dj(0) = [0,a]); the response is linear between breakpoints and "
+      "constant after the last one. Two breakpoints at the same r > 0 are "
+      "the values left and right of a jump (e.g. '0:0, 0.1:2, 0.1:0': p = "
+      "20 r up to r = 0.1, then 0).");
     prm.leave_subsection();
   }
 
@@ -85,12 +88,20 @@ namespace hemicontact
                   std::to_string(points[k].second) +
                   " at r = " + std::to_string(points[k].first) +
                   " is negative; the foundation can only resist penetration.");
-        if (k > 0)
-          require(points[k].first > points[k - 1].first,
-                  "normal law 'piecewise linear': the breakpoints must have "
-                  "strictly increasing r, but r = " +
-                    std::to_string(points[k].first) + " follows r = " +
-                    std::to_string(points[k - 1].first) + ".");
+        if (k == 0)
+          continue;
+        const bool repeated = points[k].first == points[k - 1].first;
+        require(points[k].first > points[k - 1].first ||
+                  (repeated && k >= 2 && points[k - 2].first < points[k].first),
+                "normal law 'piecewise linear': the breakpoints of "
+                "'subgradient breakpoints' must have increasing r, with at "
+                "most two at the same r > 0 (the response's values left and "
+                "right of a jump), but r = " +
+                  std::to_string(points[k].first) +
+                  " follows r = " + std::to_string(points[k - 1].first) + ".");
+        if (repeated && points[k].second > points[k - 1].second)
+          upward_jumps.push_back(
+            {points[k].first, points[k].second - points[k - 1].second});
       }
   }
 
@@ -99,6 +110,8 @@ namespace hemicontact
   {
     if (r >= points.back().first)
       return points.back().second;
+    // the segment [lower, upper) of positive length that holds r: lower is
+    // the last breakpoint at or left of r, so the value right of a jump
     const auto upper =
       std::upper_bound(points.begin(),
                        points.end(),
@@ -114,7 +127,7 @@ namespace hemicontact
   double
   PiecewiseLinearLaw::remainder(const double r) const
   {
-    return r > 0 ? response(r) - jump() : 0.;
+    return r > 0 ? response(r) - staircase(r) : 0.;
   }
 
   double
@@ -138,17 +151,26 @@ namespace hemicontact
   {
     if (r <= 0)
       return 0.;
-    // exact integral of the piecewise-linear response minus a
+    // exact integral of the piecewise-linear response, segment by segment
+    // (a jump is a segment of length zero), minus that of the staircase
     double integral = 0;
     for (unsigned int k = 0; k + 1 < points.size() && points[k].first < r; ++k)
       {
-        const double r1 = std::min(r, points[k + 1].first);
-        integral +=
-          0.5 * (points[k].second + response(r1)) * (r1 - points[k].first);
+        const double r0 = points[k].first, r1 = points[k + 1].first;
+        if (r1 == r0)
+          continue;
+        const double end = std::min(r, r1);
+        const double value_at_end =
+          points[k].second +
+          (points[k + 1].second - points[k].second) * (end - r0) / (r1 - r0);
+        integral += 0.5 * (points[k].second + value_at_end) * (end - r0);
       }
     if (r > points.back().first)
       integral += points.back().second * (r - points.back().first);
-    return integral - jump() * r;
+    double staircase_integral = jump() * r;
+    for (const Kink &kink : upward_jumps)
+      staircase_integral += kink.jump * std::max(r - kink.position, 0.);
+    return integral - staircase_integral;
   }
 
   double
@@ -156,9 +178,14 @@ namespace hemicontact
   {
     double alpha = 0;
     for (unsigned int k = 0; k + 1 < points.size(); ++k)
-      alpha = std::max(alpha,
-                       -(points[k + 1].second - points[k].second) /
-                         (points[k + 1].first - points[k].first));
+      {
+        const double dr = points[k + 1].first - points[k].first;
+        const double dp = points[k + 1].second - points[k].second;
+        if (dr == 0 && dp < 0)
+          return std::numeric_limits<double>::infinity();
+        if (dr > 0)
+          alpha = std::max(alpha, -dp / dr);
+      }
     return alpha;
   }
 } // namespace hemicontact

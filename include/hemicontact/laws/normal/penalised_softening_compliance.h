@@ -6,7 +6,7 @@ namespace hemicontact
 {
   /**
    * The penalised normal compliance of Example B (doc/examples.md,
-   * section 8): the potential penalty * j(r) with, for r >= 0,
+   * section 9): the potential penalty * j(r) with, for r >= 0,
    *   j(r) = (a + e^{-b}) r^2 / (2b)                     (r < b),
    *   j(r) = a r - e^{-r} + ((b + 2) e^{-b} - a b) / 2   (r >= b),
    * and j = 0 for r <= 0. Its derivative rises linearly to a + e^{-b} at

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# A block pressed uniformly onto a rigid wall (tests/signorini_block_2d.prm:
+# Signorini, frictionless, static class) has the linear exact solution
+# u = (-P t x/(lambda + 2 mu), 0) with the wall's pressure Q t at every
+# contact node. With a direct linear solver it is reproduced to round-off
+# on quadrilaterals at two refinements, on triangles, and on 2 ranks.
+set -euo pipefail
+exe=$1; prm=$2; work=$3
+rm -rf "$work"; mkdir -p "$work"; cd "$work"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+run() { # NAME RANKS REFINEMENTS CELL_TYPE
+  { cat "$prm"
+    printf 'subsection geometry\n  set global refinements = %s\n  set cell type = %s\nend\n' "$3" "$4"
+    printf 'subsection linear solver\n  set type = direct\nend\n'
+    printf 'subsection output\n  set directory = %s\n  set terminal = quiet\nend\n' "$1"; } > "$1.prm"
+  if [ "$2" -gt 1 ]; then mpirun -np "$2" "$exe" "$1.prm"; else "$exe" "$1.prm"; fi
+}
+run quads 1 2 hypercube
+run quads_fine 1 4 hypercube
+run triangles 1 3 simplex
+run quads_2_ranks 2 3 hypercube
+/usr/bin/python3 - <<'PY'
+import csv, glob, sys
+E, nu, P, Q = 100.0, 0.3, 3.0, 1.2857142857142858
+lam = E*nu/((1+nu)*(1-2*nu)); mu = E/(2*(1+nu))
+worst = 0.0
+for run in ['quads', 'quads_fine', 'triangles', 'quads_2_ranks']:
+    rows = list(csv.DictReader(open(sorted(glob.glob(run + '/contact_*.csv'))[-1])))
+    t = float(rows[0]['time'])
+    for r in rows:
+        if r['normal_branch'] != '4':
+            sys.exit(f"FAIL {run}: node at x = {r['x']} not at the wall (branch {r['normal_branch']})")
+        worst = max(worst, abs(float(r['u_nu'])) / (P*t/(lam+2*mu)),
+                    abs(float(r['wall_pressure']) - Q*t) / (Q*t),
+                    abs(float(r['sigma_nu']) + Q*t) / (Q*t))
+        ux = float(r['u_tau_x'])
+        worst = max(worst, abs(ux + P*t*float(r['x'])/(lam+2*mu)) / (P*t/(lam+2*mu)))
+    for p in csv.DictReader(open(run + '/probes.csv')):
+        t, x = float(p['time']), float(p['x'])
+        if t == 0: continue
+        scale = P*t/(lam+2*mu)
+        worst = max(worst, abs(float(p['u_x']) + scale*x)/scale, abs(float(p['u_y']))/scale)
+print(f"largest relative deviation from the exact solution: {worst:.1e}")
+if worst >= 1e-9:
+    sys.exit("FAIL: not reproduced to round-off")
+PY
