@@ -3,6 +3,7 @@
 #include <hemicontact/laws/normal/finite_penetration_law.h>
 #include <hemicontact/laws/normal/linear_damping_law.h>
 #include <hemicontact/laws/normal/no_normal_resistance.h>
+#include <hemicontact/laws/normal/penalised_softening_compliance.h>
 #include <hemicontact/laws/normal/piecewise_linear_law.h>
 #include <hemicontact/laws/normal/signorini_law.h>
 #include <hemicontact/laws/normal_law.h>
@@ -84,6 +85,7 @@ namespace hemicontact
           normal_law_entry<NoNormalResistance>(),
           normal_law_entry<SignoriniLaw>(),
           normal_law_entry<FinitePenetrationLaw>(),
+          normal_law_entry<PenalisedSofteningCompliance>(),
         });
       return laws;
     }
