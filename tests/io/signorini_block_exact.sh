@@ -3,7 +3,8 @@
 # Signorini, frictionless, static class) has the linear exact solution
 # u = (-P t x/(lambda + 2 mu), 0) with the wall's pressure Q t at every
 # contact node. With a direct linear solver it is reproduced to round-off
-# on quadrilaterals at two refinements, on triangles, and on 2 ranks.
+# on quadrilaterals at two refinements, on triangles, on 2 ranks, and on
+# the 3D block (hexahedra; the y faces carry the pressure Q t as well).
 set -euo pipefail
 exe=$1; prm=$2; work=$3
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
@@ -19,12 +20,19 @@ run quads 1 2 hypercube
 run quads_fine 1 4 hypercube
 run triangles 1 3 simplex
 run quads_2_ranks 2 3 hypercube
+{ cat quads.prm
+  printf 'set dimension = 3\nsubsection geometry\n  set lower left corner = 0, 0, 0\n'
+  printf '  set upper right corner = 2, 1, 1\n  set subdivisions = 2, 1, 1\n  set global refinements = 2\nend\n'
+  printf 'subsection boundary\n  set clamped boundary ids = 0\n  set traction boundary ids = 1, 2, 3, 5\n  set contact boundary ids = 4\nend\n'
+  printf 'subsection data\n  set surface traction = x > 1.9999 ? -P*t : 0; y < 1e-4 ? Q*t : (y > 0.9999 ? -Q*t : 0); z > 0.9999 ? -Q*t : 0\nend\n'
+  printf 'subsection output\n  set directory = hexahedra\n  set probe points = 2, 0.5, 0.5; 1, 1, 1\nend\n'; } > hexahedra.prm
+"$exe" hexahedra.prm
 /usr/bin/python3 - <<'PY'
 import csv, glob, sys
 E, nu, P, Q = 100.0, 0.3, 3.0, 1.2857142857142858
 lam = E*nu/((1+nu)*(1-2*nu)); mu = E/(2*(1+nu))
 worst = 0.0
-for run in ['quads', 'quads_fine', 'triangles', 'quads_2_ranks']:
+for run in ['quads', 'quads_fine', 'triangles', 'quads_2_ranks', 'hexahedra']:
     rows = list(csv.DictReader(open(sorted(glob.glob(run + '/contact_*.csv'))[-1])))
     t = float(rows[0]['time'])
     for r in rows:
@@ -39,7 +47,8 @@ for run in ['quads', 'quads_fine', 'triangles', 'quads_2_ranks']:
         t, x = float(p['time']), float(p['x'])
         if t == 0: continue
         scale = P*t/(lam+2*mu)
-        worst = max(worst, abs(float(p['u_x']) + scale*x)/scale, abs(float(p['u_y']))/scale)
+        worst = max(worst, abs(float(p['u_x']) + scale*x)/scale, abs(float(p['u_y']))/scale,
+                    abs(float(p.get('u_z', 0)))/scale)
 print(f"largest relative deviation from the exact solution: {worst:.1e}")
 if worst >= 1e-9:
     sys.exit("FAIL: not reproduced to round-off")
