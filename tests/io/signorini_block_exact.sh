@@ -2,9 +2,11 @@
 # A block pressed uniformly onto a rigid wall (tests/signorini_block_2d.prm:
 # Signorini, frictionless, static class) has the linear exact solution
 # u = (-P t x/(lambda + 2 mu), 0) with the wall's pressure Q t at every
-# contact node. With a direct linear solver it is reproduced to round-off
-# on quadrilaterals at two refinements, on triangles, on 2 ranks, and on
-# the 3D block (hexahedra; the y faces carry the pressure Q t as well).
+# contact node. With a direct linear solver it is reproduced to the 10
+# digits of the CSV files (the same deviation, 5e-10, on every mesh: the
+# printed precision) on quadrilaterals at two refinements, on triangles, on
+# 2 ranks, and on the 3D block (hexahedra; the y faces carry the pressure
+# Q t as well).
 set -euo pipefail
 exe=$1; prm=$2; work=$3
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
@@ -20,7 +22,7 @@ run quads 1 2 hypercube
 run quads_fine 1 4 hypercube
 run triangles 1 3 simplex
 run quads_2_ranks 2 3 hypercube
-{ cat quads.prm
+{ grep -v "^set dimension" quads.prm
   printf 'set dimension = 3\nsubsection geometry\n  set lower left corner = 0, 0, 0\n'
   printf '  set upper right corner = 2, 1, 1\n  set subdivisions = 2, 1, 1\n  set global refinements = 2\nend\n'
   printf 'subsection boundary\n  set clamped boundary ids = 0\n  set traction boundary ids = 1, 2, 3, 5\n  set contact boundary ids = 4\nend\n'
