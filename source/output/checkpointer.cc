@@ -291,21 +291,24 @@ namespace hemicontact
     const typename ContactProblem<dim>::State s              = problem.state();
     const Discretization<dim>                &discretization = s.discretization;
     const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
-    // w_n, u_n and the branches on every cell (p4est's data file) or at
-    // every dof with its index (the rank files of a simplex mesh), the
+    // the six fields of write() (w_n, u_n, the branches, w_{n-1}, the AMG's
+    // branches, the contact traction) on every cell (p4est's data file) or
+    // at every dof with its index (the rank files of a simplex mesh), the
     // cells themselves, and the state with the series and the parameters
-    std::uintmax_t bytes = 16 * 1024;
+    const std::uintmax_t n_fields = 6;
+    std::uintmax_t       bytes    = 16 * 1024;
     for (const SeriesRecord &record : series)
       bytes += record.stored().second.size() + 32;
     for (const std::string &entry : parameters.problem_definition)
       bytes += entry.size() + 16;
     if (discretization.is_simplex())
-      bytes += std::uintmax_t(s.dof_handler.n_dofs()) * 4 * sizeof(double) +
+      bytes += std::uintmax_t(s.dof_handler.n_dofs()) * (1 + n_fields) *
+                 sizeof(double) +
                Utilities::MPI::n_mpi_processes(mpi_communicator) * 8;
     else
       bytes +=
         std::uintmax_t(discretization.triangulation->n_global_active_cells()) *
-        (3 * discretization.fe->n_dofs_per_cell() * sizeof(double) + 64);
+        (n_fields * discretization.fe->n_dofs_per_cell() * sizeof(double) + 64);
     std::string error;
     if (root)
       {
