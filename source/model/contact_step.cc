@@ -74,7 +74,6 @@ namespace hemicontact
         node_states[k] =
           nodal::state(node, velocity, force, system.law, system.friction);
 
-        node.normal_traction = force * node.normal / node.mass;
         const nodal::NormalHold hold =
           nodal::normal_hold(node, node_states[k], system.law);
         NormalBranch nb = hold.branch;

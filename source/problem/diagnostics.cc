@@ -82,6 +82,7 @@ namespace hemicontact
     clapeyron_balance(const TrilinosWrappers::SparseMatrix &B,
                       const TrilinosWrappers::MPI::Vector  &F,
                       const TrilinosWrappers::MPI::Vector  &u,
+                      const TrilinosWrappers::MPI::Vector  &traction,
                       const std::vector<ContactNode<dim>>  &nodes,
                       const NormalLaw                      &law,
                       const FrictionLaw                    &friction,
@@ -93,8 +94,12 @@ namespace hemicontact
       for (const ContactNode<dim> &node : nodes)
         if (node.locally_owned)
           {
-            const auto [n, t] = nodal::contact_work(
-              node, nodal_vector(node, u), node.normal_traction, law, friction);
+            const auto [n, t] =
+              nodal::contact_work(node,
+                                  nodal_vector(node, u),
+                                  nodal_vector(node, traction) * node.normal,
+                                  law,
+                                  friction);
             normal += n;
             tangential += t;
           }
@@ -142,6 +147,7 @@ namespace hemicontact
         energy = clapeyron_balance(elastic_matrix,
                                    load,
                                    w,
+                                   contact_traction,
                                    contact_nodes,
                                    *law,
                                    *friction,
@@ -193,7 +199,12 @@ namespace hemicontact
           for (unsigned int c = 0; c < dim; ++c)
             v[c] = velocity[node.dofs[c]];
           const auto [normal, tangential] =
-            nodal::contact_work(node, v, node.normal_traction, *law, *friction);
+            nodal::contact_work(node,
+                                v,
+                                nodal_vector(node, contact_traction) *
+                                  node.normal,
+                                *law,
+                                *friction);
           damping += normal;
           friction_work += tangential;
         }

@@ -55,12 +55,7 @@ namespace hemicontact
      */
     double upper_limit = std::numeric_limits<double>::infinity();
     /** w_nu on the branches that hold it (stick, breakpoint, wall). */
-    double held_value = 0;
-    /**
-     * -sigma_nu, the normal contact traction (law and wall) at the last
-     * Newton iterate: the contact pressure where it is positive.
-     */
-    double           normal_traction   = 0;
+    double           held_value        = 0;
     NormalBranch     normal_branch     = NormalBranch::separating;
     TangentialBranch tangential_branch = TangentialBranch::stick;
   };
