@@ -49,6 +49,15 @@ namespace hemicontact
   }
 
   template <int dim>
+  double
+  ContactStep<dim>::operator_norm(const VectorType &residual) const
+  {
+    VectorType k0_w(residual);
+    k0_w += system.step_rhs;
+    return k0_w.l2_norm();
+  }
+
+  template <int dim>
   unsigned int
   ContactStep<dim>::update_branches(const VectorType  &w,
                                     const VectorType  &residual,
@@ -277,7 +286,7 @@ namespace hemicontact
     const SolverTuning       &tuning = parameters.solver_tuning;
     ActiveSetNewton::Settings settings;
     settings.tolerance           = parameters.nonlinear_solver.tolerance;
-    settings.absolute_tolerance  = tuning.absolute_tolerance;
+    settings.roundoff_tolerance  = tuning.roundoff_tolerance;
     settings.max_iterations      = parameters.nonlinear_solver.max_iterations;
     settings.line_search         = parameters.nonlinear_solver.line_search;
     settings.minimum_step_length = tuning.minimum_step_length;

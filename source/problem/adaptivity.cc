@@ -181,6 +181,12 @@ namespace hemicontact
     if (project)
       displacement.add(-scheme.held_displacement_offset(time_step),
                        velocity); // u_n = u_{n+1} - k w_n (left point)
+    // a projection can overshoot the wall (doc/theory.md 10.2)
+    const auto [n_moved, largest_move] = move_state_onto_wall();
+    if (n_moved > 0)
+      pcout << "  adaptation: the transferred state crossed the wall at "
+            << n_moved << " contact nodes (by up to " << largest_move
+            << "); moved back onto it" << std::endl;
     old_velocity = velocity;
 
     std::tie(stats.kinetic_after_adaptation, stats.elastic_after_adaptation) =

@@ -69,7 +69,7 @@ namespace hemicontact
     StepStatistics stats;
     try
       {
-        stats = advance_interval(time - time_step, time_step, 0);
+        stats = advance_interval(time - time_step, time_step, 0, time_step);
       }
     catch (const SolverFailure &failure)
       {
@@ -91,8 +91,10 @@ namespace hemicontact
   StepStatistics
   ContactProblem<dim>::advance_interval(const double       start,
                                         const double       k,
-                                        const unsigned int depth)
+                                        const unsigned int depth,
+                                        const double       following_k)
   {
+    const double wall_length = scheme.wall_step_length(k, following_k);
     // u_n = u_{n-1} + k w_{n-1} (left-point rule; the implicit rule adds
     // k w_n after the step, StepScheme), then solve for w_n,
     // starting from the linear extrapolation of w_{n-2}, w_{n-1}; the trend
@@ -118,6 +120,10 @@ namespace hemicontact
     // step before's throughout the step, in the static class the last
     // solve's (doc/theory.md, section 9.9)
     const TrilinosWrappers::MPI::Vector  traction_before(contact_traction);
+    // the branches of the last converged state: a failed step's iterates
+    // change them, and the state written after a failure carries its own
+    // (a retry with halved steps starts from the failed iterate's)
+    const std::vector<ContactNode<dim>> nodes_before(contact_nodes);
     const TrilinosWrappers::MPI::Vector *pressure =
       scheme.is_static() ? &contact_traction : &traction_before;
     update_friction_bounds(start + k, pressure);
@@ -126,7 +132,7 @@ namespace hemicontact
     assemble_step_rhs();
     try
       {
-        StepStatistics stats = solve_step();
+        StepStatistics stats = solve_step(wall_length);
         // a bound in the step's own unknown: fixed-point iterations on it
         // (doc/theory.md, sections 9.8 and 9.9)
         const FrictionBound<dim> &bound = *data.friction_bound;
@@ -137,7 +143,7 @@ namespace hemicontact
             [&]() { return update_friction_bounds(start + k, pressure); },
             [&]() {
               recheck_convexity_if_bounds_grew(start + k);
-              return solve_step();
+              return solve_step(wall_length);
             },
             parameters.nonlinear_solver,
             stats);
@@ -153,7 +159,10 @@ namespace hemicontact
         velocity         = old_velocity;
         contact_traction = traction_before;
         if (depth >= parameters.nonlinear_solver.time_step_halvings)
-          throw;
+          {
+            contact_nodes = nodes_before;
+            throw;
+          }
       }
 
     // retry the interval as two steps of k/2 (and so on, recursively)
@@ -163,8 +172,8 @@ namespace hemicontact
     StepStatistics first, second;
     try
       {
-        first  = advance_interval(start, k / 2, depth + 1);
-        second = advance_interval(start + k / 2, k / 2, depth + 1);
+        first  = advance_interval(start, k / 2, depth + 1, k / 2);
+        second = advance_interval(start + k / 2, k / 2, depth + 1, following_k);
       }
     catch (const SolverFailure &)
       {
@@ -358,7 +367,7 @@ namespace hemicontact
 #define HEMICONTACT_INSTANTIATE(dim)                                      \
   template StepStatistics ContactProblem<dim>::advance();                 \
   template StepStatistics ContactProblem<dim>::advance_interval(          \
-    const double, const double, const unsigned int);                      \
+    const double, const double, const unsigned int, const double);        \
   template void ContactProblem<dim>::set_time_step(const double);         \
   template bool ContactProblem<dim>::adapt_mesh_if_due(StepStatistics &,  \
                                                        RunOutput<dim> *); \

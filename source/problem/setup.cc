@@ -362,6 +362,7 @@ namespace hemicontact
                             displacement,
                             "initial displacement");
       }
+    require_admissible_initial_state();
     old_velocity = velocity;
     step_number  = 0;
     // no contact pressure before the first step (doc/theory.md 9.9)
@@ -384,13 +385,13 @@ namespace hemicontact
         velocity = 0;
         try
           {
-            StepStatistics stats = solve_step();
+            StepStatistics stats = solve_step(time_step);
             // no step before w_0 whose pressure a bound in p_nu could read:
             // its own, a fixed point (doc/theory.md, section 9.9)
             if (data.friction_bound->uses_contact_pressure())
               iterate_friction_bound(
                 [&]() { return update_friction_bounds(0.); },
-                [&]() { return solve_step(); },
+                [&]() { return solve_step(time_step); },
                 parameters.nonlinear_solver,
                 stats);
           }

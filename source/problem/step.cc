@@ -47,7 +47,7 @@ namespace hemicontact
 
   template <int dim>
   StepStatistics
-  ContactProblem<dim>::solve_step()
+  ContactProblem<dim>::solve_step(const double wall_length)
   {
     // the wall in the step's unknown (doc/theory.md section 10)
     if (std::isfinite(law->penetration_limit()) && !scheme.is_static())
@@ -56,10 +56,10 @@ namespace hemicontact
                                         locally_relevant_dofs,
                                         mpi_communicator);
         u = displacement;
-        set_wall_limits(contact_nodes, *law, &u, time_step);
+        set_wall_limits(contact_nodes, *law, &u, wall_length);
       }
     else
-      set_wall_limits(contact_nodes, *law, nullptr, time_step);
+      set_wall_limits(contact_nodes, *law, nullptr, wall_length);
     ContactStep<dim>      step({step_matrix,
                                 step_rhs,
                                 base_constraints,
@@ -98,7 +98,7 @@ namespace hemicontact
   }
 
   template StepStatistics
-  ContactProblem<2>::solve_step();
+  ContactProblem<2>::solve_step(const double);
   template StepStatistics
-  ContactProblem<3>::solve_step();
+  ContactProblem<3>::solve_step(const double);
 } // namespace hemicontact

@@ -82,8 +82,14 @@ namespace hemicontact
     double       forcing      = settings.maximum_forcing_term;
     double       previous_res = 0;
     const double load_norm    = problem.load_norm();
-    const double target =
-      settings.tolerance * load_norm + settings.absolute_tolerance;
+    // the tolerance relative to the load, and a floor at the round-off of
+    // R = K0 w - b, relative to the same scale: no absolute constant, so
+    // that scaling every load scales the test (doc/solver.md)
+    const auto target_at = [&](const VectorType &r) {
+      return settings.tolerance * load_norm +
+             settings.roundoff_tolerance *
+               (load_norm + problem.operator_norm(r));
+    };
 
     problem.make_feasible(w);
     problem.residual(w, residual); // then kept up to date by line_search()
@@ -92,6 +98,7 @@ namespace hemicontact
         const unsigned int n_changed =
           problem.update_branches(w, residual, iteration);
         const double res         = problem.nonsmooth_residual(residual);
+        const double target      = target_at(residual);
         report.relative_residual = res / std::max(load_norm, 1e-300);
         if (!std::isfinite(res))
           throw SolverFailure("the nonsmooth residual is not a finite number "

@@ -70,6 +70,9 @@ namespace hemicontact
     double
     load_norm() const override;
 
+    double
+    operator_norm(const VectorType &residual) const override;
+
     unsigned int
     update_branches(const VectorType  &w,
                     const VectorType  &residual,

@@ -213,6 +213,20 @@ namespace hemicontact
       return uses_left_point() ? k : 0.;
     }
 
+    /**
+     * The length over which the solved w_n moves the displacement, which
+     * the wall's limit on w_n divides by (doc/theory.md 10.2): @p k itself
+     * in the implicit rule (u_n = u_{n-1} + k w_n), the length
+     * @p following_k of the interval after the step in the left-point rule
+     * (u_{n+1} = u_n + k_{n+1} w_n); the two differ where a halved interval
+     * ends.
+     */
+    double
+    wall_step_length(const double k, const double following_k) const
+    {
+      return uses_left_point() ? following_k : k;
+    }
+
     /** The terms of the energy identity of one step (doc/theory.md 9.3). */
     struct StepEnergy
     {

@@ -314,9 +314,12 @@ namespace hemicontact
     assemble_step_rhs();
 
     /** @name step.cc */
-    /** Solve the current step by ActiveSetNewton on a ContactStep. */
+    /**
+     * Solve the current step by ActiveSetNewton on a ContactStep; the wall
+     * limits w by (g - u_nu)/@p wall_length (StepScheme::wall_step_length()).
+     */
     StepStatistics
-    solve_step();
+    solve_step(const double wall_length);
 
     /** @name diagnostics.cc */
     void
@@ -339,6 +342,25 @@ namespace hemicontact
      */
     void
     recheck_convexity_if_bounds_grew(const double t);
+
+    /** @name wall_admissibility.cc (doc/theory.md 10.2) */
+    /**
+     * Refuse (InputError) initial data that start beyond the law's wall:
+     * u_0 with u_nu > g at a contact node, or in the left-point rule an
+     * initial velocity that carries a node beyond it in the first step,
+     * u_0 + k w_0. Nothing to check without a wall or in the static class.
+     */
+    void
+    require_admissible_initial_state() const;
+    /**
+     * After a mesh transfer: move the displacement the next step holds,
+     * u + StepScheme::held_displacement_offset(k) w, back onto the wall at
+     * every (unconstrained) contact node beyond it, along the normal.
+     * Returns the number of nodes moved and the largest distance, summed and
+     * maximised over the ranks.
+     */
+    std::pair<unsigned int, double>
+    move_state_onto_wall();
 
     /** @name stability.cc */
     /**
@@ -400,12 +422,15 @@ namespace hemicontact
     time_loop(RunOutput<dim> &output, Checkpointer<dim> &checkpointer);
     /**
      * One interval [start, start + k]: a step of size k, or if Newton
-     * fails (and 'time step halvings' allows) two intervals of k/2.
+     * fails (and 'time step halvings' allows) two intervals of k/2;
+     * @p following_k is the length of the interval after it (the wall's
+     * limit in the left-point rule, StepScheme::wall_step_length()).
      */
     StepStatistics
     advance_interval(const double       start,
                      const double       k,
-                     const unsigned int depth);
+                     const unsigned int depth,
+                     const double       following_k);
     /** Change k and what depends on it (step matrix, AMG). */
     void
     set_time_step(const double k);

@@ -36,6 +36,17 @@ namespace hemicontact
     load_norm() const = 0;
 
     /**
+     * |K0 w| from @p residual = K0 w - b: with |b|, the scale of the
+     * round-off in the residual. 0 by default (a problem whose residual
+     * carries no held offsets).
+     */
+    virtual double
+    operator_norm(const VectorType & /*residual*/) const
+    {
+      return 0;
+    }
+
+    /**
      * Choose every node's branches at (w, residual) for Newton iteration
      * @p iteration of the step (from 0); returns how many nodes changed
      * branch, summed over all ranks.
@@ -96,9 +107,9 @@ namespace hemicontact
     struct Settings
     {
       /** Converged: no branch changed and residual <= tolerance |b| +
-       *  absolute_tolerance (or 100 times below that). */
+       *  roundoff_tolerance (|b| + |K0 w|) (or 100 times below that). */
       double       tolerance           = 1e-8;
-      double       absolute_tolerance  = 1e-14;
+      double       roundoff_tolerance  = 1e-14;
       unsigned int max_iterations      = 50;
       bool         line_search         = true;
       double       minimum_step_length = 1e-3;

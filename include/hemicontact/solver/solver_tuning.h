@@ -13,8 +13,12 @@ namespace hemicontact
   {
     /** @name Newton (ActiveSetNewton) */
     /** @{ */
-    /** Absolute floor of the Newton residual test (unloaded steps). */
-    double absolute_tolerance = 1e-14;
+    /**
+     * The round-off floor of the Newton residual test, relative to
+     * |b| + |K0 w| (doc/solver.md, "When a step has converged"): it scales
+     * with the loads, so a change of units does not change the answer.
+     */
+    double roundoff_tolerance = 1e-14;
     /** Smallest step length the backtracking line search tries. */
     double minimum_step_length = 1e-3;
     /** The projection constant c_i = factor * (K0)_ii / m_i of every node. */

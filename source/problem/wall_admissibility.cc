@@ -1,0 +1,121 @@
+#include <deal.II/base/mpi.h>
+
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/problem/contact_problem.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace hemicontact
+{
+  namespace
+  {
+    /** The normal component of the nodal vector @p v at @p node. */
+    template <int dim>
+    double
+    normal_part(const ContactNode<dim>              &node,
+                const TrilinosWrappers::MPI::Vector &v)
+    {
+      double value = 0;
+      for (unsigned int c = 0; c < dim; ++c)
+        value += v[node.dofs[c]] * node.normal[c];
+      return value;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ContactProblem<dim>::require_admissible_initial_state() const
+  {
+    const double g = law->penetration_limit();
+    if (!std::isfinite(g) || scheme.is_static())
+      return;
+    // the displacement of the first step without a solve: u_0 + k w_0 in
+    // the left-point rule of the dynamic class (the quasistatic w_0 solves
+    // the step problem with the wall)
+    const double k = scheme.has_inertia() ?
+                       scheme.held_displacement_offset(time_step) :
+                       0.;
+    std::string  error;
+    for (const ContactNode<dim> &node : contact_nodes)
+      if (node.locally_owned && error.empty())
+        {
+          const double u_nu = normal_part(node, displacement);
+          const double w_nu = normal_part(node, velocity);
+          // round-off of the nodal values, relative to their own scale
+          const double slack =
+            1e-12 * std::max(std::abs(g), std::abs(u_nu) + k * std::abs(w_nu));
+          std::ostringstream message;
+          message.precision(6);
+          if (u_nu > g + slack)
+            message << "data: the initial displacement starts beyond the "
+                       "wall of the normal law at the contact node "
+                    << node.position << ": u_nu = " << u_nu
+                    << " > g = " << g
+                    << " ('penetration limit'); the law forbids that "
+                       "state. Change 'data/initial displacement' so that "
+                       "u_nu <= g on the contact boundary (doc/theory.md "
+                       "10.2).";
+          else if (u_nu + k * w_nu > g + slack)
+            message << "data: the initial velocity carries the contact node "
+                    << node.position
+                    << " beyond the wall of the normal law in the first "
+                       "step: the left-point rule moves it to u_nu + k w_nu = "
+                    << u_nu + k * w_nu << " > g = " << g
+                    << " ('penetration limit') without a solve (u_1 = u_0 + "
+                       "k w_0). Reduce 'data/initial velocity' or "
+                       "'time/time step' (k = "
+                    << k
+                    << "), or use 'problem/time scheme = implicit', whose "
+                       "first step is bounded by the wall (doc/theory.md "
+                       "10.2).";
+          error = message.str();
+        }
+    for (const std::string &message :
+         Utilities::MPI::all_gather(mpi_communicator, error))
+      if (!message.empty())
+        throw InputError(message);
+  }
+
+  template <int dim>
+  std::pair<unsigned int, double>
+  ContactProblem<dim>::move_state_onto_wall()
+  {
+    const double g = law->penetration_limit();
+    if (!std::isfinite(g) || scheme.is_static())
+      return {0, 0.};
+    const double offset = scheme.held_displacement_offset(time_step);
+    unsigned int n_moved = 0;
+    double       largest = 0;
+    for (const ContactNode<dim> &node : contact_nodes)
+      if (node.locally_owned &&
+          !base_constraints.is_constrained(node.dofs[0]))
+        {
+          const double excess = normal_part(node, displacement) +
+                                offset * normal_part(node, velocity) - g;
+          if (excess > 0)
+            {
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  const double u_c = displacement[node.dofs[c]];
+                  displacement[node.dofs[c]] = u_c - excess * node.normal[c];
+                }
+              ++n_moved;
+              largest = std::max(largest, excess);
+            }
+        }
+    displacement.compress(VectorOperation::insert);
+    base_constraints.distribute(displacement);
+    return {Utilities::MPI::sum(n_moved, mpi_communicator),
+            Utilities::MPI::max(largest, mpi_communicator)};
+  }
+
+  template void
+  ContactProblem<2>::require_admissible_initial_state() const;
+  template void
+  ContactProblem<3>::require_admissible_initial_state() const;
+  template std::pair<unsigned int, double>
+  ContactProblem<2>::move_state_onto_wall();
+  template std::pair<unsigned int, double>
+  ContactProblem<3>::move_state_onto_wall();
+} // namespace hemicontact
