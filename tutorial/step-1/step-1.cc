@@ -20,24 +20,19 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
-
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
-
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
-
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 
@@ -73,26 +68,74 @@ namespace Step1
       const std::vector<std::pair<double, double>> &breakpoints)
       : points(breakpoints)
     {
-      AssertThrow(points.size() >= 1 && points[0].first == 0.,
+      AssertThrow(points[0].first == 0. && points[0].second >= 0,
                   ExcMessage("The first breakpoint must be at r = 0."));
-      for (unsigned int k = 0; k < points.size(); ++k)
+      for (unsigned int k = 0; k + 1 < points.size(); ++k)
         {
-          AssertThrow(points[k].second >= 0,
-                      ExcMessage("The response must not be negative."));
-          AssertThrow(k == 0 || points[k].first > points[k - 1].first,
-                      ExcMessage("The breakpoints must have increasing r."));
+          AssertThrow(points[k + 1].first > points[k].first &&
+                        points[k + 1].second >= 0,
+                      ExcMessage("The breakpoints must have increasing r "
+                                 "and a response >= 0."));
+          // $\alpha_\nu$ is the steepest descent slope; the steepest rise
+          // sets a floor of the complementarity constants (solve()).
+          alpha         = std::max(alpha, -slope(k));
+          steepest_rise = std::max(steepest_rise, slope(k));
         }
     }
 
     // The jump $a$ of the subdifferential at $r = 0$.
-    double jump() const
+    double
+    jump() const
     {
       return points[0].second;
     }
 
-    // The index $k$ of the segment $[r_k, r_{k+1})$ that holds $r > 0$
-    // (the last index beyond the last breakpoint).
-    unsigned int segment(const double r) const
+    // The response $\xi(r)$ for $r > 0$, the remainder $p(r)$ and its
+    // derivative $p'(r)$ (at a breakpoint, the slope to its right).
+    double
+    response(const double r) const
+    {
+      const unsigned int k = segment(r);
+      if (k + 1 == points.size())
+        return points.back().second;
+      return points[k].second + slope(k) * (r - points[k].first);
+    }
+
+    double
+    remainder(const double r) const
+    {
+      return r > 0 ? response(r) - jump() : 0.;
+    }
+
+    double
+    remainder_derivative(const double r) const
+    {
+      const unsigned int k = segment(r);
+      return (r <= 0 || k + 1 == points.size()) ? 0. : slope(k);
+    }
+
+    // The potential $j_\nu(r) = \int_0^r \xi$, exact segment by segment.
+    double
+    potential(const double r) const
+    {
+      double integral = 0;
+      for (unsigned int k = 0; k < points.size() && points[k].first < r; ++k)
+        {
+          const double end =
+            k + 1 < points.size() ? std::min(r, points[k + 1].first) : r;
+          integral +=
+            0.5 * (points[k].second + response(end)) * (end - points[k].first);
+        }
+      return integral;
+    }
+
+    double alpha = 0, steepest_rise = 0;
+
+  private:
+    // The segment $[r_k, r_{k+1})$ that holds $r$ (the last $k$ beyond the
+    // last breakpoint), and its slope.
+    unsigned int
+    segment(const double r) const
     {
       unsigned int k = 0;
       while (k + 1 < points.size() && points[k + 1].first <= r)
@@ -100,70 +143,8 @@ namespace Step1
       return k;
     }
 
-    // The response $\xi(r)$ for $r > 0$.
-    double response(const double r) const
-    {
-      const unsigned int k = segment(r);
-      if (k + 1 == points.size())
-        return points.back().second;
-      const double theta =
-        (r - points[k].first) / (points[k + 1].first - points[k].first);
-      return (1 - theta) * points[k].second + theta * points[k + 1].second;
-    }
-
-    // The remainder $p(r)$ and its derivative $p'(r)$ (the slope of the
-    // segment that starts at $r$ at a breakpoint).
-    double remainder(const double r) const
-    {
-      return r > 0 ? response(r) - jump() : 0.;
-    }
-
-    double remainder_derivative(const double r) const
-    {
-      const unsigned int k = segment(r);
-      if (r <= 0 || k + 1 == points.size())
-        return 0.;
-      return (points[k + 1].second - points[k].second) /
-             (points[k + 1].first - points[k].first);
-    }
-
-    // The potential $j_\nu(r) = \int_0^r \xi$, exact segment by segment.
-    double potential(const double r) const
-    {
-      double integral = 0;
-      for (unsigned int k = 0; k + 1 < points.size() && points[k].first < r;
-           ++k)
-        {
-          const double end = std::min(r, points[k + 1].first);
-          integral += 0.5 * (points[k].second + response(end)) *
-                      (end - points[k].first);
-        }
-      if (r > points.back().first)
-        integral += points.back().second * (r - points.back().first);
-      return integral;
-    }
-
-    // $\alpha_\nu$, the steepest descent slope, and the steepest rise:
-    // the complementarity constant is kept above twice the latter
-    // (doc/theory.md section 10.3).
-    double relaxed_monotonicity_constant() const
-    {
-      double alpha = 0;
-      for (unsigned int k = 0; k + 1 < points.size(); ++k)
-        alpha = std::max(alpha, -slope(k));
-      return alpha;
-    }
-
-    double largest_remainder_slope() const
-    {
-      double largest = 0;
-      for (unsigned int k = 0; k + 1 < points.size(); ++k)
-        largest = std::max(largest, slope(k));
-      return largest;
-    }
-
-  private:
-    double slope(const unsigned int k) const
+    double
+    slope(const unsigned int k) const
     {
       return (points[k + 1].second - points[k].second) /
              (points[k + 1].first - points[k].first);
@@ -202,22 +183,25 @@ namespace Step1
 
     virtual ~ProblemData() = default;
 
-    virtual void make_coarse_grid(Triangulation<dim> &triangulation) const = 0;
+    virtual void
+    make_coarse_grid(Triangulation<dim> &triangulation) const = 0;
 
     // $f_0(x, t)$ and the prescribed traction at $x$ on the boundary
     // with id @p id and outward normal @p normal ($f_2$, or $f_3$ on
     // $\Gamma_3$).
-    virtual Tensor<1, dim> body_force(const Point<dim> &x,
-                                      const double      t) const = 0;
+    virtual Tensor<1, dim>
+    body_force(const Point<dim> &x, const double t) const = 0;
 
-    virtual Tensor<1, dim> traction(const Point<dim>        &x,
-                                    const Tensor<1, dim>    &normal,
-                                    const types::boundary_id id,
-                                    const double             t) const = 0;
+    virtual Tensor<1, dim>
+    traction(const Point<dim>        &x,
+             const Tensor<1, dim>    &normal,
+             const types::boundary_id id,
+             const double             t) const = 0;
 
     // $\sigma = B\varepsilon = 2\mu\varepsilon + \lambda\,\mathrm{tr}
     // (\varepsilon) I$.
-    SymmetricTensor<2, dim> stress(const SymmetricTensor<2, dim> &eps) const
+    SymmetricTensor<2, dim>
+    stress(const SymmetricTensor<2, dim> &eps) const
     {
       return 2 * mu * eps + lambda * trace(eps) * unit_symmetric_tensor<dim>();
     }
@@ -242,21 +226,24 @@ namespace Step1
       : ProblemData<2>(/*mu=*/100, /*lambda=*/150, /*F_b=*/0.6)
     {}
 
-    void make_coarse_grid(Triangulation<2> &triangulation) const override
+    void
+    make_coarse_grid(Triangulation<2> &triangulation) const override
     {
       GridGenerator::subdivided_hyper_rectangle(
         triangulation, {4, 1}, Point<2>(0, 0), Point<2>(4, 1), true);
     }
 
-    Tensor<1, 2> body_force(const Point<2> &, const double) const override
+    Tensor<1, 2>
+    body_force(const Point<2> &, const double) const override
     {
       return Tensor<1, 2>();
     }
 
-    Tensor<1, 2> traction(const Point<2> &x,
-                          const Tensor<1, 2> &,
-                          const types::boundary_id id,
-                          const double             t) const override
+    Tensor<1, 2>
+    traction(const Point<2> &x,
+             const Tensor<1, 2> &,
+             const types::boundary_id id,
+             const double             t) const override
     {
       if (id != 3) // the top; the right side is free
         return Tensor<1, 2>();
@@ -292,26 +279,30 @@ namespace Step1
       : ProblemData<2>(/*mu=*/100, /*lambda=*/150, /*F_b=*/0.6)
     {}
 
-    void make_coarse_grid(Triangulation<2> &triangulation) const override
+    void
+    make_coarse_grid(Triangulation<2> &triangulation) const override
     {
       GridGenerator::subdivided_hyper_rectangle(
         triangulation, {1, 1}, Point<2>(0, 0), Point<2>(1, 1), true);
     }
 
     // $g(z) = z_+^3$ and its first two derivatives.
-    static std::array<double, 3> cube_plus(const double z)
+    static std::array<double, 3>
+    cube_plus(const double z)
     {
       const double zp = std::max(z, 0.);
       return {{zp * zp * zp, 3 * zp * zp, 6 * zp}};
     }
 
     // $a$, $b$ and their derivatives up to the second.
-    static std::array<double, 3> a(const double x)
+    static std::array<double, 3>
+    a(const double x)
     {
       return cube_plus(x - 0.75);
     }
 
-    static std::array<double, 3> b(const double x)
+    static std::array<double, 3>
+    b(const double x)
     {
       const auto g = cube_plus(x - 0.5);
       const auto h = cube_plus(0.25 - x); // h' = -g'(0.25 - x)
@@ -320,28 +311,26 @@ namespace Step1
                2 * g[2] - 8 * (-2 * h[1] + x * h[2])}};
     }
 
-    Tensor<1, 2> exact_value(const Point<2> &p) const
+    Tensor<1, 2>
+    exact_value(const Point<2> &p) const
     {
       const double phi = 1 + p[1];
       return Tensor<1, 2>({phi * a(p[0])[0], -phi * b(p[0])[0]});
     }
 
-    Tensor<2, 2> exact_gradient(const Point<2> &p) const
+    Tensor<2, 2>
+    exact_gradient(const Point<2> &p) const
     {
       const double phi = 1 + p[1];
       const auto   A = a(p[0]), B = b(p[0]);
-      Tensor<2, 2> grad;
-      grad[0][0] = phi * A[1];
-      grad[0][1] = A[0];
-      grad[1][0] = -phi * B[1];
-      grad[1][1] = -B[0];
-      return grad;
+      return Tensor<2, 2>({{phi * A[1], A[0]}, {-phi * B[1], -B[0]}});
     }
 
     // $f_0 = -\mu\Delta u - (\mu+\lambda)\nabla\,\mathrm{div}\,u$, with
     // $\Delta u = (1+y)(a'', -b'')$ and
     // $\nabla\,\mathrm{div}\,u = ((1+y) a'' - b',\; a')$.
-    Tensor<1, 2> body_force(const Point<2> &p, const double) const override
+    Tensor<1, 2>
+    body_force(const Point<2> &p, const double) const override
     {
       const double phi = 1 + p[1];
       const auto   A = a(p[0]), B = b(p[0]);
@@ -350,21 +339,22 @@ namespace Step1
          mu * phi * B[2] - (mu + lambda) * A[1]});
     }
 
-    Tensor<1, 2> traction(const Point<2>          &p,
-                          const Tensor<1, 2>      &normal,
-                          const types::boundary_id id,
-                          const double) const override
+    Tensor<1, 2>
+    traction(const Point<2>          &p,
+             const Tensor<1, 2>      &normal,
+             const types::boundary_id id,
+             const double) const override
     {
       const Tensor<1, 2> sigma_nu =
         stress(symmetrize(exact_gradient(p))) * normal;
       if (id != BoundaryIds::contact)
         return sigma_nu;
-      const double u_nu = exact_value(p) * normal;
-      const double u_tau = exact_value(p)[0]; // the tangent is e_x
-      const double xi_nu =
-        u_nu < 0 ? 0. : u_nu == 0 ? 0.5 * law.jump() : law.response(u_nu);
-      const double xi_tau =
-        u_tau == 0 ? 0.5 * friction_bound : friction_bound;
+      const double u_nu   = exact_value(p) * normal;
+      const double u_tau  = exact_value(p)[0]; // the tangent is e_x
+      const double xi_nu  = u_nu < 0  ? 0. :
+                            u_nu == 0 ? 0.5 * law.jump() :
+                                        law.response(u_nu);
+      const double xi_tau = u_tau == 0 ? 0.5 * friction_bound : friction_bound;
       return sigma_nu + xi_nu * normal + Tensor<1, 2>({xi_tau, 0.});
     }
   };
@@ -397,8 +387,8 @@ namespace Step1
     double                                   mass = 0;
     Tensor<1, dim>                           normal;
     double                                   c = 0;
-    NormalBranch     normal_branch     = NormalBranch::separating;
-    TangentialBranch tangential_branch = TangentialBranch::stick;
+    NormalBranch     normal_branch             = NormalBranch::separating;
+    TangentialBranch tangential_branch         = TangentialBranch::stick;
   };
 
   // @sect3{The StaticContactProblem class}
@@ -416,15 +406,19 @@ namespace Step1
                          const unsigned int      n_refinements);
 
     // Solve at load parameter $t$, starting from the previous solution.
-    void run(const double t);
+    void
+    run(const double t);
 
-    void output_results(const unsigned int load_step) const;
+    void
+    output_results(const unsigned int load_step) const;
 
     // $\|u - u_h\|_{L^2}$ and $\|\varepsilon(u - u_h)\|_{L^2}$.
     template <class Exact>
-    std::pair<double, double> compute_errors(const Exact &exact) const;
+    std::pair<double, double>
+    compute_errors(const Exact &exact) const;
 
-    unsigned int n_dofs() const
+    unsigned int
+    n_dofs() const
     {
       return dof_handler.n_dofs();
     }
@@ -432,21 +426,31 @@ namespace Step1
     unsigned int newton_iterations = 0;
 
   private:
-    void make_grid(const unsigned int n_refinements);
-    void setup_system();
-    void setup_contact_nodes();
-    void assemble_system(const AffineConstraints<double> &constraints,
-                         SparseMatrix<double>            &matrix,
-                         Vector<double>                  &rhs) const;
-    void solve();
+    void
+    make_grid(const unsigned int n_refinements);
+    void
+    setup_system();
+    void
+    setup_contact_nodes();
+    void
+    assemble_system(const AffineConstraints<double> &constraints,
+                    SparseMatrix<double>            &matrix,
+                    Vector<double>                  &rhs) const;
+    void
+    solve();
 
     struct NodeState;
-    NodeState    node_state(const ContactNode<dim> &node,
-                            const Vector<double>   &residual) const;
-    unsigned int update_active_set(const Vector<double> &residual);
-    double       nonsmooth_residual(const Vector<double> &residual) const;
-    void         assemble_newton_system(const Vector<double> &residual);
-    double       energy(const Vector<double> &u) const;
+    NodeState
+    node_state(const ContactNode<dim> &node,
+               const Vector<double>   &residual) const;
+    unsigned int
+    update_active_set(const Vector<double> &residual);
+    double
+    nonsmooth_residual(const Vector<double> &residual) const;
+    void
+    assemble_newton_system(const Vector<double> &residual);
+    double
+    energy(const Vector<double> &u) const;
 
     const ProblemData<dim> &data;
     double                  time = 0; // the load parameter t
@@ -486,7 +490,8 @@ namespace Step1
   // @sect4{StaticContactProblem::make_grid}
 
   template <int dim>
-  void StaticContactProblem<dim>::make_grid(const unsigned int n_refinements)
+  void
+  StaticContactProblem<dim>::make_grid(const unsigned int n_refinements)
   {
     data.make_coarse_grid(triangulation);
     triangulation.refine_global(n_refinements);
@@ -500,7 +505,8 @@ namespace Step1
   // contact constraints of solve() create (they tie the components of one
   // node together).
   template <int dim>
-  void StaticContactProblem<dim>::setup_system()
+  void
+  StaticContactProblem<dim>::setup_system()
   {
     dof_handler.distribute_dofs(fe);
 
@@ -537,11 +543,12 @@ namespace Step1
   // and at least twice the law's steepest rise (doc/theory.md 10.3): it
   // changes the path of the iteration, never its solution.
   template <int dim>
-  void StaticContactProblem<dim>::setup_contact_nodes()
+  void
+  StaticContactProblem<dim>::setup_contact_nodes()
   {
-    Vector<double>      mass(dof_handler.n_dofs()), normal(dof_handler.n_dofs());
-    const QGauss<dim - 1> face_quadrature(2);
-    FEFaceValues<dim>     fe_face_values(fe,
+    Vector<double> mass(dof_handler.n_dofs()), normal(dof_handler.n_dofs());
+    const QGauss<dim - 1>                face_quadrature(2);
+    FEFaceValues<dim>                    fe_face_values(fe,
                                      face_quadrature,
                                      update_values | update_normal_vectors |
                                        update_JxW_values);
@@ -558,7 +565,7 @@ namespace Step1
               for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
                 {
                   const unsigned int c = fe.system_to_component_index(i).first;
-                  const double phi_JxW =
+                  const double       phi_JxW =
                     fe_face_values.shape_value_component(i, q, c) *
                     fe_face_values.JxW(q);
                   mass(dofs[i]) += phi_JxW;
@@ -590,8 +597,8 @@ namespace Step1
                   diagonal += stiffness_matrix.diag_element(node.dofs[c]) / dim;
                 }
               node.normal /= node.normal.norm();
-              node.c = std::max(diagonal / node.mass,
-                                2 * data.law.largest_remainder_slope());
+              node.c =
+                std::max(diagonal / node.mass, 2 * data.law.steepest_rise);
               contact_nodes.push_back(node);
             }
   }
@@ -608,26 +615,27 @@ namespace Step1
   // energy $J$; solve() calls it again with the constraints of each
   // Newton step.
   template <int dim>
-  void StaticContactProblem<dim>::assemble_system(
+  void
+  StaticContactProblem<dim>::assemble_system(
     const AffineConstraints<double> &constraints,
     SparseMatrix<double>            &matrix,
     Vector<double>                  &rhs) const
   {
-    const FEValuesExtractors::Vector displacement(0);
-    const unsigned int               n = fe.n_dofs_per_cell();
-    FEValues<dim>      fe_values(fe,
+    const FEValuesExtractors::Vector     displacement(0);
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    FEValues<dim>                        fe_values(fe,
                             QGauss<dim>(2),
                             update_gradients | update_JxW_values);
-    FEValues<dim>      fe_load(fe,
+    FEValues<dim>                        fe_load(fe,
                           QGauss<dim>(3),
                           update_values | update_quadrature_points |
                             update_JxW_values);
-    FEFaceValues<dim>  fe_face(fe,
+    FEFaceValues<dim>                    fe_face(fe,
                               QGauss<dim - 1>(3),
                               update_values | update_quadrature_points |
                                 update_normal_vectors | update_JxW_values);
-    FullMatrix<double> cell_matrix(n, n);
-    Vector<double>     cell_rhs(n);
+    FullMatrix<double>                   cell_matrix(n, n);
+    Vector<double>                       cell_rhs(n);
     std::vector<types::global_dof_index> dofs(n);
 
     matrix = 0;
@@ -658,7 +666,8 @@ namespace Step1
                 f0 * fe_load[displacement].value(i, q) * fe_load.JxW(q);
           }
         for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() && face->boundary_id() != BoundaryIds::clamped)
+          if (face->at_boundary() &&
+              face->boundary_id() != BoundaryIds::clamped)
             {
               fe_face.reinit(cell, face);
               for (const unsigned int q : fe_face.quadrature_point_indices())
@@ -733,7 +742,8 @@ namespace Step1
 
   // The projection onto the friction disk $|\lambda| \le F_b$.
   template <int dim>
-  Tensor<1, dim> project_on_disk(const Tensor<1, dim> &q, const double F_b)
+  Tensor<1, dim>
+  project_on_disk(const Tensor<1, dim> &q, const double F_b)
   {
     return q.norm() <= F_b ? q : F_b / q.norm() * q;
   }
@@ -751,11 +761,11 @@ namespace Step1
     unsigned int n_changed = 0;
     for (ContactNode<dim> &node : contact_nodes)
       {
-        const NodeState    m = node_state(node, residual);
-        const NormalBranch nb =
-          m.q_nu < 0 ? NormalBranch::separating :
-          m.q_nu <= data.law.jump() ? NormalBranch::stick :
-                                      NormalBranch::penetrating;
+        const NodeState        m  = node_state(node, residual);
+        const NormalBranch     nb = m.q_nu < 0 ? NormalBranch::separating :
+                                    m.q_nu <= data.law.jump() ?
+                                                 NormalBranch::stick :
+                                                 NormalBranch::penetrating;
         const TangentialBranch tb = m.q_tau.norm() <= data.friction_bound ?
                                       TangentialBranch::stick :
                                       TangentialBranch::slip;
@@ -771,7 +781,8 @@ namespace Step1
   // that are not at contact nodes, plus the complementarity functions at
   // the contact nodes, weighted by $m_i$ to be forces too.
   template <int dim>
-  double StaticContactProblem<dim>::nonsmooth_residual(
+  double
+  StaticContactProblem<dim>::nonsmooth_residual(
     const Vector<double> &residual) const
   {
     Vector<double> free_part(residual);
@@ -815,7 +826,8 @@ namespace Step1
   // AffineConstraints eliminates them while assembling, as step-41 does
   // for its active set.
   template <int dim>
-  void StaticContactProblem<dim>::assemble_newton_system(
+  void
+  StaticContactProblem<dim>::assemble_newton_system(
     const Vector<double> &residual)
   {
     newton_constraints.clear();
@@ -825,8 +837,9 @@ namespace Step1
                                              newton_constraints);
     for (const ContactNode<dim> &node : contact_nodes)
       {
-        const bool normal_held  = node.normal_branch == NormalBranch::stick;
-        const bool tangent_held = node.tangential_branch == TangentialBranch::stick;
+        const bool normal_held = node.normal_branch == NormalBranch::stick;
+        const bool tangent_held =
+          node.tangential_branch == TangentialBranch::stick;
         unsigned int k = 0;
         for (unsigned int c = 1; c < dim; ++c)
           if (std::abs(node.normal[c]) > std::abs(node.normal[k]))
@@ -870,16 +883,17 @@ namespace Step1
         Tensor<1, dim>       f;
         if (node.normal_branch == NormalBranch::penetrating)
           {
-            f += node.mass * (data.law.jump() + data.law.remainder(m.u_nu)) * nu;
+            f +=
+              node.mass * (data.law.jump() + data.law.remainder(m.u_nu)) * nu;
             L += node.mass * data.law.remainder_derivative(m.u_nu) *
                  outer_product(nu, nu);
           }
         if (node.tangential_branch == TangentialBranch::slip)
           {
-            const double         F_b = data.friction_bound;
-            const double         qn  = m.q_tau.norm();
-            const Tensor<1, dim> d   = m.q_tau / qn;
-            const double excess = std::max(qn - F_b, 1e-2 * qn);
+            const double         F_b    = data.friction_bound;
+            const double         qn     = m.q_tau.norm();
+            const Tensor<1, dim> d      = m.q_tau / qn;
+            const double         excess = std::max(qn - F_b, 1e-2 * qn);
             const Tensor<2, dim> tangent =
               node.mass * F_b * node.c / excess *
               (unit_symmetric_tensor<dim>() - outer_product(nu, nu) -
@@ -908,7 +922,8 @@ namespace Step1
   // $J(u) = \frac12 u\cdot K u - F_n\cdot u + \sum_i m_i [j_\nu(u_{i,\nu})
   // + F_b |u_{i,\tau}|]$, the function the line search decreases.
   template <int dim>
-  double StaticContactProblem<dim>::energy(const Vector<double> &u) const
+  double
+  StaticContactProblem<dim>::energy(const Vector<double> &u) const
   {
     double J = 0.5 * stiffness_matrix.matrix_norm_square(u) - load * u;
     for (const ContactNode<dim> &node : contact_nodes)
@@ -917,8 +932,9 @@ namespace Step1
         for (unsigned int c = 0; c < dim; ++c)
           v[c] = u(node.dofs[c]);
         const double u_nu = v * node.normal;
-        J += node.mass * (data.law.potential(u_nu) +
-                          data.friction_bound * (v - u_nu * node.normal).norm());
+        J +=
+          node.mass * (data.law.potential(u_nu) +
+                       data.friction_bound * (v - u_nu * node.normal).norm());
       }
     return J;
   }
@@ -931,7 +947,8 @@ namespace Step1
   // system on the current branches with a direct solver and take the
   // step, halved while it does not decrease $J$.
   template <int dim>
-  void StaticContactProblem<dim>::solve()
+  void
+  StaticContactProblem<dim>::solve()
   {
     const double   tolerance = 1e-11 * load.l2_norm();
     Vector<double> residual(dof_handler.n_dofs());
@@ -977,7 +994,8 @@ namespace Step1
   // One load value: assemble the load at $t$, solve, and print a line
   // with the branches.
   template <int dim>
-  void StaticContactProblem<dim>::run(const double t)
+  void
+  StaticContactProblem<dim>::run(const double t)
   {
     time = t;
     assemble_system(clamped_constraints, stiffness_matrix, load);
@@ -1022,10 +1040,9 @@ namespace Step1
     for (const ContactNode<dim> &node : contact_nodes)
       {
         const NodeState m = node_state(node, residual);
-        csv << std::setprecision(10) << node.position[0] << ',' << m.u_nu
-            << ',' << m.u_tau[0] << ','
-            << m.s + data.law.remainder(m.u_nu) << ',' << m.lambda[0] << ','
-            << static_cast<int>(node.normal_branch) << ','
+        csv << std::setprecision(10) << node.position[0] << ',' << m.u_nu << ','
+            << m.u_tau[0] << ',' << m.s + data.law.remainder(m.u_nu) << ','
+            << m.lambda[0] << ',' << static_cast<int>(node.normal_branch) << ','
             << static_cast<int>(node.tangential_branch) << '\n';
         ++n_normal[static_cast<int>(node.normal_branch)];
         ++n_tangential[static_cast<int>(node.tangential_branch)];
@@ -1048,8 +1065,8 @@ namespace Step1
           }
     std::fclose(nodal);
 
-    std::cout << "t = " << std::fixed << std::setprecision(2) << time
-              << ": " << newton_iterations
+    std::cout << "t = " << std::fixed << std::setprecision(2) << time << ": "
+              << newton_iterations
               << " Newton iterations, normal separating/stick/penetrating "
               << n_normal[0] << '/' << n_normal[1] << '/' << n_normal[2]
               << ", tangential stick/slip " << n_tangential[0] << '/'
@@ -1100,17 +1117,18 @@ namespace Step1
 // static problem started from the previous solution; then the
 // manufactured solution on the meshes $h = 1/4, \dots, 1/64$, with the
 // errors and their observed orders in a ConvergenceTable.
-int main()
+int
+main()
 {
   try
     {
       using namespace Step1;
 
       std::cout << "The block, 3 global refinements:" << std::endl;
-      const BlockData          block;
+      const BlockData         block;
       StaticContactProblem<2> block_problem(block, 3);
-      std::cout << "  " << block_problem.n_dofs() << " dofs, alpha_nu = "
-                << block.law.relaxed_monotonicity_constant() << std::endl;
+      std::cout << "  " << block_problem.n_dofs()
+                << " dofs, alpha_nu = " << block.law.alpha << std::endl;
       for (unsigned int n = 1; n <= 4; ++n)
         {
           block_problem.run(0.25 * n);
@@ -1144,14 +1162,7 @@ int main()
     }
   catch (std::exception &exc)
     {
-      std::cerr << std::endl
-                << "----------------------------------------------------"
-                << std::endl
-                << "Exception on processing: " << std::endl
-                << exc.what() << std::endl
-                << "Aborting!" << std::endl
-                << "----------------------------------------------------"
-                << std::endl;
+      std::cerr << "\nException: " << exc.what() << "\nAborting!" << std::endl;
       return 1;
     }
   return 0;
