@@ -48,7 +48,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -83,8 +85,7 @@ namespace Step2
       Tensor<1, dim> result;
       for (unsigned int c = 0; c < dim; ++c)
         for (unsigned int j = 0; j < dim; ++j)
-          result[c] += mu * hessian[c][j][j] +
-                       (mu + lambda) * hessian[j][j][c];
+          result[c] += mu * hessian[c][j][j] + (mu + lambda) * hessian[j][j][c];
       return result;
     }
   };
@@ -139,11 +140,9 @@ namespace Step2
   // @sect3{The problem data}
   //
   // Everything that defines one problem: the rectangle and its boundary
-  // parts, the material, the laws, the final time, the loads and the
-  // initial values. Two problems derive from it: the block of the full
-  // program's example (prm/block_2d.prm) and the manufactured solution of
-  // the convergence study. The loads take the outward normal, since a
-  // manufactured traction sigma nu needs it.
+  // parts, the material, the laws, the final time, the loads (the
+  // tractions take the outward normal: a manufactured traction is sigma nu),
+  // the initial values and, where one is known, the exact solution.
   template <int dim>
   struct ExactValues
   {
@@ -152,10 +151,11 @@ namespace Step2
   };
 
   template <int dim>
-  class ProblemData
+  struct ProblemData
   {
-  public:
-    virtual ~ProblemData() = default;
+    using Field    = std::function<Tensor<1, dim>(const Point<dim> &, double)>;
+    using Traction = std::function<
+      Tensor<1, dim>(const Point<dim> &, const Tensor<1, dim> &, double)>;
 
     Point<dim>                   lower_left, upper_right;
     std::vector<unsigned int>    subdivisions;
@@ -165,177 +165,130 @@ namespace Step2
     double                       friction_bound;
     double                       end_time;
 
-    // f0 in Omega
-    virtual Tensor<1, dim>
-    body_force(const Point<dim> &, const double) const
-    {
-      return {};
-    }
-    // f2 on Gamma_2
-    virtual Tensor<1, dim>
-    surface_traction(const Point<dim> &, const Tensor<1, dim> &, double) const
-    {
-      return {};
-    }
-    // a given traction on Gamma_3 (only manufactured solutions have one)
-    virtual Tensor<1, dim>
-    contact_traction(const Point<dim> &, const Tensor<1, dim> &, double) const
-    {
-      return {};
-    }
-    virtual Tensor<1, dim>
-    initial_displacement(const Point<dim> &) const
-    {
-      return {};
-    }
-    virtual Tensor<1, dim>
-    initial_velocity(const Point<dim> &) const
-    {
-      return {};
-    }
-    // The exact solution, where one is known.
-    virtual bool
-    has_exact_solution() const
-    {
-      return false;
-    }
-    virtual ExactValues<dim>
-    exact(const Point<dim> &, const double) const
-    {
-      AssertThrow(false, ExcMessage("This problem has no exact solution."));
-      return {};
-    }
+    Field body_force = [](const Point<dim> &, double) {
+      return Tensor<1, dim>();
+    };                         // f0
+    Traction surface_traction; // f2 on Gamma_2
+    Traction contact_traction     = [](const Point<dim> &,
+                                   const Tensor<1, dim> &,
+                                   double) { return Tensor<1, dim>(); };
+    Field    initial_displacement = body_force; // zero
+    Field    initial_velocity     = body_force; // zero
+    std::function<ExactValues<dim>(const Point<dim> &, double)> exact;
   };
 
-  // The block [0,4]x[0,1] of prm/block_2d.prm: clamped on the left (id 0),
-  // pressed and sheared on its top (id 3), in contact with the foundation
-  // at its bottom (id 2). Its boundary sees every branch of the laws
-  // during 0 <= t <= 1: separation, normal stick, damped penetration,
-  // tangential stick and slip.
-  class BlockData : public ProblemData<2>
+  // The block [0,4]x[0,1] of the full program's prm/block_2d.prm: clamped
+  // on the left (id 0), pressed and sheared on its top (id 3), in contact
+  // with the foundation at its bottom (id 2). Its boundary sees every
+  // branch of the laws during 0 <= t <= 1: separation, normal stick,
+  // damped penetration, tangential stick and slip.
+  ProblemData<2>
+  block_problem()
   {
-  public:
-    BlockData()
-    {
-      lower_left   = Point<2>(0, 0);
-      upper_right  = Point<2>(4, 1);
-      subdivisions = {4, 1};
-      clamped_ids  = {0};
-      traction_ids = {3};
-      contact_ids  = {2};
-      const double E = 100, nu = 0.3;
-      material       = {1., {1., 1.}, {E / (2 * (1 + nu)),
-                                      E * nu / ((1 + nu) * (1 - 2 * nu))}};
-      normal_law     = {1., 0.5, 10.};
-      friction_bound = 0.6;
-      end_time       = 1;
-    }
-
-    // Pressure rising to the right, then a lift; shear growing in time.
-    Tensor<1, 2>
-    surface_traction(const Point<2> &p,
-                     const Tensor<1, 2> &,
-                     const double t) const override
-    {
-      const double P = 3, S = 2;
-      return Tensor<1, 2>({S * std::sin(numbers::PI * t) * p[0] / 4,
-                           -P * std::sin(2 * numbers::PI * t) *
-                             (0.25 + p[0] / 4)});
-    }
-  };
+    ProblemData<2> data;
+    data.lower_left   = Point<2>(0, 0);
+    data.upper_right  = Point<2>(4, 1);
+    data.subdivisions = {4, 1};
+    data.clamped_ids  = {0};
+    data.traction_ids = {3};
+    data.contact_ids  = {2};
+    const double E = 100, nu = 0.3; // Young's modulus, Poisson's ratio
+    data.material       = {1.,
+                           {1., 1.},
+                           {E / (2 * (1 + nu)), E * nu / ((1 + nu) * (1 - 2 * nu))}};
+    data.normal_law     = {1., 0.5, 10.};
+    data.friction_bound = 0.6;
+    data.end_time       = 1;
+    // pressure rising to the right, then a lift; shear growing in time
+    data.surface_traction =
+      [](const Point<2> &p, const Tensor<1, 2> &, const double t) {
+        const double P = 3, S = 2;
+        return Tensor<1, 2>(
+          {S * std::sin(numbers::PI * t) * p[0] / 4,
+           -P * std::sin(2 * numbers::PI * t) * (0.25 + p[0] / 4)});
+      };
+    return data;
+  }
 
   // @sect3{The manufactured solution}
   //
-  // The exact displacement of prm/verification/mms_2d_quad_exponential.prm:
-  // on [0,1]^2, clamped on top (id 3), traction on the sides (ids 0, 1),
-  // contact at the bottom (id 2, nu = -e_y),
+  // The exact displacement of prm/verification/mms_2d_quad_exponential.prm,
   //
   //   u(x, t) = sin(t) phi_1(x) + t^2 phi_2(x),
   //   phi_1 = (1 - y) A (pos(x - 0.4)^3, pos(0.3 - x)^3 - pos(x - 0.7)^3),
-  //   phi_2 = 0.2 y (1 - y) (sin(pi x), cos(pi x)),
+  //   phi_2 = 0.2 y (1 - y) (sin(pi x), cos(pi x)),   A = 4,
   //
-  // so that along the bottom w_tau = 0 (stick) for x < 0.4 and slips
-  // beyond, and w_nu < 0 (separating) for x < 0.3, w_nu = 0 (normal stick)
-  // on [0.3, 0.7] and w_nu > 0 (damped) for x > 0.7. Both phi_k are given
-  // with their gradient and Hessian, the time factors with two derivatives.
+  // on [0,1]^2 (clamped on top, contact at the bottom, nu = -e_y): along
+  // the bottom w_tau = 0 (stick) for x < 0.4 and slips beyond; w_nu < 0
+  // (separating) for x < 0.3, w_nu = 0 (normal stick) on [0.3, 0.7] and
+  // w_nu > 0 (damped) for x > 0.7. Each phi_k = Y(y) X(x) is given with
+  // its gradient and Hessian (hessian[c][i][j] = d_i d_j phi_c), each time
+  // factor with two derivatives.
+  void
+  shape(const unsigned int k,
+        const Point<2>    &p,
+        Tensor<1, 2>      &value,
+        Tensor<2, 2>      &gradient,
+        Tensor<3, 2>      &hessian)
+  {
+    const double x = p[0], y = p[1], A = 4, pi = numbers::PI;
+    const auto   pos = [](const double s) { return std::max(s, 0.); };
+    std::array<std::array<double, 3>, 2> X; // X_c, X_c', X_c''
+    std::array<double, 3>                Y; // Y, Y', Y''
+    if (k == 0)
+      {
+        const double r = pos(x - 0.4), l = pos(0.3 - x), q = pos(x - 0.7);
+        X[0] = {{A * r * r * r, 3 * A * r * r, 6 * A * r}};
+        X[1] = {{A * (l * l * l - q * q * q),
+                 -3 * A * (l * l + q * q),
+                 6 * A * (l - q)}};
+        Y    = {{1 - y, -1., 0.}};
+      }
+    else
+      {
+        X[0] = {{std::sin(pi * x),
+                 pi * std::cos(pi * x),
+                 -pi * pi * std::sin(pi * x)}};
+        X[1] = {{std::cos(pi * x),
+                 -pi * std::sin(pi * x),
+                 -pi * pi * std::cos(pi * x)}};
+        Y    = {{0.2 * y * (1 - y), 0.2 * (1 - 2 * y), -0.4}};
+      }
+    for (unsigned int c = 0; c < 2; ++c)
+      {
+        value[c]         = Y[0] * X[c][0];
+        gradient[c][0]   = Y[0] * X[c][1];
+        gradient[c][1]   = Y[1] * X[c][0];
+        hessian[c][0][0] = Y[0] * X[c][2];
+        hessian[c][0][1] = hessian[c][1][0] = Y[1] * X[c][1];
+        hessian[c][1][1]                    = Y[2] * X[c][0];
+      }
+  }
+
   // The data follow from the equations (doc/theory.md section 4):
   // f0 = rho w' - Div sigma, f2 = sigma nu on Gamma_2 and
   // f3 = sigma nu + xi_nu nu + xi_tau on Gamma_3, with xi_nu in dj_nu(w_nu)
-  // and xi_tau in d(F_b|.|)(w_tau), the given multipliers 0.5 (in [0, a])
+  // and xi_tau in d(F_b|.|)(w_tau): the given multipliers 0.5 (in [0, a])
   // and (F_b/2, 0) (in the disk) where w_nu = 0 and w_tau = 0.
-  class ManufacturedData : public ProblemData<2>
+  ProblemData<2>
+  manufactured_problem()
   {
-  public:
-    ManufacturedData()
-    {
-      lower_left   = Point<2>(0, 0);
-      upper_right  = Point<2>(1, 1);
-      subdivisions = {1, 1};
-      clamped_ids  = {3};
-      traction_ids = {0, 1};
-      contact_ids  = {2};
-      material     = {1., {1., 1.}, {2., 1.}};
-      normal_law   = {1., 0.5, 2.};
-      friction_bound = 0.5;
-      end_time       = 1;
-    }
+    ProblemData<2> data;
+    data.lower_left     = Point<2>(0, 0);
+    data.upper_right    = Point<2>(1, 1);
+    data.subdivisions   = {1, 1};
+    data.clamped_ids    = {3};
+    data.traction_ids   = {0, 1};
+    data.contact_ids    = {2};
+    data.material       = {1., {1., 1.}, {2., 1.}};
+    data.normal_law     = {1., 0.5, 2.};
+    data.friction_bound = 0.5;
+    data.end_time       = 1;
 
-    Tensor<1, 2>
-    body_force(const Point<2> &p, const double t) const override
-    {
-      const ExactValues<2> e = exact(p, t);
-      return material.density * e.w_dot - e.div_sigma;
-    }
-    Tensor<1, 2>
-    surface_traction(const Point<2>     &p,
-                     const Tensor<1, 2> &normal,
-                     const double        t) const override
-    {
-      return stress(exact(p, t)) * normal;
-    }
-    Tensor<1, 2>
-    contact_traction(const Point<2>     &p,
-                     const Tensor<1, 2> &normal,
-                     const double        t) const override
-    {
-      const ExactValues<2> e     = exact(p, t);
-      const double         w_nu  = e.w * normal;
-      const Tensor<1, 2>   w_tau = e.w - w_nu * normal;
-      const double         zero  = 1e-13 * (1 + e.w.norm());
-      const double         xi_nu =
-        std::abs(w_nu) <= zero ? 0.5 : w_nu < 0 ? 0. : normal_law.response(w_nu);
-      Tensor<1, 2> xi_tau;
-      if (w_tau.norm() <= zero)
-        {
-          xi_tau = Tensor<1, 2>({friction_bound / 2, 0.});
-          xi_tau -= (xi_tau * normal) * normal;
-        }
-      else
-        xi_tau = friction_bound * w_tau / w_tau.norm();
-      return stress(e) * normal + xi_nu * normal + xi_tau;
-    }
-    Tensor<1, 2>
-    initial_displacement(const Point<2> &p) const override
-    {
-      return exact(p, 0).u;
-    }
-    Tensor<1, 2>
-    initial_velocity(const Point<2> &p) const override
-    {
-      return exact(p, 0).w;
-    }
-    bool
-    has_exact_solution() const override
-    {
-      return true;
-    }
-
-    ExactValues<2>
-    exact(const Point<2> &p, const double t) const override
-    {
-      // the time factors sin t and t^2 with their first two derivatives
-      const std::array<std::array<double, 3>, 2> time = {
-        {{{std::sin(t), std::cos(t), -std::sin(t)}}, {{t * t, 2 * t, 2.}}}};
+    const Material material = data.material;
+    data.exact              = [material](const Point<2> &p, const double t) {
+      const double   time[2][3] = {{std::sin(t), std::cos(t), -std::sin(t)},
+                                   {t * t, 2 * t, 2.}};
       ExactValues<2> e;
       Tensor<3, 2>   hessian_u, hessian_w;
       for (unsigned int k = 0; k < 2; ++k)
@@ -355,61 +308,46 @@ namespace Step2
       e.div_sigma = material.viscosity.stress_divergence(hessian_w) +
                     material.elasticity.stress_divergence(hessian_u);
       return e;
-    }
-
-  private:
-    SymmetricTensor<2, 2>
-    stress(const ExactValues<2> &e) const
-    {
+    };
+    const auto exact  = data.exact;
+    const auto stress = [material](const ExactValues<2> &e) {
       return material.viscosity.stress(symmetrize(e.grad_w)) +
              material.elasticity.stress(symmetrize(e.grad_u));
-    }
-
-    // phi_k(x, y) = Y(y) X(x) (componentwise X), with its gradient
-    // gradient[c][i] = d_i phi_c and Hessian hessian[c][i][j].
-    static void
-    shape(const unsigned int k,
-          const Point<2>    &p,
-          Tensor<1, 2>      &value,
-          Tensor<2, 2>      &gradient,
-          Tensor<3, 2>      &hessian)
-    {
-      const double x = p[0], y = p[1], A = 4, pi = numbers::PI;
-      const auto   pos = [](const double s) { return std::max(s, 0.); };
-      // X_c and its derivatives X_c', X_c''
-      std::array<std::array<double, 3>, 2> X;
-      // Y and its derivatives Y', Y''
-      std::array<double, 3> Y;
-      if (k == 0)
-        {
-          const double r = pos(x - 0.4), l = pos(0.3 - x), q = pos(x - 0.7);
-          X[0] = {{A * r * r * r, 3 * A * r * r, 6 * A * r}};
-          X[1] = {{A * (l * l * l - q * q * q),
-                   -3 * A * (l * l + q * q),
-                   6 * A * (l - q)}};
-          Y    = {{1 - y, -1., 0.}};
-        }
-      else
-        {
-          X[0] = {{std::sin(pi * x),
-                   pi * std::cos(pi * x),
-                   -pi * pi * std::sin(pi * x)}};
-          X[1] = {{std::cos(pi * x),
-                   -pi * std::sin(pi * x),
-                   -pi * pi * std::cos(pi * x)}};
-          Y    = {{0.2 * y * (1 - y), 0.2 * (1 - 2 * y), -0.4}};
-        }
-      for (unsigned int c = 0; c < 2; ++c)
-        {
-          value[c]         = Y[0] * X[c][0];
-          gradient[c][0]   = Y[0] * X[c][1];
-          gradient[c][1]   = Y[1] * X[c][0];
-          hessian[c][0][0] = Y[0] * X[c][2];
-          hessian[c][0][1] = hessian[c][1][0] = Y[1] * X[c][1];
-          hessian[c][1][1]                    = Y[2] * X[c][0];
-        }
-    }
-  };
+    };
+    data.body_force = [=](const Point<2> &p, const double t) {
+      const ExactValues<2> e = exact(p, t);
+      return material.density * e.w_dot - e.div_sigma;
+    };
+    data.surface_traction =
+      [=](const Point<2> &p, const Tensor<1, 2> &normal, const double t) {
+        return stress(exact(p, t)) * normal;
+      };
+    const ExponentialLaw law = data.normal_law;
+    const double         F_b = data.friction_bound;
+    data.contact_traction =
+      [=](const Point<2> &p, const Tensor<1, 2> &normal, const double t) {
+        const ExactValues<2> e     = exact(p, t);
+        const double         w_nu  = e.w * normal;
+        const Tensor<1, 2>   w_tau = e.w - w_nu * normal;
+        const double         zero  = 1e-13 * (1 + e.w.norm());
+        const double         xi_nu = std::abs(w_nu) <= zero ? 0.5 :
+                                     w_nu < 0               ? 0. :
+                                                              law.response(w_nu);
+        Tensor<1, 2>         xi_tau({F_b / 2, 0.});
+        if (w_tau.norm() <= zero)
+          xi_tau -= (xi_tau * normal) * normal;
+        else
+          xi_tau = F_b * w_tau / w_tau.norm();
+        return stress(e) * normal + xi_nu * normal + xi_tau;
+      };
+    data.initial_displacement = [=](const Point<2> &p, double) {
+      return exact(p, 0).u;
+    };
+    data.initial_velocity = [=](const Point<2> &p, double) {
+      return exact(p, 0).w;
+    };
+    return data;
+  }
 
   // @sect3{Contact nodes and their branches}
   //
@@ -430,25 +368,18 @@ namespace Step2
     damped
   };
 
+  // The state at an iterate: w split into w_nu and w_tau, and the
+  // multipliers of the laws' convex parts from the nodal contact force
+  // G_i = -(K0 w - b)_i: s = G.nu/m_i - p(w_nu), lambda = G_tau/m_i.
   template <int dim>
   struct ContactNode
   {
     std::array<types::global_dof_index, dim> dofs;
-    Point<dim>                               position;
     Tensor<1, dim>                           normal;
-    double                                   mass = 0;
-    double                                   c    = 1;
-    NormalBranch normal_branch = NormalBranch::separating;
-    bool         slips         = false;
-  };
-
-  // The state of a node at an iterate: w split into w_nu and w_tau, and the
-  // multipliers of the laws' convex parts from the nodal contact force
-  // G_i = -(K0 w - b)_i: s = G.nu/m - p(w_nu), lambda = G_tau/m.
-  template <int dim>
-  struct NodeState
-  {
-    double         w_nu, s;
+    double                                   mass = 0, c = 1;
+    NormalBranch   normal_branch = NormalBranch::separating;
+    bool           slips         = false;
+    double         w_nu = 0, s = 0;
     Tensor<1, dim> w_tau, lambda;
   };
 
@@ -473,7 +404,7 @@ namespace Step2
 
     // E_H = max_n |w(t_n) - w_n|_L2, E_V = (k sum_n |eps(w(t_n) - w_n)|^2)^1/2,
     // E_u = max_n |eps(u(t_n) - u_n)|_L2 over n = 1..N.
-    double E_H = 0, E_V = 0, E_u = 0;
+    double       E_H = 0, E_V = 0, E_u = 0;
     double       mesh_size = 0;
     unsigned int n_dofs = 0, n_steps = 0, newton_iterations = 0;
 
@@ -494,17 +425,12 @@ namespace Step2
     accumulate_errors(const double time);
 
     // pieces of solve()
-    NodeState<dim>
-    node_state(const ContactNode<dim> &node) const;
     unsigned int
     update_branches(const unsigned int iteration);
     double
     nonsmooth_residual() const;
     void
     solve_linearized(Vector<double> &trial);
-    double
-    step_energy_change(const Vector<double> &direction,
-                       const double          theta) const;
     double
     nodal_energy(const Vector<double> &v) const;
 
@@ -531,7 +457,6 @@ namespace Step2
     Vector<double> residual;     // K0 w - b
 
     std::vector<ContactNode<dim>> contact_nodes;
-    std::vector<NodeState<dim>>   node_states;
 
     // Newton converges when no branch changes and the nonsmooth residual is
     // below tolerance |b| (plus a tiny absolute floor).
@@ -562,8 +487,11 @@ namespace Step2
   void
   KelvinVoigtContact<dim>::make_grid()
   {
-    GridGenerator::subdivided_hyper_rectangle(
-      triangulation, data.subdivisions, data.lower_left, data.upper_right, true);
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              data.subdivisions,
+                                              data.lower_left,
+                                              data.upper_right,
+                                              true);
     triangulation.refine_global(refinements);
     for (const auto &cell : triangulation.active_cell_iterators())
       mesh_size = std::max(mesh_size, cell->diameter());
@@ -585,12 +513,16 @@ namespace Step2
     for (const types::boundary_id id : data.clamped_ids)
       VectorTools::interpolate_boundary_values(dof_handler,
                                                id,
-                                               Functions::ZeroFunction<dim>(dim),
+                                               Functions::ZeroFunction<dim>(
+                                                 dim),
                                                clamped_constraints);
     clamped_constraints.close();
 
     DynamicSparsityPattern dsp(n_dofs);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, clamped_constraints, true);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    dsp,
+                                    clamped_constraints,
+                                    true);
     sparsity_pattern.copy_from(dsp);
     for (SparseMatrix<double> *m :
          {&mass_matrix, &elastic_matrix, &step_matrix, &newton_matrix})
@@ -603,20 +535,15 @@ namespace Step2
   // @sect4{KelvinVoigtContact::assemble_system}
   //
   // The matrices that do not change in time: rho M, A, B (two-point Gauss,
-  // exact for Q1 on rectangles) and K0 = rho/k M + A. Then the contact
-  // nodes: the nodal weight m_i = int_{Gamma_3} phi_i and the nodal normal
-  // (the weighted mean of the face normals, normalised) of every vertex of
-  // Gamma_3 that is not clamped, and c_i = (mean diagonal of K0 at the
-  // node)/m_i.
+  // exact for Q1 on rectangles) and K0 = rho/k M + A; then the contact
+  // nodes.
   template <int dim>
   void
   KelvinVoigtContact<dim>::assemble_system()
   {
-    const QGauss<dim>  quadrature(2);
-    FEValues<dim>      fe_values(fe,
-                            quadrature,
-                            update_values | update_gradients |
-                              update_JxW_values);
+    const QGauss<dim> quadrature(2);
+    FEValues<dim>     fe_values(
+      fe, quadrature, update_values | update_gradients | update_JxW_values);
     const unsigned int n = fe.n_dofs_per_cell();
     FullMatrix<double> cell_mass(n, n), cell_viscous(n, n), cell_elastic(n, n);
     std::vector<types::global_dof_index> dofs(n);
@@ -641,10 +568,9 @@ namespace Step2
               for (unsigned int j = 0; j < n; ++j)
                 {
                   const double JxW = fe_values.JxW(q);
-                  cell_mass(i, j) += material.density *
-                                     (fe_values[v].value(i, q) *
-                                      fe_values[v].value(j, q)) *
-                                     JxW;
+                  cell_mass(i, j) +=
+                    material.density *
+                    (fe_values[v].value(i, q) * fe_values[v].value(j, q)) * JxW;
                   cell_viscous(i, j) +=
                     (a_i * fe_values[v].symmetric_gradient(j, q)) * JxW;
                   cell_elastic(i, j) +=
@@ -664,57 +590,38 @@ namespace Step2
                                                        step_matrix);
       }
 
-    // The contact nodes. The lumped weights m_i and the nodal normals are
-    // integrals of the shape functions over the faces of Gamma_3.
-    const QGauss<dim - 1> face_quadrature(2);
-    FEFaceValues<dim>     fe_face(fe,
-                              face_quadrature,
-                              update_values | update_normal_vectors |
-                                update_JxW_values);
-    Vector<double>        weight(n_dofs), normal(n_dofs);
+    // The contact nodes: the vertices of Gamma_3 that are not clamped, with
+    // m_i = int_{Gamma_3} phi_i, the sum of |F|/(vertices of F) over the
+    // faces F at the node (exact for Q1 on flat faces), the normal averaged
+    // with the same weights, and c_i = (mean diagonal of K0 at the node)/m_i.
+    FEFaceValues<dim> fe_face(fe, QGauss<dim - 1>(1), update_normal_vectors);
+    std::map<types::global_dof_index, ContactNode<dim>> nodes;
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary() && data.contact_ids.count(face->boundary_id()))
           {
             fe_face.reinit(cell, face);
-            cell->get_dof_indices(dofs);
-            for (const unsigned int q : fe_face.quadrature_point_indices())
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  const unsigned int c = fe.system_to_component_index(i).first;
-                  const double       phi =
-                    fe_face.shape_value_component(i, q, c) * fe_face.JxW(q);
-                  weight(dofs[i]) += phi;
-                  normal(dofs[i]) += phi * fe_face.normal_vector(q)[c];
-                }
+            const double share = face->measure() / face->n_vertices();
+            for (const unsigned int v : face->vertex_indices())
+              {
+                ContactNode<dim> &node = nodes[face->vertex_dof_index(v, 0)];
+                for (unsigned int c = 0; c < dim; ++c)
+                  node.dofs[c] = face->vertex_dof_index(v, c);
+                node.mass += share;
+                node.normal += share * fe_face.normal_vector(0);
+              }
           }
-
     contact_nodes.clear();
-    std::set<types::global_dof_index> seen;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() && data.contact_ids.count(face->boundary_id()))
-          for (const unsigned int v : face->vertex_indices())
-            {
-              ContactNode<dim> node;
-              for (unsigned int c = 0; c < dim; ++c)
-                node.dofs[c] = face->vertex_dof_index(v, c);
-              if (!seen.insert(node.dofs[0]).second ||
-                  clamped_constraints.is_constrained(node.dofs[0]))
-                continue;
-              node.position = face->vertex(v);
-              node.mass     = weight(node.dofs[0]);
-              double diagonal = 0;
-              for (unsigned int c = 0; c < dim; ++c)
-                {
-                  node.normal[c] = normal(node.dofs[c]);
-                  diagonal += step_matrix.diag_element(node.dofs[c]) / dim;
-                }
-              node.normal /= node.normal.norm();
-              node.c = diagonal / node.mass;
-              contact_nodes.push_back(node);
-            }
-    node_states.resize(contact_nodes.size());
+    for (auto &[dof, node] : nodes)
+      if (!clamped_constraints.is_constrained(dof))
+        {
+          double diagonal = 0;
+          for (unsigned int c = 0; c < dim; ++c)
+            diagonal += step_matrix.diag_element(node.dofs[c]) / dim;
+          node.c = diagonal / node.mass;
+          node.normal /= node.normal.norm();
+          contact_nodes.push_back(node);
+        }
   }
 
   // @sect4{KelvinVoigtContact::assemble_rhs}
@@ -727,13 +634,13 @@ namespace Step2
   void
   KelvinVoigtContact<dim>::assemble_rhs(const double time)
   {
-    const QGauss<dim>     quadrature(3);
-    const QGauss<dim - 1> face_quadrature(3);
-    FEValues<dim>         fe_values(fe,
+    const QGauss<dim>                    quadrature(3);
+    const QGauss<dim - 1>                face_quadrature(3);
+    FEValues<dim>                        fe_values(fe,
                             quadrature,
                             update_values | update_quadrature_points |
                               update_JxW_values);
-    FEFaceValues<dim>     fe_face(fe,
+    FEFaceValues<dim>                    fe_face(fe,
                               face_quadrature,
                               update_values | update_quadrature_points |
                                 update_normal_vectors | update_JxW_values);
@@ -768,10 +675,9 @@ namespace Step2
                   const Tensor<1, dim> &normal = fe_face.normal_vector(q);
                   const Tensor<1, dim>  f =
                     on_traction ? data.surface_traction(x, normal, time) :
-                                  data.contact_traction(x, normal, time);
+                                   data.contact_traction(x, normal, time);
                   for (unsigned int i = 0; i < n; ++i)
-                    cell_rhs(i) +=
-                      f * fe_face[v].value(i, q) * fe_face.JxW(q);
+                    cell_rhs(i) += f * fe_face[v].value(i, q) * fe_face.JxW(q);
                 }
             }
         cell->get_dof_indices(dofs);
@@ -798,25 +704,6 @@ namespace Step2
   // complementarity functions, linearise and solve, and damp the update by
   // backtracking on J_n.
 
-  // @sect4{KelvinVoigtContact::node_state}
-  template <int dim>
-  NodeState<dim>
-  KelvinVoigtContact<dim>::node_state(const ContactNode<dim> &node) const
-  {
-    Tensor<1, dim> w, traction;
-    for (unsigned int c = 0; c < dim; ++c)
-      {
-        w[c]        = velocity(node.dofs[c]);
-        traction[c] = -residual(node.dofs[c]) / node.mass;
-      }
-    NodeState<dim> m;
-    m.w_nu   = w * node.normal;
-    m.w_tau  = w - m.w_nu * node.normal;
-    m.s      = traction * node.normal - data.normal_law.remainder(m.w_nu);
-    m.lambda = traction - (traction * node.normal) * node.normal;
-    return m;
-  }
-
   // @sect4{KelvinVoigtContact::update_branches}
   //
   // The complementarity functions
@@ -832,14 +719,23 @@ namespace Step2
   unsigned int
   KelvinVoigtContact<dim>::update_branches(const unsigned int iteration)
   {
-    const double a          = data.normal_law.a;
-    unsigned int n_changed  = 0;
+    const double a         = data.normal_law.a;
+    unsigned int n_changed = 0;
     for (unsigned int i = 0; i < contact_nodes.size(); ++i)
       {
-        ContactNode<dim>     &node = contact_nodes[i];
-        const NodeState<dim> &m    = node_states[i] = node_state(node);
+        ContactNode<dim> &node = contact_nodes[i];
+        Tensor<1, dim>    w, traction;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            w[c]        = velocity(node.dofs[c]);
+            traction[c] = -residual(node.dofs[c]) / node.mass;
+          }
+        node.w_nu  = w * node.normal;
+        node.w_tau = w - node.w_nu * node.normal;
+        node.s = traction * node.normal - data.normal_law.remainder(node.w_nu);
+        node.lambda = traction - (traction * node.normal) * node.normal;
 
-        const double q_nu   = m.s + node.c * m.w_nu;
+        const double q_nu   = node.s + node.c * node.w_nu;
         NormalBranch normal = q_nu < 0  ? NormalBranch::separating :
                               q_nu <= a ? NormalBranch::stick :
                                           NormalBranch::damped;
@@ -850,7 +746,7 @@ namespace Step2
               normal == NormalBranch::separating)))
           normal = NormalBranch::stick;
         const bool slips =
-          (m.lambda + node.c * m.w_tau).norm() > data.friction_bound;
+          (node.lambda + node.c * node.w_tau).norm() > data.friction_bound;
 
         if (normal != node.normal_branch || slips != node.slips)
           ++n_changed;
@@ -878,13 +774,11 @@ namespace Step2
     for (unsigned int i = 0; i < contact_nodes.size(); ++i)
       {
         const ContactNode<dim> &node = contact_nodes[i];
-        const NodeState<dim>   &m    = node_states[i];
         const double            C_nu =
-          m.s - std::clamp(m.s + node.c * m.w_nu, 0., a);
-        const Tensor<1, dim> q     = m.lambda + node.c * m.w_tau;
-        const Tensor<1, dim> C_tau = m.lambda - (q.norm() <= F_b ?
-                                                   q :
-                                                   F_b / q.norm() * q);
+          node.s - std::clamp(node.s + node.c * node.w_nu, 0., a);
+        const Tensor<1, dim> q = node.lambda + node.c * node.w_tau;
+        const Tensor<1, dim> C_tau =
+          node.lambda - (q.norm() <= F_b ? q : F_b / q.norm() * q);
         sum += node.mass * node.mass * (C_nu * C_nu + C_tau.norm_square());
       }
     return std::sqrt(sum);
@@ -922,27 +816,26 @@ namespace Step2
     for (unsigned int i = 0; i < contact_nodes.size(); ++i)
       {
         const ContactNode<dim> &node = contact_nodes[i];
-        const NodeState<dim>   &m    = node_states[i];
         const Tensor<1, dim>   &nu   = node.normal;
 
         Tensor<2, dim> L;
         Tensor<1, dim> f;
         if (node.normal_branch == NormalBranch::damped)
           {
-            f += node.mass * (a + data.normal_law.remainder(m.w_nu)) * nu;
-            L += node.mass * data.normal_law.remainder_derivative(m.w_nu) *
+            f += node.mass * (a + data.normal_law.remainder(node.w_nu)) * nu;
+            L += node.mass * data.normal_law.remainder_derivative(node.w_nu) *
                  outer_product(nu, nu);
           }
         if (node.slips)
           {
-            const Tensor<1, dim> q      = m.lambda + node.c * m.w_tau;
-            const Tensor<1, dim> d      = q / q.norm();
-            const double         excess = std::max(q.norm() - F_b, 1e-2 * q.norm());
-            Tensor<2, dim>       T      = unit_symmetric_tensor<dim>();
+            const Tensor<1, dim> q = node.lambda + node.c * node.w_tau;
+            const Tensor<1, dim> d = q / q.norm();
+            const double   excess  = std::max(q.norm() - F_b, 1e-2 * q.norm());
+            Tensor<2, dim> T       = unit_symmetric_tensor<dim>();
             T -= outer_product(nu, nu) + outer_product(d, d);
             T *= node.mass * F_b * node.c / excess;
             L += T;
-            f += node.mass * F_b * d + T * m.w_tau;
+            f += node.mass * F_b * d + T * node.w_tau;
           }
 
         // K0 + L_i, and g_i = b_i + L_i w_k - f_i
@@ -961,7 +854,7 @@ namespace Step2
         // The stick constraints, written on the component p where |nu_p| is
         // largest: w.nu = 0 is w_p = -sum_{c != p} nu_c/nu_p w_c, and
         // w_tau = 0 (w parallel to nu) is w_c = nu_c/nu_p w_p for c != p.
-        const bool normal_stick = node.normal_branch == NormalBranch::stick;
+        const bool normal_stick     = node.normal_branch == NormalBranch::stick;
         const bool tangential_stick = !node.slips;
         if (!normal_stick && !tangential_stick)
           continue;
@@ -1017,9 +910,9 @@ namespace Step2
         for (unsigned int c = 0; c < dim; ++c)
           w[c] = v(node.dofs[c]);
         const double w_nu = w * node.normal;
-        energy += node.mass * (data.normal_law.potential(w_nu) +
-                               data.friction_bound *
-                                 (w - w_nu * node.normal).norm());
+        energy +=
+          node.mass * (data.normal_law.potential(w_nu) +
+                       data.friction_bound * (w - w_nu * node.normal).norm());
       }
     return energy;
   }
@@ -1036,8 +929,7 @@ namespace Step2
   unsigned int
   KelvinVoigtContact<dim>::solve()
   {
-    const double target =
-      tolerance * step_rhs.l2_norm() + absolute_tolerance;
+    const double   target = tolerance * step_rhs.l2_norm() + absolute_tolerance;
     Vector<double> trial(n_dofs), direction(n_dofs), K_d(n_dofs),
       candidate(n_dofs);
 
@@ -1116,7 +1008,9 @@ namespace Step2
     std::FILE *nodal =
       std::fopen((output_directory + "/nodal_" + number + ".txt").c_str(), "w");
     AssertThrow(nodal != nullptr, ExcIO());
-    std::fprintf(nodal, "# step %u, t = %.17g; x[dim] w[dim] u[dim]\n", step,
+    std::fprintf(nodal,
+                 "# step %u, t = %.17g; x[dim] w[dim] u[dim]\n",
+                 step,
                  step * time_step);
     std::set<types::global_dof_index> written;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -1127,7 +1021,9 @@ namespace Step2
               std::fprintf(nodal, "%.17g ", cell->vertex(v)[d]);
             for (const Vector<double> *field : {&velocity, &displacement})
               for (unsigned int c = 0; c < dim; ++c)
-                std::fprintf(nodal, "%.17g ", (*field)(cell->vertex_dof_index(v, c)));
+                std::fprintf(nodal,
+                             "%.17g ",
+                             (*field)(cell->vertex_dof_index(v, c)));
             std::fprintf(nodal, "\n");
           }
     std::fclose(nodal);
@@ -1148,7 +1044,7 @@ namespace Step2
                               update_quadrature_points | update_JxW_values);
     const FEValuesExtractors::Vector v(0);
     std::vector<Tensor<1, dim>>      w_h(quadrature.size());
-    std::vector<Tensor<2, dim>> grad_w_h(quadrature.size()),
+    std::vector<Tensor<2, dim>>      grad_w_h(quadrature.size()),
       grad_u_h(quadrature.size());
     double w_L2 = 0, w_V = 0, u_V = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -1192,8 +1088,9 @@ namespace Step2
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
         {
-          const Tensor<1, dim> u_0 = data.initial_displacement(cell->vertex(v));
-          const Tensor<1, dim> w_0 = data.initial_velocity(cell->vertex(v));
+          const Tensor<1, dim> u_0 =
+            data.initial_displacement(cell->vertex(v), 0);
+          const Tensor<1, dim> w_0 = data.initial_velocity(cell->vertex(v), 0);
           for (unsigned int c = 0; c < dim; ++c)
             {
               displacement(cell->vertex_dof_index(v, c)) = u_0[c];
@@ -1203,7 +1100,8 @@ namespace Step2
     clamped_constraints.distribute(velocity);
     clamped_constraints.distribute(displacement);
 
-    n_steps = static_cast<unsigned int>(std::llround(data.end_time / time_step));
+    n_steps =
+      static_cast<unsigned int>(std::llround(data.end_time / time_step));
     const bool write = !output_directory.empty();
     if (write)
       {
@@ -1219,7 +1117,7 @@ namespace Step2
         const unsigned int iterations = solve();
         newton_iterations += iterations;
 
-        if (data.has_exact_solution())
+        if (data.exact)
           accumulate_errors(time);
         if (write)
           {
@@ -1231,8 +1129,14 @@ namespace Step2
               }
             std::printf("step %3u  t = %.4f  Newton %u  separating %u  "
                         "normal stick %u  damped %u  stick %u  slip %u\n",
-                        step, time, iterations, count[0], count[1],
-                        count[2], count[3], count[4]);
+                        step,
+                        time,
+                        iterations,
+                        count[0],
+                        count[1],
+                        count[2],
+                        count[3],
+                        count[4]);
             output_results(step);
           }
       }
@@ -1257,8 +1161,8 @@ main(int argc, char **argv)
         {
           const std::string directory =
             mode == "block" && argc > 2 ? argv[2] : "output-block";
-          const BlockData          block;
-          KelvinVoigtContact<2>    problem(block, 3, 0.04, directory);
+          const ProblemData<2>  block = block_problem();
+          KelvinVoigtContact<2> problem(block, 3, 0.04, directory);
           std::cout << "The block of prm/block_2d.prm, 32 x 8 cells, k = 0.04"
                     << std::endl;
           problem.run();
@@ -1269,8 +1173,8 @@ main(int argc, char **argv)
         {
           const unsigned int n_levels =
             mode == "convergence" && argc > 2 ? std::stoi(argv[2]) : 4;
-          const ManufacturedData exact;
-          ConvergenceTable       table;
+          const ProblemData<2> exact = manufactured_problem();
+          ConvergenceTable     table;
           for (unsigned int level = 0; level < n_levels; ++level)
             {
               KelvinVoigtContact<2> problem(exact,
@@ -1310,14 +1214,7 @@ main(int argc, char **argv)
     }
   catch (std::exception &exc)
     {
-      std::cerr << std::endl
-                << "----------------------------------------------------"
-                << std::endl
-                << "Exception on processing: " << std::endl
-                << exc.what() << std::endl
-                << "Aborting!" << std::endl
-                << "----------------------------------------------------"
-                << std::endl;
+      std::cerr << "step-2: " << exc.what() << std::endl;
       return 1;
     }
   return 0;
