@@ -3,7 +3,7 @@
 # The convergence table of tutorial/step-2 on three levels of coupled
 # refinement equals tests/tutorial/step_2_convergence.output, and its rows
 # are those of the full table in tutorial/step-2/doc/results.md (whose
-# further levels come from 'step-2 convergence 5').
+# further levels come from 'step-2 convergence 4').
 set -euo pipefail
 step2=$1; src=$2; work=$3
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
