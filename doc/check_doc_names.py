@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Check that every repository path, class and function README.md and
-doc/*.md name exists.
+"""Check that every repository path, class and function README.md,
+doc/*.md and tutorial/*.md name exists.
 
 Run as `/usr/bin/python3 doc/check_doc_names.py SOURCE_DIR` (the ctest
 docs/doc_names does). It reads README.md and doc/*.md outside fenced code
@@ -218,7 +218,8 @@ def main():
                            os.path.join(os.path.dirname(__file__), ".."))
     code = Code(root)
     pages = [os.path.join(root, "README.md")] + \
-        sorted(glob.glob(os.path.join(root, "doc", "*.md")))
+        sorted(glob.glob(os.path.join(root, "doc", "*.md"))) + \
+        sorted(glob.glob(os.path.join(root, "tutorial", "*.md")))
     errors = []
     for page in pages:
         errors += check_page(root, code, page)
