@@ -831,10 +831,7 @@ namespace Step1
     const Vector<double> &residual)
   {
     newton_constraints.clear();
-    VectorTools::interpolate_boundary_values(dof_handler,
-                                             BoundaryIds::clamped,
-                                             Functions::ZeroFunction<dim>(dim),
-                                             newton_constraints);
+    newton_constraints.merge(clamped_constraints);
     for (const ContactNode<dim> &node : contact_nodes)
       {
         const bool normal_held = node.normal_branch == NormalBranch::stick;
@@ -991,8 +988,7 @@ namespace Step1
 
   // @sect4{StaticContactProblem::run}
 
-  // One load value: assemble the load at $t$, solve, and print a line
-  // with the branches.
+  // One load value: assemble the load at $t$ and solve.
   template <int dim>
   void
   StaticContactProblem<dim>::run(const double t)
@@ -1150,14 +1146,13 @@ main()
           table.add_value("E_H", E_H);
           table.add_value("E_V", E_V);
         }
-      table.set_scientific("E_H", true);
-      table.set_scientific("E_V", true);
-      table.set_precision("E_H", 3);
-      table.set_precision("E_V", 3);
-      table.evaluate_convergence_rates("E_H",
-                                       ConvergenceTable::reduction_rate_log2);
-      table.evaluate_convergence_rates("E_V",
-                                       ConvergenceTable::reduction_rate_log2);
+      for (const std::string column : {"E_H", "E_V"})
+        {
+          table.set_scientific(column, true);
+          table.set_precision(column, 3);
+          table.evaluate_convergence_rates(
+            column, ConvergenceTable::reduction_rate_log2);
+        }
       table.write_text(std::cout);
     }
   catch (std::exception &exc)

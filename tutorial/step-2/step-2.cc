@@ -51,7 +51,6 @@
 #include <functional>
 #include <iostream>
 #include <map>
-#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -721,10 +720,9 @@ namespace Step2
   {
     const double a         = data.normal_law.a;
     unsigned int n_changed = 0;
-    for (unsigned int i = 0; i < contact_nodes.size(); ++i)
+    for (ContactNode<dim> &node : contact_nodes)
       {
-        ContactNode<dim> &node = contact_nodes[i];
-        Tensor<1, dim>    w, traction;
+        Tensor<1, dim> w, traction;
         for (unsigned int c = 0; c < dim; ++c)
           {
             w[c]        = velocity(node.dofs[c]);
@@ -771,10 +769,9 @@ namespace Step2
     double sum = free_part.norm_sqr();
 
     const double a = data.normal_law.a, F_b = data.friction_bound;
-    for (unsigned int i = 0; i < contact_nodes.size(); ++i)
+    for (const ContactNode<dim> &node : contact_nodes)
       {
-        const ContactNode<dim> &node = contact_nodes[i];
-        const double            C_nu =
+        const double C_nu =
           node.s - std::clamp(node.s + node.c * node.w_nu, 0., a);
         const Tensor<1, dim> q = node.lambda + node.c * node.w_tau;
         const Tensor<1, dim> C_tau =
@@ -813,10 +810,9 @@ namespace Step2
     constraints.merge(clamped_constraints);
 
     const double a = data.normal_law.a, F_b = data.friction_bound;
-    for (unsigned int i = 0; i < contact_nodes.size(); ++i)
+    for (const ContactNode<dim> &node : contact_nodes)
       {
-        const ContactNode<dim> &node = contact_nodes[i];
-        const Tensor<1, dim>   &nu   = node.normal;
+        const Tensor<1, dim> &nu = node.normal;
 
         Tensor<2, dim> L;
         Tensor<1, dim> f;
