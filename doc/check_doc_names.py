@@ -1,20 +1,23 @@
 #!/usr/bin/python3
-"""Check that every repository path, class and function README.md and
-doc/*.md name exists.
+"""Check that every repository path, class and function README.md,
+doc/*.md, tutorial/*.md and the tutorial steps' pages
+(tutorial/step-*/doc/*.md) name exists.
 
 Run as `/usr/bin/python3 doc/check_doc_names.py SOURCE_DIR` (the ctest
-docs/doc_names does). It reads README.md and doc/*.md outside fenced code
-blocks and checks
+docs/doc_names does). It reads these pages outside fenced code blocks and
+checks
 
 * paths: a link target that is not a URL (relative to the page), and an
   inline code span that starts with one of the top-level directories in
-  PATH_ROOTS (relative to the repository root) or is a bare file name
-  ending in .cc/.h/.py/.prm/.md; `*`, `NAME`, `NNNNN` and `<...>` in a
-  path match anything;
+  PATH_ROOTS (relative to the repository root; on a step's page also
+  relative to the step's directory, where its program runs) or is a bare
+  file name ending in .cc/.h/.py/.prm/.md; `*`, `NAME`, `NNNNN` and
+  `<...>` in a path match anything;
 * C++ names: an inline code span that is a single CamelCase word
   (`ContactStep`, `KelvinVoigtMaterial<dim>`), a qualified name
   (`ContactStep::residual()`, `nodal::state()`) or a call (`run()`).
-  A CamelCase word must occur as a word in the code (CODE_DIRS); a
+  A CamelCase word must occur as a word in the code (CODE_DIRS, the
+  tutorial steps' programs among them); a
   function must occur followed by "("; in `A::b` the class or namespace
   A must occur, and b must occur either as `A::b` / `A<...>::b` in the
   code or in a file that declares A (class, struct or namespace A).
@@ -35,8 +38,8 @@ import re
 import sys
 
 PATH_ROOTS = ("source/", "include/", "tests/", "prm/", "bench/", "doc/",
-              "jupyter-notes/", ".ci/", "cmake/", "results/")
-CODE_DIRS = ("include", "source", "tests", "bench")
+              "jupyter-notes/", ".ci/", "cmake/", "results/", "tutorial/")
+CODE_DIRS = ("include", "source", "tests", "bench", "tutorial")
 CODE_SUFFIXES = (".h", ".cc", ".py", ".sh", ".txt", ".cmake")
 
 # deal.II, Trilinos, C++ and tool names the pages use (exact spans).
@@ -186,6 +189,9 @@ def check_page(root, code, page):
     errors = []
     rel_page = os.path.relpath(page, root)
     page_dir = os.path.dirname(rel_page)
+    # a step's page (tutorial/step-N/doc/) names files of its step too
+    step_dir = os.path.dirname(page_dir) \
+        if re.match(r"^tutorial/step-[^/]+/doc$", page_dir) else None
     for number, kind, span in spans(read(page)):
         where = "%s:%d: " % (rel_page, number)
         if kind == "link":
@@ -198,7 +204,9 @@ def check_page(root, code, page):
         first = span.split()[0] if span.split() else span
         first = first.rstrip(",;:.")
         if first.startswith(PATH_ROOTS):
-            if not path_exists(root, first, code.tests):
+            if not path_exists(root, first, code.tests) and not (
+                    step_dir and path_exists(os.path.join(root, step_dir),
+                                             first)):
                 errors.append(where + "no file " + first)
             continue
         if re.match(r"^\w[\w.-]*\.(cc|h|py|prm|md|ipynb)$", span):
@@ -218,7 +226,10 @@ def main():
                            os.path.join(os.path.dirname(__file__), ".."))
     code = Code(root)
     pages = [os.path.join(root, "README.md")] + \
-        sorted(glob.glob(os.path.join(root, "doc", "*.md")))
+        sorted(glob.glob(os.path.join(root, "doc", "*.md"))) + \
+        sorted(glob.glob(os.path.join(root, "tutorial", "*.md"))) + \
+        sorted(glob.glob(os.path.join(root, "tutorial", "step-*", "doc",
+                                      "*.md")))
     errors = []
     for page in pages:
         errors += check_page(root, code, page)

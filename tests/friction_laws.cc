@@ -12,6 +12,7 @@
 
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/laws/friction/piecewise_linear_friction.h>
+#include <hemicontact/laws/friction/rational_weakening.h>
 #include <hemicontact/laws/friction/slip_rate_weakening.h>
 #include <hemicontact/laws/friction/tresca.h>
 #include <hemicontact/laws/friction_law.h>
@@ -244,6 +245,7 @@ main()
   check_law(PiecewiseLinearFrictionLaw({{0, 1}, {0.1, 1.4}, {0.3, 0.2}}),
             1.,
             {0., 0.1, 0.3});
+  check_law(RationalWeakeningLaw(0.5), 0.8, {});
 
   std::cout << "input checks\n";
   expect_input_error([] { SlipRateWeakeningLaw(0.6, 0.8, 0.1); });
@@ -254,6 +256,7 @@ main()
   expect_input_error([] { PiecewiseLinearFrictionLaw({{0, 0.9}, {1, 1}}); });
   expect_input_error([] { PiecewiseLinearFrictionLaw({{0.2, 1}, {0.1, 1}}); });
   expect_input_error([] { PiecewiseLinearFrictionLaw({{0.2, -0.1}}); });
+  expect_input_error([] { RationalWeakeningLaw(0.); });
 
   std::cout << "registry\n";
   for (const FrictionLawEntry &e : friction_law_registry())
@@ -286,5 +289,6 @@ main()
   check_node(TrescaLaw());
   check_node(SlipRateWeakeningLaw(0.6, 0.3, 0.1));
   check_node(PiecewiseLinearFrictionLaw({{0.05, 0.6}, {0.5, 0.8}}));
+  check_node(RationalWeakeningLaw(0.5));
   return 0;
 }

@@ -5,7 +5,8 @@
 file(GLOB_RECURSE _files
   ${SOURCE_DIR}/include/*.h ${SOURCE_DIR}/source/*.cc
   ${SOURCE_DIR}/tests/*.h ${SOURCE_DIR}/tests/*.cc
-  ${SOURCE_DIR}/bench/*.h ${SOURCE_DIR}/bench/*.cc)
+  ${SOURCE_DIR}/bench/*.h ${SOURCE_DIR}/bench/*.cc
+  ${SOURCE_DIR}/tutorial/step-*.cc)
 set(_unformatted "")
 foreach(_file ${_files})
   execute_process(

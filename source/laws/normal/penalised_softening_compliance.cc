@@ -94,4 +94,10 @@ namespace hemicontact
   {
     return penalty * std::exp(-b);
   }
+
+  double
+  PenalisedSofteningCompliance::largest_remainder_slope() const
+  {
+    return penalty * (a + std::exp(-b)) / b;
+  }
 } // namespace hemicontact

@@ -12,7 +12,8 @@ namespace hemicontact
    * and j = 0 for r <= 0. Its derivative rises linearly to a + e^{-b} at
    * r = b and then softens as a + e^{-r} towards a. No jump at 0; the
    * remainder is p = penalty * j'; alpha = penalty * e^{-b}, the steepest
-   * descent of j'. At r = 0 remainder_derivative() is the right derivative
+   * descent of j'; the largest remainder slope penalty (a + e^{-b})/b, its
+   * rise. At r = 0 remainder_derivative() is the right derivative
    * penalty (a + e^{-b})/b (an element of the generalized derivative
    * [0, penalty (a + e^{-b})/b]): Newton started from u = 0 then sees the
    * compliance, instead of jumping to the free body's penetration.
@@ -47,6 +48,9 @@ namespace hemicontact
     remainder_primitive(const double r) const override;
     double
     relaxed_monotonicity_constant() const override;
+    /** penalty (a + e^{-b})/b: the slope of the rise on (0, b). */
+    double
+    largest_remainder_slope() const override;
 
   private:
     double a, b, penalty;

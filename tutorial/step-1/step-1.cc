@@ -1,0 +1,1164 @@
+/* ---------------------------------------------------------------------
+ *
+ * hemicontact tutorial, step-1: static elastic contact with a nonmonotone
+ * normal compliance and Tresca friction, solved by the primal-dual active
+ * set (semismooth Newton) method.
+ *
+ * The introduction (doc/intro.md) states the model, the weak form, the
+ * discretisation and the algorithm; the results (doc/results.md) show
+ * what this program prints. The program depends on deal.II alone.
+ *
+ * ---------------------------------------------------------------------
+ */
+
+// @sect3{Include files}
+
+// The usual deal.II headers of a serial program (step-8 for elasticity,
+// step-7 for the convergence table, step-41 for an active set).
+#include <deal.II/base/convergence_table.h>
+#include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <utility>
+#include <vector>
+
+namespace Step1
+{
+  using namespace dealii;
+
+  // @sect3{The normal law}
+
+  // The normal compliance: the response $\xi_\nu$ of the foundation to a
+  // penetration $r = u_\nu > 0$ is a continuous piecewise-linear function
+  // given by breakpoints $(r_k, \xi_k)$, $r_0 = 0$, linear in between and
+  // constant after the last one. Its value at zero is the jump $a$:
+  // $\partial j_\nu(0) = [0, a]$. We split it as in doc/theory.md section
+  // 1, $\partial j_\nu(r) = \partial(a r_+)(r) + p(r)$, into the convex jump
+  // and the Lipschitz remainder $p(r) = \xi(r) - a$ for $r > 0$, $p = 0$
+  // for $r \le 0$. A law that rises and then falls is nonmonotone: $j_\nu$
+  // is not convex, but $j_\nu + \alpha_\nu r^2/2$ is, with $\alpha_\nu$ the
+  // steepest descent slope of $\xi$.
+  class PiecewiseLinearLaw
+  {
+  public:
+    explicit PiecewiseLinearLaw(
+      const std::vector<std::pair<double, double>> &breakpoints)
+      : points(breakpoints)
+    {
+      AssertThrow(points[0].first == 0. && points[0].second >= 0,
+                  ExcMessage("The first breakpoint must be at r = 0."));
+      for (unsigned int k = 0; k + 1 < points.size(); ++k)
+        {
+          AssertThrow(points[k + 1].first > points[k].first &&
+                        points[k + 1].second >= 0,
+                      ExcMessage("The breakpoints must have increasing r "
+                                 "and a response >= 0."));
+          // $\alpha_\nu$ is the steepest descent slope; the steepest rise
+          // sets a floor of the complementarity constants (solve()).
+          alpha         = std::max(alpha, -slope(k));
+          steepest_rise = std::max(steepest_rise, slope(k));
+        }
+    }
+
+    // The jump $a$ of the subdifferential at $r = 0$.
+    double
+    jump() const
+    {
+      return points[0].second;
+    }
+
+    // The response $\xi(r)$ for $r > 0$, the remainder $p(r)$ and its
+    // derivative $p'(r)$ (at a breakpoint, the slope to its right).
+    double
+    response(const double r) const
+    {
+      const unsigned int k = segment(r);
+      if (k + 1 == points.size())
+        return points.back().second;
+      return points[k].second + slope(k) * (r - points[k].first);
+    }
+
+    double
+    remainder(const double r) const
+    {
+      return r > 0 ? response(r) - jump() : 0.;
+    }
+
+    double
+    remainder_derivative(const double r) const
+    {
+      const unsigned int k = segment(r);
+      return (r <= 0 || k + 1 == points.size()) ? 0. : slope(k);
+    }
+
+    // The potential $j_\nu(r) = \int_0^r \xi$, exact segment by segment.
+    double
+    potential(const double r) const
+    {
+      double integral = 0;
+      for (unsigned int k = 0; k < points.size() && points[k].first < r; ++k)
+        {
+          const double end =
+            k + 1 < points.size() ? std::min(r, points[k + 1].first) : r;
+          integral +=
+            0.5 * (points[k].second + response(end)) * (end - points[k].first);
+        }
+      return integral;
+    }
+
+    double alpha = 0, steepest_rise = 0;
+
+  private:
+    // The segment $[r_k, r_{k+1})$ that holds $r$ (the last $k$ beyond the
+    // last breakpoint), and its slope.
+    unsigned int
+    segment(const double r) const
+    {
+      unsigned int k = 0;
+      while (k + 1 < points.size() && points[k + 1].first <= r)
+        ++k;
+      return k;
+    }
+
+    double
+    slope(const unsigned int k) const
+    {
+      return (points[k + 1].second - points[k].second) /
+             (points[k + 1].first - points[k].first);
+    }
+
+    std::vector<std::pair<double, double>> points;
+  };
+
+  // @sect3{The problem data}
+
+  // The boundary is split by boundary id: $\Gamma_1$ (clamped) has id 0,
+  // $\Gamma_3$ (contact) id 2, and every other boundary is $\Gamma_2$
+  // (traction). GridGenerator::subdivided_hyper_rectangle() with
+  // colorize = true numbers a rectangle's sides left 0, right 1, bottom 2,
+  // top 3: the left side clamped, the bottom in contact.
+  namespace BoundaryIds
+  {
+    constexpr types::boundary_id clamped = 0;
+    constexpr types::boundary_id contact = 2;
+  } // namespace BoundaryIds
+
+  // What defines one problem: the material (Lamé constants of $B$), the
+  // laws, the loads $f_0$ in $\Omega$ and $f_2$ on $\Gamma_2$ at the load
+  // parameter $t$, and, in a manufactured solution, a traction $f_3$ on
+  // $\Gamma_3$ and the exact solution.
+  template <int dim>
+  class ProblemData
+  {
+  public:
+    ProblemData(const double mu, const double lambda, const double F_b)
+      : mu(mu)
+      , lambda(lambda)
+      , friction_bound(F_b)
+      , law({{0, 1}, {0.02, 1.4}, {0.15, 1.3}})
+    {}
+
+    virtual ~ProblemData() = default;
+
+    virtual void
+    make_coarse_grid(Triangulation<dim> &triangulation) const = 0;
+
+    // $f_0(x, t)$ and the prescribed traction at $x$ on the boundary
+    // with id @p id and outward normal @p normal ($f_2$, or $f_3$ on
+    // $\Gamma_3$).
+    virtual Tensor<1, dim>
+    body_force(const Point<dim> &x, const double t) const = 0;
+
+    virtual Tensor<1, dim>
+    traction(const Point<dim>        &x,
+             const Tensor<1, dim>    &normal,
+             const types::boundary_id id,
+             const double             t) const = 0;
+
+    // $\sigma = B\varepsilon = 2\mu\varepsilon + \lambda\,\mathrm{tr}
+    // (\varepsilon) I$.
+    SymmetricTensor<2, dim>
+    stress(const SymmetricTensor<2, dim> &eps) const
+    {
+      return 2 * mu * eps + lambda * trace(eps) * unit_symmetric_tensor<dim>();
+    }
+
+    const double             mu, lambda;
+    const double             friction_bound;
+    const PiecewiseLinearLaw law;
+  };
+
+  // @sect4{The block}
+
+  // The problem the program shares with the full code (and that the test
+  // tests/tutorial/step_1_vs_hemicontact.sh runs in both): a block
+  // $[0,4]\times[0,1]$ clamped on the left, free on the right, on a
+  // foundation along its bottom, loaded on its top by a traction that
+  // pulls up left of $x = 1$, presses down right of it and shears, all
+  // growing with $t$.
+  class BlockData : public ProblemData<2>
+  {
+  public:
+    BlockData()
+      : ProblemData<2>(/*mu=*/100, /*lambda=*/150, /*F_b=*/0.6)
+    {}
+
+    void
+    make_coarse_grid(Triangulation<2> &triangulation) const override
+    {
+      GridGenerator::subdivided_hyper_rectangle(
+        triangulation, {4, 1}, Point<2>(0, 0), Point<2>(4, 1), true);
+    }
+
+    Tensor<1, 2>
+    body_force(const Point<2> &, const double) const override
+    {
+      return Tensor<1, 2>();
+    }
+
+    Tensor<1, 2>
+    traction(const Point<2> &x,
+             const Tensor<1, 2> &,
+             const types::boundary_id id,
+             const double             t) const override
+    {
+      if (id != 3) // the top; the right side is free
+        return Tensor<1, 2>();
+      return Tensor<1, 2>({0.5 * t * x[0] / 4, -2.5 * t * (x[0] - 1) / 3});
+    }
+  };
+
+  // @sect4{A manufactured solution}
+
+  // On the unit square, clamped on the left, with $\Gamma_3$ the bottom
+  // ($\nu = (0,-1)$), the field
+  // @f[
+  //   u(x, y) = (1 + y)\,\bigl(a(x),\; -b(x)\bigr),\qquad
+  //   a(x) = (x - \tfrac34)_+^3,\quad
+  //   b(x) = 2 (x - \tfrac12)_+^3 - 8 x (\tfrac14 - x)_+^3,
+  // @f]
+  // has on $\Gamma_3$ $u_\nu = b(x)$: separation on $(0, \frac14)$,
+  // contact without penetration on $[\frac14, \frac12]$, penetration
+  // on $(\frac12, 1]$ up to $u_\nu = 0.25$ across all three segments of
+  // the law; and $u_\tau = a(x)$: stick on $(0, \frac34]$, slip beyond.
+  // $u$ is $C^2$, so $f_0 = -\mathrm{Div}\,\sigma(u)$ is continuous.
+  // It solves the problem with $f_2 = \sigma\nu$ and, on $\Gamma_3$,
+  // $f_3 = \sigma\nu + \xi_\nu\nu + \xi_\tau$ with $\xi_\nu \in \partial
+  // j_\nu(u_\nu)$, $\xi_\tau \in \partial\varphi(u_\tau)$
+  // (doc/theory.md section 9.7): $\xi_\nu = a/2$ and $\xi_\tau = F_b/2$
+  // where the exact solution holds at zero (strictly inside the
+  // intervals). The points $\frac14, \frac12, \frac34$ where $f_3$ jumps
+  // are mesh vertices.
+  class ManufacturedData : public ProblemData<2>
+  {
+  public:
+    ManufacturedData()
+      : ProblemData<2>(/*mu=*/100, /*lambda=*/150, /*F_b=*/0.6)
+    {}
+
+    void
+    make_coarse_grid(Triangulation<2> &triangulation) const override
+    {
+      GridGenerator::subdivided_hyper_rectangle(
+        triangulation, {1, 1}, Point<2>(0, 0), Point<2>(1, 1), true);
+    }
+
+    // $g(z) = z_+^3$ and its first two derivatives.
+    static std::array<double, 3>
+    cube_plus(const double z)
+    {
+      const double zp = std::max(z, 0.);
+      return {{zp * zp * zp, 3 * zp * zp, 6 * zp}};
+    }
+
+    // $a$, $b$ and their derivatives up to the second.
+    static std::array<double, 3>
+    a(const double x)
+    {
+      return cube_plus(x - 0.75);
+    }
+
+    static std::array<double, 3>
+    b(const double x)
+    {
+      const auto g = cube_plus(x - 0.5);
+      const auto h = cube_plus(0.25 - x); // h' = -g'(0.25 - x)
+      return {{2 * g[0] - 8 * x * h[0],
+               2 * g[1] - 8 * (h[0] - x * h[1]),
+               2 * g[2] - 8 * (-2 * h[1] + x * h[2])}};
+    }
+
+    Tensor<1, 2>
+    exact_value(const Point<2> &p) const
+    {
+      const double phi = 1 + p[1];
+      return Tensor<1, 2>({phi * a(p[0])[0], -phi * b(p[0])[0]});
+    }
+
+    Tensor<2, 2>
+    exact_gradient(const Point<2> &p) const
+    {
+      const double phi = 1 + p[1];
+      const auto   A = a(p[0]), B = b(p[0]);
+      return Tensor<2, 2>({{phi * A[1], A[0]}, {-phi * B[1], -B[0]}});
+    }
+
+    // $f_0 = -\mu\Delta u - (\mu+\lambda)\nabla\,\mathrm{div}\,u$, with
+    // $\Delta u = (1+y)(a'', -b'')$ and
+    // $\nabla\,\mathrm{div}\,u = ((1+y) a'' - b',\; a')$.
+    Tensor<1, 2>
+    body_force(const Point<2> &p, const double) const override
+    {
+      const double phi = 1 + p[1];
+      const auto   A = a(p[0]), B = b(p[0]);
+      return Tensor<1, 2>(
+        {-mu * phi * A[2] - (mu + lambda) * (phi * A[2] - B[1]),
+         mu * phi * B[2] - (mu + lambda) * A[1]});
+    }
+
+    Tensor<1, 2>
+    traction(const Point<2>          &p,
+             const Tensor<1, 2>      &normal,
+             const types::boundary_id id,
+             const double) const override
+    {
+      const Tensor<1, 2> sigma_nu =
+        stress(symmetrize(exact_gradient(p))) * normal;
+      if (id != BoundaryIds::contact)
+        return sigma_nu;
+      const double u_nu   = exact_value(p) * normal;
+      const double u_tau  = exact_value(p)[0]; // the tangent is e_x
+      const double xi_nu  = u_nu < 0  ? 0. :
+                            u_nu == 0 ? 0.5 * law.jump() :
+                                        law.response(u_nu);
+      const double xi_tau = u_tau == 0 ? 0.5 * friction_bound : friction_bound;
+      return sigma_nu + xi_nu * normal + Tensor<1, 2>({xi_tau, 0.});
+    }
+  };
+
+  // @sect3{One contact node}
+
+  // The contact conditions hold node by node (nodal quadrature on
+  // $\Gamma_3$): each node $x_i$ of $\Gamma_3$ keeps its degrees of
+  // freedom, its weight $m_i = \int_{\Gamma_3}\varphi_i$, its normal
+  // $\nu_i$, the constant $c_i$ of the complementarity functions, and its
+  // current branches.
+  enum class NormalBranch
+  {
+    separating, // s + c u_nu < 0:       s = 0, u_nu free
+    stick,      // 0 <= s + c u_nu <= a: u_nu = 0
+    penetrating // s + c u_nu > a:       s = a, u_nu free
+  };
+
+  enum class TangentialBranch
+  {
+    stick, // |lambda + c u_tau| <= F_b: u_tau = 0
+    slip   // lambda = F_b q/|q|, q = lambda + c u_tau
+  };
+
+  template <int dim>
+  struct ContactNode
+  {
+    Point<dim>                               position;
+    std::array<types::global_dof_index, dim> dofs;
+    double                                   mass = 0;
+    Tensor<1, dim>                           normal;
+    double                                   c = 0;
+    NormalBranch     normal_branch             = NormalBranch::separating;
+    TangentialBranch tangential_branch         = TangentialBranch::stick;
+  };
+
+  // @sect3{The StaticContactProblem class}
+
+  // The structure of step-8 (elasticity) and step-41 (an active set
+  // method): make_grid(), setup_system() (which also finds the contact
+  // nodes), assemble_system() for the stiffness matrix $K = B$ and the
+  // load $F_n$, solve() for the active-set Newton method with its helpers,
+  // and output_results(). run() solves one load value.
+  template <int dim>
+  class StaticContactProblem
+  {
+  public:
+    StaticContactProblem(const ProblemData<dim> &data,
+                         const unsigned int      n_refinements);
+
+    // Solve at load parameter $t$, starting from the previous solution.
+    void
+    run(const double t);
+
+    void
+    output_results(const unsigned int load_step) const;
+
+    // $\|u - u_h\|_{L^2}$ and $\|\varepsilon(u - u_h)\|_{L^2}$.
+    template <class Exact>
+    std::pair<double, double>
+    compute_errors(const Exact &exact) const;
+
+    unsigned int
+    n_dofs() const
+    {
+      return dof_handler.n_dofs();
+    }
+
+    unsigned int newton_iterations = 0;
+
+  private:
+    void
+    make_grid(const unsigned int n_refinements);
+    void
+    setup_system();
+    void
+    setup_contact_nodes();
+    void
+    assemble_system(const AffineConstraints<double> &constraints,
+                    SparseMatrix<double>            &matrix,
+                    Vector<double>                  &rhs) const;
+    void
+    solve();
+
+    struct NodeState;
+    NodeState
+    node_state(const ContactNode<dim> &node,
+               const Vector<double>   &residual) const;
+    unsigned int
+    update_active_set(const Vector<double> &residual);
+    double
+    nonsmooth_residual(const Vector<double> &residual) const;
+    void
+    assemble_newton_system(const Vector<double> &residual);
+    double
+    energy(const Vector<double> &u) const;
+
+    const ProblemData<dim> &data;
+    double                  time = 0; // the load parameter t
+
+    Triangulation<dim> triangulation;
+    FESystem<dim>      fe;
+    DoFHandler<dim>    dof_handler;
+
+    AffineConstraints<double> clamped_constraints;
+    AffineConstraints<double> newton_constraints;
+
+    SparsityPattern      sparsity_pattern;
+    SparseMatrix<double> stiffness_matrix;
+    SparseMatrix<double> newton_matrix;
+
+    Vector<double> solution;
+    Vector<double> load;
+    Vector<double> newton_rhs;
+
+    std::vector<ContactNode<dim>> contact_nodes;
+  };
+
+  // The constructor builds the mesh and the system; the solution starts
+  // at zero.
+  template <int dim>
+  StaticContactProblem<dim>::StaticContactProblem(
+    const ProblemData<dim> &data,
+    const unsigned int      n_refinements)
+    : data(data)
+    , fe(FE_Q<dim>(1), dim)
+    , dof_handler(triangulation)
+  {
+    make_grid(n_refinements);
+    setup_system();
+  }
+
+  // @sect4{StaticContactProblem::make_grid}
+
+  template <int dim>
+  void
+  StaticContactProblem<dim>::make_grid(const unsigned int n_refinements)
+  {
+    data.make_coarse_grid(triangulation);
+    triangulation.refine_global(n_refinements);
+  }
+
+  // @sect4{StaticContactProblem::setup_system}
+
+  // $V^h$: continuous $Q_1$ vector fields vanishing on $\Gamma_1$. The
+  // sparsity pattern couples every component of a node with every
+  // component of its neighbours, so it also holds the entries that the
+  // contact constraints of solve() create (they tie the components of one
+  // node together).
+  template <int dim>
+  void
+  StaticContactProblem<dim>::setup_system()
+  {
+    dof_handler.distribute_dofs(fe);
+
+    clamped_constraints.clear();
+    VectorTools::interpolate_boundary_values(dof_handler,
+                                             BoundaryIds::clamped,
+                                             Functions::ZeroFunction<dim>(dim),
+                                             clamped_constraints);
+    clamped_constraints.close();
+
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler, dsp);
+    sparsity_pattern.copy_from(dsp);
+    stiffness_matrix.reinit(sparsity_pattern);
+    newton_matrix.reinit(sparsity_pattern);
+
+    solution.reinit(dof_handler.n_dofs());
+    load.reinit(dof_handler.n_dofs());
+    newton_rhs.reinit(dof_handler.n_dofs());
+
+    // $K = B$ does not depend on the load: assemble it once (the load is
+    // assembled again in run()).
+    assemble_system(clamped_constraints, stiffness_matrix, load);
+    setup_contact_nodes();
+  }
+
+  // @sect4{The contact nodes}
+
+  // The nodal weights $m_i = \int_{\Gamma_3}\varphi_i$ and the nodal
+  // normals $\nu_i = \int_{\Gamma_3}\varphi_i\nu / |\cdot|$ are assembled
+  // like a right-hand side. Nodes on $\Gamma_1$ are not contact nodes
+  // (they do not move). The constant $c_i$ of the complementarity
+  // functions is the mean diagonal entry of $K$ at the node over $m_i$,
+  // and at least twice the law's steepest rise (doc/theory.md 10.3): it
+  // changes the path of the iteration, never its solution.
+  template <int dim>
+  void
+  StaticContactProblem<dim>::setup_contact_nodes()
+  {
+    Vector<double> mass(dof_handler.n_dofs()), normal(dof_handler.n_dofs());
+    const QGauss<dim - 1>                face_quadrature(2);
+    FEFaceValues<dim>                    fe_face_values(fe,
+                                     face_quadrature,
+                                     update_values | update_normal_vectors |
+                                       update_JxW_values);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() == BoundaryIds::contact)
+          {
+            fe_face_values.reinit(cell, face);
+            cell->get_dof_indices(dofs);
+            for (const unsigned int q :
+                 fe_face_values.quadrature_point_indices())
+              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                {
+                  const unsigned int c = fe.system_to_component_index(i).first;
+                  const double       phi_JxW =
+                    fe_face_values.shape_value_component(i, q, c) *
+                    fe_face_values.JxW(q);
+                  mass(dofs[i]) += phi_JxW;
+                  normal(dofs[i]) +=
+                    phi_JxW * fe_face_values.normal_vector(q)[c];
+                }
+          }
+
+    contact_nodes.clear();
+    std::vector<bool> seen(dof_handler.n_dofs(), false);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() == BoundaryIds::contact)
+          for (const unsigned int v : face->vertex_indices())
+            {
+              ContactNode<dim> node;
+              for (unsigned int c = 0; c < dim; ++c)
+                node.dofs[c] = face->vertex_dof_index(v, c);
+              if (seen[node.dofs[0]] ||
+                  clamped_constraints.is_constrained(node.dofs[0]))
+                continue;
+              seen[node.dofs[0]] = true;
+              node.position      = face->vertex(v);
+              node.mass          = mass(node.dofs[0]);
+              double diagonal    = 0;
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  node.normal[c] = normal(node.dofs[c]);
+                  diagonal += stiffness_matrix.diag_element(node.dofs[c]) / dim;
+                }
+              node.normal /= node.normal.norm();
+              node.c =
+                std::max(diagonal / node.mass, 2 * data.law.steepest_rise);
+              contact_nodes.push_back(node);
+            }
+  }
+
+  // @sect4{StaticContactProblem::assemble_system}
+
+  // The cell terms of the energy, condensed with the given constraints:
+  // the stiffness $\int_K B\varepsilon(\varphi_j) : \varepsilon(
+  // \varphi_i)$ (Gauss, 2 points per direction, exact for $Q_1$ on
+  // parallelograms) and the load $\int_K f_0\cdot\varphi_i +
+  // \int_{\partial K\cap(\Gamma_2\cup\Gamma_3)} f\cdot\varphi_i$ (3
+  // points per direction). With the clamped constraints alone this is $K$
+  // and $F_n$, the quadratic part $\frac12 u\cdot K u - F_n\cdot u$ of the
+  // energy $J$; solve() calls it again with the constraints of each
+  // Newton step.
+  template <int dim>
+  void
+  StaticContactProblem<dim>::assemble_system(
+    const AffineConstraints<double> &constraints,
+    SparseMatrix<double>            &matrix,
+    Vector<double>                  &rhs) const
+  {
+    const FEValuesExtractors::Vector     displacement(0);
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    FEValues<dim>                        fe_values(fe,
+                            QGauss<dim>(2),
+                            update_gradients | update_JxW_values);
+    FEValues<dim>                        fe_load(fe,
+                          QGauss<dim>(3),
+                          update_values | update_quadrature_points |
+                            update_JxW_values);
+    FEFaceValues<dim>                    fe_face(fe,
+                              QGauss<dim - 1>(3),
+                              update_values | update_quadrature_points |
+                                update_normal_vectors | update_JxW_values);
+    FullMatrix<double>                   cell_matrix(n, n);
+    Vector<double>                       cell_rhs(n);
+    std::vector<types::global_dof_index> dofs(n);
+
+    matrix = 0;
+    rhs    = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell_matrix = 0;
+        cell_rhs    = 0;
+        fe_values.reinit(cell);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const SymmetricTensor<2, dim> sigma_i =
+                data.stress(fe_values[displacement].symmetric_gradient(i, q));
+              for (unsigned int j = 0; j < n; ++j)
+                cell_matrix(i, j) +=
+                  sigma_i * fe_values[displacement].symmetric_gradient(j, q) *
+                  fe_values.JxW(q);
+            }
+
+        fe_load.reinit(cell);
+        for (const unsigned int q : fe_load.quadrature_point_indices())
+          {
+            const Tensor<1, dim> f0 =
+              data.body_force(fe_load.quadrature_point(q), time);
+            for (unsigned int i = 0; i < n; ++i)
+              cell_rhs(i) +=
+                f0 * fe_load[displacement].value(i, q) * fe_load.JxW(q);
+          }
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() &&
+              face->boundary_id() != BoundaryIds::clamped)
+            {
+              fe_face.reinit(cell, face);
+              for (const unsigned int q : fe_face.quadrature_point_indices())
+                {
+                  const Tensor<1, dim> f =
+                    data.traction(fe_face.quadrature_point(q),
+                                  fe_face.normal_vector(q),
+                                  face->boundary_id(),
+                                  time);
+                  for (unsigned int i = 0; i < n; ++i)
+                    cell_rhs(i) +=
+                      f * fe_face[displacement].value(i, q) * fe_face.JxW(q);
+                }
+            }
+
+        cell->get_dof_indices(dofs);
+        constraints.distribute_local_to_global(
+          cell_matrix, cell_rhs, dofs, matrix, rhs);
+      }
+  }
+
+  // @sect3{The active-set Newton method}
+
+  // @sect4{The state of a node}
+
+  // From the residual $R = K u - F_n$ the nodal contact force is
+  // $G_i = -R_i$ (the force the laws must supply for equilibrium), and
+  // the traction is $G_i/m_i$. Split into normal and tangential parts, the
+  // multipliers of the convex parts of the laws are
+  // @f[
+  //   s = G_i\cdot\nu/m_i - p(u_\nu),\qquad
+  //   \lambda = G_{i,\tau}/m_i
+  // @f]
+  // (Tresca friction has no remainder), and the complementarity functions
+  // (doc/theory.md section 3, with $u$ for $w$) are
+  // @f[
+  //   C_\nu = s - P_{[0,a]}(s + c\,u_\nu),\qquad
+  //   C_\tau = \lambda - P_{|\cdot|\le F_b}(\lambda + c\,u_\tau).
+  // @f]
+  // Both vanish exactly at a solution of the nodal contact conditions.
+  template <int dim>
+  struct StaticContactProblem<dim>::NodeState
+  {
+    double         u_nu;
+    Tensor<1, dim> u_tau;
+    double         s;
+    Tensor<1, dim> lambda;
+    double         q_nu;  // s + c u_nu
+    Tensor<1, dim> q_tau; // lambda + c u_tau
+  };
+
+  template <int dim>
+  typename StaticContactProblem<dim>::NodeState
+  StaticContactProblem<dim>::node_state(const ContactNode<dim> &node,
+                                        const Vector<double>   &residual) const
+  {
+    Tensor<1, dim> u, traction;
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        u[c]        = solution(node.dofs[c]);
+        traction[c] = -residual(node.dofs[c]) / node.mass;
+      }
+    NodeState m;
+    m.u_nu   = u * node.normal;
+    m.u_tau  = u - m.u_nu * node.normal;
+    m.s      = traction * node.normal - data.law.remainder(m.u_nu);
+    m.lambda = traction - (traction * node.normal) * node.normal;
+    m.q_nu   = m.s + node.c * m.u_nu;
+    m.q_tau  = m.lambda + node.c * m.u_tau;
+    return m;
+  }
+
+  // The projection onto the friction disk $|\lambda| \le F_b$.
+  template <int dim>
+  Tensor<1, dim>
+  project_on_disk(const Tensor<1, dim> &q, const double F_b)
+  {
+    return q.norm() <= F_b ? q : F_b / q.norm() * q;
+  }
+
+  // @sect4{The branches}
+
+  // The branch of each node follows from the projections: $q_\nu < 0$
+  // separating, $0 \le q_\nu \le a$ stick (held at $u_\nu = 0$), $q_\nu >
+  // a$ penetrating; $|q_\tau| \le F_b$ stick ($u_\tau = 0$), otherwise
+  // slip. Returns the number of nodes whose branches changed.
+  template <int dim>
+  unsigned int
+  StaticContactProblem<dim>::update_active_set(const Vector<double> &residual)
+  {
+    unsigned int n_changed = 0;
+    for (ContactNode<dim> &node : contact_nodes)
+      {
+        const NodeState        m  = node_state(node, residual);
+        const NormalBranch     nb = m.q_nu < 0 ? NormalBranch::separating :
+                                    m.q_nu <= data.law.jump() ?
+                                                 NormalBranch::stick :
+                                                 NormalBranch::penetrating;
+        const TangentialBranch tb = m.q_tau.norm() <= data.friction_bound ?
+                                      TangentialBranch::stick :
+                                      TangentialBranch::slip;
+        if (nb != node.normal_branch || tb != node.tangential_branch)
+          ++n_changed;
+        node.normal_branch     = nb;
+        node.tangential_branch = tb;
+      }
+    return n_changed;
+  }
+
+  // The nonsmooth residual: equilibrium $R$ on the free degrees of freedom
+  // that are not at contact nodes, plus the complementarity functions at
+  // the contact nodes, weighted by $m_i$ to be forces too.
+  template <int dim>
+  double
+  StaticContactProblem<dim>::nonsmooth_residual(
+    const Vector<double> &residual) const
+  {
+    Vector<double> free_part(residual);
+    double         contact_part = 0;
+    for (const ContactNode<dim> &node : contact_nodes)
+      {
+        for (unsigned int c = 0; c < dim; ++c)
+          free_part(node.dofs[c]) = 0;
+        const NodeState m = node_state(node, residual);
+        const double    C_nu =
+          m.s - std::min(std::max(m.q_nu, 0.), data.law.jump());
+        const Tensor<1, dim> C_tau =
+          m.lambda - project_on_disk(m.q_tau, data.friction_bound);
+        contact_part +=
+          node.mass * node.mass * (C_nu * C_nu + C_tau.norm_square());
+      }
+    return std::sqrt(free_part.norm_sqr() + contact_part);
+  }
+
+  // @sect4{The Newton system}
+
+  // On the current branches the problem is smooth, and one Newton step
+  // minimises its quadratic model $\frac12 x\cdot(K + L)x - g\cdot x$
+  // over the displacements that satisfy the held conditions:
+  // - a stick node in the normal direction: $x_i\cdot\nu_i = 0$;
+  // - a stick node in the tangential direction: $x_i - (x_i\cdot\nu_i)
+  //   \nu_i = 0$.
+  //
+  // Free branches add the nodal force $f_i$ of the laws and its
+  // derivative $L_i$, with $g_i = F_i + L_i u_i - f_i$:
+  // - penetrating: $f_i = m_i (a + p(u_\nu))\nu$, $L_i = m_i p'(u_\nu)
+  //   \nu\otimes\nu$ (negative on a falling segment of the law);
+  // - slip: $f_i = m_i F_b d$, $d = q_\tau/|q_\tau|$, and the
+  //   condensed tangent of the friction disk $L_i = m_i F_b c /(|q_\tau| -
+  //   F_b)\,(I - \nu\otimes\nu - d\otimes d)$, which vanishes in 2D (the
+  //   denominator is kept above $|q_\tau|/100$ for nodes that barely
+  //   slip).
+  //
+  // The held conditions are linear constraints between the components of
+  // a node, solved for its component of largest $|\nu_c|$; deal.II's
+  // AffineConstraints eliminates them while assembling, as step-41 does
+  // for its active set.
+  template <int dim>
+  void
+  StaticContactProblem<dim>::assemble_newton_system(
+    const Vector<double> &residual)
+  {
+    newton_constraints.clear();
+    newton_constraints.merge(clamped_constraints);
+    for (const ContactNode<dim> &node : contact_nodes)
+      {
+        const bool normal_held = node.normal_branch == NormalBranch::stick;
+        const bool tangent_held =
+          node.tangential_branch == TangentialBranch::stick;
+        unsigned int k = 0;
+        for (unsigned int c = 1; c < dim; ++c)
+          if (std::abs(node.normal[c]) > std::abs(node.normal[k]))
+            k = c;
+        if (normal_held && tangent_held) // x_i = 0
+          for (unsigned int c = 0; c < dim; ++c)
+            newton_constraints.add_line(node.dofs[c]);
+        else if (normal_held) // x_k = -sum_{c != k} nu_c/nu_k x_c
+          {
+            newton_constraints.add_line(node.dofs[k]);
+            for (unsigned int c = 0; c < dim; ++c)
+              if (c != k && node.normal[c] != 0)
+                newton_constraints.add_entry(node.dofs[k],
+                                             node.dofs[c],
+                                             -node.normal[c] / node.normal[k]);
+          }
+        else if (tangent_held) // x_c = nu_c/nu_k x_k for c != k
+          for (unsigned int c = 0; c < dim; ++c)
+            if (c != k)
+              {
+                newton_constraints.add_line(node.dofs[c]);
+                if (node.normal[c] != 0)
+                  newton_constraints.add_entry(node.dofs[c],
+                                               node.dofs[k],
+                                               node.normal[c] / node.normal[k]);
+              }
+      }
+    newton_constraints.close();
+
+    assemble_system(newton_constraints, newton_matrix, newton_rhs);
+
+    // the nodal terms of the free branches
+    FullMatrix<double>                   node_matrix(dim, dim);
+    Vector<double>                       node_rhs(dim);
+    std::vector<types::global_dof_index> node_dofs(dim);
+    for (const ContactNode<dim> &node : contact_nodes)
+      {
+        const NodeState      m  = node_state(node, residual);
+        const Tensor<1, dim> nu = node.normal;
+        Tensor<2, dim>       L;
+        Tensor<1, dim>       f;
+        if (node.normal_branch == NormalBranch::penetrating)
+          {
+            f +=
+              node.mass * (data.law.jump() + data.law.remainder(m.u_nu)) * nu;
+            L += node.mass * data.law.remainder_derivative(m.u_nu) *
+                 outer_product(nu, nu);
+          }
+        if (node.tangential_branch == TangentialBranch::slip)
+          {
+            const double         F_b    = data.friction_bound;
+            const double         qn     = m.q_tau.norm();
+            const Tensor<1, dim> d      = m.q_tau / qn;
+            const double         excess = std::max(qn - F_b, 1e-2 * qn);
+            const Tensor<2, dim> tangent =
+              node.mass * F_b * node.c / excess *
+              (unit_symmetric_tensor<dim>() - outer_product(nu, nu) -
+               outer_product(d, d));
+            L += tangent;
+            f += node.mass * F_b * d + tangent * m.u_tau;
+          }
+        Tensor<1, dim> u;
+        for (unsigned int c = 0; c < dim; ++c)
+          u[c] = solution(node.dofs[c]);
+        const Tensor<1, dim> g = L * u - f;
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            node_dofs[i] = node.dofs[i];
+            node_rhs(i)  = g[i];
+            for (unsigned int j = 0; j < dim; ++j)
+              node_matrix(i, j) = L[i][j];
+          }
+        newton_constraints.distribute_local_to_global(
+          node_matrix, node_rhs, node_dofs, newton_matrix, newton_rhs);
+      }
+  }
+
+  // @sect4{The energy}
+
+  // $J(u) = \frac12 u\cdot K u - F_n\cdot u + \sum_i m_i [j_\nu(u_{i,\nu})
+  // + F_b |u_{i,\tau}|]$, the function the line search decreases.
+  template <int dim>
+  double
+  StaticContactProblem<dim>::energy(const Vector<double> &u) const
+  {
+    double J = 0.5 * stiffness_matrix.matrix_norm_square(u) - load * u;
+    for (const ContactNode<dim> &node : contact_nodes)
+      {
+        Tensor<1, dim> v;
+        for (unsigned int c = 0; c < dim; ++c)
+          v[c] = u(node.dofs[c]);
+        const double u_nu = v * node.normal;
+        J +=
+          node.mass * (data.law.potential(u_nu) +
+                       data.friction_bound * (v - u_nu * node.normal).norm());
+      }
+    return J;
+  }
+
+  // @sect4{StaticContactProblem::solve}
+
+  // The primal-dual active set iteration: compute the residual, update the
+  // branches, stop when no branch changed and the nonsmooth residual is
+  // below the tolerance (relative to $|F_n|$), else solve the Newton
+  // system on the current branches with a direct solver and take the
+  // step, halved while it does not decrease $J$.
+  template <int dim>
+  void
+  StaticContactProblem<dim>::solve()
+  {
+    const double   tolerance = 1e-11 * load.l2_norm();
+    Vector<double> residual(dof_handler.n_dofs());
+    newton_iterations = 0;
+    for (unsigned int iteration = 0;; ++iteration)
+      {
+        stiffness_matrix.vmult(residual, solution);
+        residual -= load;
+        const unsigned int n_changed = update_active_set(residual);
+        const double       r         = nonsmooth_residual(residual);
+        if ((n_changed == 0 && r <= tolerance) || r <= 1e-2 * tolerance)
+          break;
+        AssertThrow(iteration < 50,
+                    ExcMessage("The active set Newton method did not "
+                               "converge in 50 iterations."));
+
+        assemble_newton_system(residual);
+        SparseDirectUMFPACK direct_solver;
+        direct_solver.initialize(newton_matrix);
+        Vector<double> trial(newton_rhs);
+        direct_solver.solve(trial);
+        newton_constraints.distribute(trial);
+
+        // backtracking on J: the full step unless it raises the energy
+        Vector<double> direction(trial);
+        direction -= solution;
+        const double J0 = energy(solution);
+        for (double theta = 1; theta >= 1. / 1024; theta /= 2)
+          {
+            trial = solution;
+            trial.add(theta, direction);
+            const double J = energy(trial);
+            if (J <= J0 + 1e-12 * (std::abs(J0) + std::abs(J)))
+              break;
+          }
+        solution = trial;
+        ++newton_iterations;
+      }
+  }
+
+  // @sect4{StaticContactProblem::run}
+
+  // One load value: assemble the load at $t$ and solve.
+  template <int dim>
+  void
+  StaticContactProblem<dim>::run(const double t)
+  {
+    time = t;
+    assemble_system(clamped_constraints, stiffness_matrix, load);
+    solve();
+  }
+
+  // @sect4{StaticContactProblem::output_results}
+
+  // Three files per load value: the displacement for ParaView
+  // (solution-NN.vtu), the contact quantities along $\Gamma_3$
+  // (contact-NN.csv: $u_\nu$, $u_\tau$, $-\sigma_\nu$, $\sigma_\tau$ and
+  // the branches; the traction is $-R_i/m_i$) and the nodal displacement
+  // in full double precision (displacement-NN.txt, for the comparison
+  // with the full program). A short summary line goes to the terminal.
+  template <int dim>
+  void
+  StaticContactProblem<dim>::output_results(const unsigned int load_step) const
+  {
+    char suffix[16];
+    std::snprintf(suffix, sizeof(suffix), "%02u", load_step);
+
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(dim,
+                     DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(solution,
+                             std::vector<std::string>(dim, "displacement"),
+                             DataOut<dim>::type_dof_data,
+                             interpretation);
+    data_out.build_patches();
+    std::ofstream vtu(std::string("solution-") + suffix + ".vtu");
+    data_out.write_vtu(vtu);
+
+    Vector<double> residual(dof_handler.n_dofs());
+    stiffness_matrix.vmult(residual, solution);
+    residual -= load;
+    std::ofstream csv(std::string("contact-") + suffix + ".csv");
+    csv << "x,u_nu,u_tau,minus_sigma_nu,sigma_tau,normal_branch,"
+           "tangential_branch\n";
+    unsigned int n_normal[3] = {0, 0, 0}, n_tangential[2] = {0, 0};
+    for (const ContactNode<dim> &node : contact_nodes)
+      {
+        const NodeState m = node_state(node, residual);
+        csv << std::setprecision(10) << node.position[0] << ',' << m.u_nu << ','
+            << m.u_tau[0] << ',' << m.s + data.law.remainder(m.u_nu) << ','
+            << m.lambda[0] << ',' << static_cast<int>(node.normal_branch) << ','
+            << static_cast<int>(node.tangential_branch) << '\n';
+        ++n_normal[static_cast<int>(node.normal_branch)];
+        ++n_tangential[static_cast<int>(node.tangential_branch)];
+      }
+
+    std::FILE *nodal =
+      std::fopen((std::string("displacement-") + suffix + ".txt").c_str(), "w");
+    std::vector<bool> written(triangulation.n_vertices(), false);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        if (!written[cell->vertex_index(v)])
+          {
+            written[cell->vertex_index(v)] = true;
+            for (unsigned int c = 0; c < dim; ++c)
+              std::fprintf(nodal, "%.17g ", cell->vertex(v)[c]);
+            for (unsigned int c = 0; c < dim; ++c)
+              std::fprintf(nodal,
+                           c + 1 < dim ? "%.17g " : "%.17g\n",
+                           solution(cell->vertex_dof_index(v, c)));
+          }
+    std::fclose(nodal);
+
+    std::cout << "t = " << std::fixed << std::setprecision(2) << time << ": "
+              << newton_iterations
+              << " Newton iterations, normal separating/stick/penetrating "
+              << n_normal[0] << '/' << n_normal[1] << '/' << n_normal[2]
+              << ", tangential stick/slip " << n_tangential[0] << '/'
+              << n_tangential[1] << std::defaultfloat << std::endl;
+  }
+
+  // @sect4{StaticContactProblem::compute_errors}
+
+  // $E_H = \|u - u_h\|_{L^2}$ and $E_V = \|\varepsilon(u - u_h)\|_{L^2}$
+  // (doc/theory.md section 9.7), with a 4-point Gauss rule per direction.
+  template <int dim>
+  template <class Exact>
+  std::pair<double, double>
+  StaticContactProblem<dim>::compute_errors(const Exact &exact) const
+  {
+    const QGauss<dim>                    quadrature(4);
+    FEValues<dim>                        fe_values(fe,
+                            quadrature,
+                            update_values | update_gradients |
+                              update_quadrature_points | update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<Tensor<1, dim>>          values(quadrature.size());
+    std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
+    double                               E_H2 = 0, E_V2 = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_values(solution, values);
+        fe_values[displacement].get_function_symmetric_gradients(solution,
+                                                                 strains);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const Point<dim> &x = fe_values.quadrature_point(q);
+            E_H2 += (exact.exact_value(x) - values[q]).norm_square() *
+                    fe_values.JxW(q);
+            const SymmetricTensor<2, dim> e =
+              symmetrize(exact.exact_gradient(x)) - strains[q];
+            E_V2 += scalar_product(e, e) * fe_values.JxW(q);
+          }
+      }
+    return {std::sqrt(E_H2), std::sqrt(E_V2)};
+  }
+} // namespace Step1
+
+// @sect3{The main function}
+
+// First the block at four load values $t = 0.25, 0.5, 0.75, 1$, each one
+// static problem started from the previous solution; then the
+// manufactured solution on the meshes $h = 1/4, \dots, 1/64$, with the
+// errors and their observed orders in a ConvergenceTable.
+int
+main()
+{
+  try
+    {
+      using namespace Step1;
+
+      std::cout << "The block, 3 global refinements:" << std::endl;
+      const BlockData         block;
+      StaticContactProblem<2> block_problem(block, 3);
+      std::cout << "  " << block_problem.n_dofs()
+                << " dofs, alpha_nu = " << block.law.alpha << std::endl;
+      for (unsigned int n = 1; n <= 4; ++n)
+        {
+          block_problem.run(0.25 * n);
+          std::cout << "  ";
+          block_problem.output_results(n);
+        }
+
+      std::cout << "\nThe manufactured solution:" << std::endl;
+      const ManufacturedData manufactured;
+      ConvergenceTable       table;
+      for (unsigned int refinements = 2; refinements <= 6; ++refinements)
+        {
+          StaticContactProblem<2> problem(manufactured, refinements);
+          problem.run(1);
+          const auto [E_H, E_V] = problem.compute_errors(manufactured);
+          table.add_value("1/h", 1u << refinements);
+          table.add_value("dofs", problem.n_dofs());
+          table.add_value("Newton", problem.newton_iterations);
+          table.add_value("E_H", E_H);
+          table.add_value("E_V", E_V);
+        }
+      for (const std::string column : {"E_H", "E_V"})
+        {
+          table.set_scientific(column, true);
+          table.set_precision(column, 3);
+          table.evaluate_convergence_rates(
+            column, ConvergenceTable::reduction_rate_log2);
+        }
+      table.write_text(std::cout);
+    }
+  catch (std::exception &exc)
+    {
+      std::cerr << "\nException: " << exc.what() << "\nAborting!" << std::endl;
+      return 1;
+    }
+  return 0;
+}

@@ -1,0 +1,31 @@
+"""plot_convergence.py TABLE PNG: the errors E_H, E_V, E_u of the table
+that 'step-2 convergence L' prints (saved to TABLE) against h, log-log,
+with a slope-1 line; written to PNG (doc/convergence.png is made by
+  ./step-2 convergence 4 > table.txt && python3 doc/plot_convergence.py table.txt doc/convergence.png)."""
+import sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+lines = open(sys.argv[1]).read().splitlines()
+header = next(i for i, l in enumerate(lines) if l.split()[:2] == ["level", "h"])
+rows = [l.split() for l in lines[header + 1:] if l.strip()]
+h = np.array([float(r[1]) for r in rows])
+# columns: level h k dofs E_H [rate] E_V [rate] E_u [rate] Newton; the
+# first row has '-' in place of each rate
+errors = {"E_H": [], "E_V": [], "E_u": []}
+for r in rows:
+    for name, column in zip(errors, (4, 6, 8)):
+        errors[name].append(float(r[column]))
+fig, ax = plt.subplots(figsize=(5, 4))
+for name, values in errors.items():
+    ax.loglog(h, values, "o-", label=name)
+ax.loglog(h, errors["E_V"][0] * h / h[0], "k--", label="order 1")
+ax.set_xlabel("h (k = h/√2)")
+ax.set_ylabel("error")
+ax.set_title("step-2: coupled refinement")
+ax.legend()
+fig.tight_layout()
+fig.savefig(sys.argv[2], dpi=100)

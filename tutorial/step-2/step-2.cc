@@ -1,0 +1,1217 @@
+/* ---------------------------------------------------------------------
+ *
+ * hemicontact tutorial, step-2: the paper's step.
+ *
+ * Problem 4.4 of W. Han and W. Han, J. Comput. Appl. Math. 2019: a
+ * Kelvin-Voigt body in dynamic contact with a foundation, a nonmonotone
+ * (exponential) normal damped response and Tresca friction on Gamma_3,
+ * backward Euler in the velocity w and the left-point rule for the
+ * displacement u, linear elements, nodal quadrature on Gamma_3. Each time
+ * step is the minimisation of a nonsmooth step energy, solved by a
+ * primal-dual active set (semismooth Newton) method. A manufactured
+ * solution measures E_H and E_V against k and h.
+ *
+ * The introduction (doc/intro.md) states the model, the scheme and the
+ * algorithm; the results (doc/results.md) show what this program prints.
+ * It computes the same discrete solution as the full program hemicontact
+ * (problem/class = dynamic, time scheme = left point, the exponential law,
+ * Tresca): tests/tutorial/step_2_vs_hemicontact.sh compares the two.
+ *
+ * --------------------------------------------------------------------- */
+
+// @sect3{Include files}
+//
+// Only deal.II: the mesh, Q1 vector elements, matrices and a direct
+// solver, and the output classes.
+#include <deal.II/base/convergence_table.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace Step2
+{
+  using namespace dealii;
+
+  // @sect3{The material}
+  //
+  // Kelvin-Voigt: sigma = A eps(w) + B eps(u), with isotropic A (the
+  // viscosity) and B (the elasticity), each given by Lame constants.
+  struct LamePair
+  {
+    double mu;
+    double lambda;
+
+    template <int dim>
+    SymmetricTensor<2, dim>
+    stress(const SymmetricTensor<2, dim> &eps) const
+    {
+      return 2 * mu * eps + lambda * trace(eps) * unit_symmetric_tensor<dim>();
+    }
+
+    // Div (C eps(v)) = mu Laplace(v) + (mu + lambda) grad div v, from the
+    // Hessians hessian[c][i][j] = d_i d_j v_c.
+    template <int dim>
+    Tensor<1, dim>
+    stress_divergence(const Tensor<3, dim> &hessian) const
+    {
+      Tensor<1, dim> result;
+      for (unsigned int c = 0; c < dim; ++c)
+        for (unsigned int j = 0; j < dim; ++j)
+          result[c] += mu * hessian[c][j][j] + (mu + lambda) * hessian[j][j][c];
+      return result;
+    }
+  };
+
+  struct Material
+  {
+    double   density;
+    LamePair viscosity;  // A
+    LamePair elasticity; // B
+  };
+
+  // @sect3{The contact laws}
+  //
+  // The normal damped response -sigma_nu in dj_nu(w_nu) with the
+  // exponential law: dj_nu(r) = 0 for r < 0, [0, a] at r = 0 and
+  // (a - b) exp(-beta r) + b for r > 0. It is split into the convex jump
+  // d(a r_+) and the Lipschitz remainder p(r) = (a - b)(exp(-beta r) - 1)
+  // for r > 0 (zero for r <= 0), whose primitive is P. The potential is
+  // j_nu(r) = a r_+ + P(r).
+  struct ExponentialLaw
+  {
+    double a, b, beta;
+
+    double
+    remainder(const double r) const
+    {
+      return r > 0 ? (a - b) * (std::exp(-beta * r) - 1.) : 0.;
+    }
+    double
+    remainder_derivative(const double r) const
+    {
+      return r > 0 ? -beta * (a - b) * std::exp(-beta * r) : 0.;
+    }
+    double
+    potential(const double r) const
+    {
+      if (r <= 0)
+        return 0.;
+      return a * r + (a - b) * (-std::expm1(-beta * r) / beta - r);
+    }
+    // The response where w_nu > 0, xi_nu = a + p(r).
+    double
+    response(const double r) const
+    {
+      return a + remainder(r);
+    }
+  };
+
+  // Tresca friction, -sigma_tau in d(F_b |w_tau|), is given by its bound
+  // F_b alone (a number in this program).
+
+  // @sect3{The problem data}
+  //
+  // Everything that defines one problem: the rectangle and its boundary
+  // parts, the material, the laws, the final time, the loads (the
+  // tractions take the outward normal: a manufactured traction is sigma nu),
+  // the initial values and, where one is known, the exact solution.
+  template <int dim>
+  struct ExactValues
+  {
+    Tensor<1, dim> u, w, w_dot, div_sigma;
+    Tensor<2, dim> grad_u, grad_w;
+  };
+
+  template <int dim>
+  struct ProblemData
+  {
+    using Field    = std::function<Tensor<1, dim>(const Point<dim> &, double)>;
+    using Traction = std::function<
+      Tensor<1, dim>(const Point<dim> &, const Tensor<1, dim> &, double)>;
+
+    Point<dim>                   lower_left, upper_right;
+    std::vector<unsigned int>    subdivisions;
+    std::set<types::boundary_id> clamped_ids, traction_ids, contact_ids;
+    Material                     material;
+    ExponentialLaw               normal_law;
+    double                       friction_bound;
+    double                       end_time;
+
+    Field body_force = [](const Point<dim> &, double) {
+      return Tensor<1, dim>();
+    };                         // f0
+    Traction surface_traction; // f2 on Gamma_2
+    Traction contact_traction     = [](const Point<dim> &,
+                                   const Tensor<1, dim> &,
+                                   double) { return Tensor<1, dim>(); };
+    Field    initial_displacement = body_force; // zero
+    Field    initial_velocity     = body_force; // zero
+    std::function<ExactValues<dim>(const Point<dim> &, double)> exact;
+  };
+
+  // The block [0,4]x[0,1] of the full program's prm/block_2d.prm: clamped
+  // on the left (id 0), pressed and sheared on its top (id 3), in contact
+  // with the foundation at its bottom (id 2). Its boundary sees every
+  // branch of the laws during 0 <= t <= 1: separation, normal stick,
+  // damped penetration, tangential stick and slip.
+  ProblemData<2>
+  block_problem()
+  {
+    ProblemData<2> data;
+    data.lower_left   = Point<2>(0, 0);
+    data.upper_right  = Point<2>(4, 1);
+    data.subdivisions = {4, 1};
+    data.clamped_ids  = {0};
+    data.traction_ids = {3};
+    data.contact_ids  = {2};
+    const double E = 100, nu = 0.3; // Young's modulus, Poisson's ratio
+    data.material       = {1.,
+                           {1., 1.},
+                           {E / (2 * (1 + nu)), E * nu / ((1 + nu) * (1 - 2 * nu))}};
+    data.normal_law     = {1., 0.5, 10.};
+    data.friction_bound = 0.6;
+    data.end_time       = 1;
+    // pressure rising to the right, then a lift; shear growing in time
+    data.surface_traction =
+      [](const Point<2> &p, const Tensor<1, 2> &, const double t) {
+        const double P = 3, S = 2;
+        return Tensor<1, 2>(
+          {S * std::sin(numbers::PI * t) * p[0] / 4,
+           -P * std::sin(2 * numbers::PI * t) * (0.25 + p[0] / 4)});
+      };
+    return data;
+  }
+
+  // @sect3{The manufactured solution}
+  //
+  // The exact displacement of prm/verification/mms_2d_quad_exponential.prm,
+  //
+  //   u(x, t) = sin(t) phi_1(x) + t^2 phi_2(x),
+  //   phi_1 = (1 - y) A (pos(x - 0.4)^3, pos(0.3 - x)^3 - pos(x - 0.7)^3),
+  //   phi_2 = 0.2 y (1 - y) (sin(pi x), cos(pi x)),   A = 4,
+  //
+  // on [0,1]^2 (clamped on top, contact at the bottom, nu = -e_y): along
+  // the bottom w_tau = 0 (stick) for x < 0.4 and slips beyond; w_nu < 0
+  // (separating) for x < 0.3, w_nu = 0 (normal stick) on [0.3, 0.7] and
+  // w_nu > 0 (damped) for x > 0.7. Each phi_k = Y(y) X(x) is given with
+  // its gradient and Hessian (hessian[c][i][j] = d_i d_j phi_c), each time
+  // factor with two derivatives.
+  void
+  shape(const unsigned int k,
+        const Point<2>    &p,
+        Tensor<1, 2>      &value,
+        Tensor<2, 2>      &gradient,
+        Tensor<3, 2>      &hessian)
+  {
+    const double x = p[0], y = p[1], A = 4, pi = numbers::PI;
+    const auto   pos = [](const double s) { return std::max(s, 0.); };
+    std::array<std::array<double, 3>, 2> X; // X_c, X_c', X_c''
+    std::array<double, 3>                Y; // Y, Y', Y''
+    if (k == 0)
+      {
+        const double r = pos(x - 0.4), l = pos(0.3 - x), q = pos(x - 0.7);
+        X[0] = {{A * r * r * r, 3 * A * r * r, 6 * A * r}};
+        X[1] = {{A * (l * l * l - q * q * q),
+                 -3 * A * (l * l + q * q),
+                 6 * A * (l - q)}};
+        Y    = {{1 - y, -1., 0.}};
+      }
+    else
+      {
+        X[0] = {{std::sin(pi * x),
+                 pi * std::cos(pi * x),
+                 -pi * pi * std::sin(pi * x)}};
+        X[1] = {{std::cos(pi * x),
+                 -pi * std::sin(pi * x),
+                 -pi * pi * std::cos(pi * x)}};
+        Y    = {{0.2 * y * (1 - y), 0.2 * (1 - 2 * y), -0.4}};
+      }
+    for (unsigned int c = 0; c < 2; ++c)
+      {
+        value[c]         = Y[0] * X[c][0];
+        gradient[c][0]   = Y[0] * X[c][1];
+        gradient[c][1]   = Y[1] * X[c][0];
+        hessian[c][0][0] = Y[0] * X[c][2];
+        hessian[c][0][1] = hessian[c][1][0] = Y[1] * X[c][1];
+        hessian[c][1][1]                    = Y[2] * X[c][0];
+      }
+  }
+
+  // The data follow from the equations (doc/theory.md section 4):
+  // f0 = rho w' - Div sigma, f2 = sigma nu on Gamma_2 and
+  // f3 = sigma nu + xi_nu nu + xi_tau on Gamma_3, with xi_nu in dj_nu(w_nu)
+  // and xi_tau in d(F_b|.|)(w_tau): the given multipliers 0.5 (in [0, a])
+  // and (F_b/2, 0) (in the disk) where w_nu = 0 and w_tau = 0.
+  ProblemData<2>
+  manufactured_problem()
+  {
+    ProblemData<2> data;
+    data.lower_left     = Point<2>(0, 0);
+    data.upper_right    = Point<2>(1, 1);
+    data.subdivisions   = {1, 1};
+    data.clamped_ids    = {3};
+    data.traction_ids   = {0, 1};
+    data.contact_ids    = {2};
+    data.material       = {1., {1., 1.}, {2., 1.}};
+    data.normal_law     = {1., 0.5, 2.};
+    data.friction_bound = 0.5;
+    data.end_time       = 1;
+
+    const Material material = data.material;
+    data.exact              = [material](const Point<2> &p, const double t) {
+      const double   time[2][3] = {{std::sin(t), std::cos(t), -std::sin(t)},
+                                   {t * t, 2 * t, 2.}};
+      ExactValues<2> e;
+      Tensor<3, 2>   hessian_u, hessian_w;
+      for (unsigned int k = 0; k < 2; ++k)
+        {
+          Tensor<1, 2> value;
+          Tensor<2, 2> gradient;
+          Tensor<3, 2> hessian;
+          shape(k, p, value, gradient, hessian);
+          e.u += time[k][0] * value;
+          e.w += time[k][1] * value;
+          e.w_dot += time[k][2] * value;
+          e.grad_u += time[k][0] * gradient;
+          e.grad_w += time[k][1] * gradient;
+          hessian_u += time[k][0] * hessian;
+          hessian_w += time[k][1] * hessian;
+        }
+      e.div_sigma = material.viscosity.stress_divergence(hessian_w) +
+                    material.elasticity.stress_divergence(hessian_u);
+      return e;
+    };
+    const auto exact  = data.exact;
+    const auto stress = [material](const ExactValues<2> &e) {
+      return material.viscosity.stress(symmetrize(e.grad_w)) +
+             material.elasticity.stress(symmetrize(e.grad_u));
+    };
+    data.body_force = [=](const Point<2> &p, const double t) {
+      const ExactValues<2> e = exact(p, t);
+      return material.density * e.w_dot - e.div_sigma;
+    };
+    data.surface_traction =
+      [=](const Point<2> &p, const Tensor<1, 2> &normal, const double t) {
+        return stress(exact(p, t)) * normal;
+      };
+    const ExponentialLaw law = data.normal_law;
+    const double         F_b = data.friction_bound;
+    data.contact_traction =
+      [=](const Point<2> &p, const Tensor<1, 2> &normal, const double t) {
+        const ExactValues<2> e     = exact(p, t);
+        const double         w_nu  = e.w * normal;
+        const Tensor<1, 2>   w_tau = e.w - w_nu * normal;
+        const double         zero  = 1e-13 * (1 + e.w.norm());
+        const double         xi_nu = std::abs(w_nu) <= zero ? 0.5 :
+                                     w_nu < 0               ? 0. :
+                                                              law.response(w_nu);
+        Tensor<1, 2>         xi_tau({F_b / 2, 0.});
+        if (w_tau.norm() <= zero)
+          xi_tau -= (xi_tau * normal) * normal;
+        else
+          xi_tau = F_b * w_tau / w_tau.norm();
+        return stress(e) * normal + xi_nu * normal + xi_tau;
+      };
+    data.initial_displacement = [=](const Point<2> &p, double) {
+      return exact(p, 0).u;
+    };
+    data.initial_velocity = [=](const Point<2> &p, double) {
+      return exact(p, 0).w;
+    };
+    return data;
+  }
+
+  // @sect3{Contact nodes and their branches}
+  //
+  // With nodal quadrature on Gamma_3 the contact conditions hold node by
+  // node. A node x_i of Gamma_3 carries its dofs, its weight
+  // m_i = int_{Gamma_3} phi_i, its normal, the constant c_i of the
+  // complementarity functions and the branches the active-set method
+  // assigns to it (doc/intro.md, "The algorithm"):
+  //
+  // - normal: separating (q = s + c w_nu < 0: no force, w_nu free), stick
+  //   (0 <= q <= a: w_nu = 0) or damped (q > a: force a + p(w_nu));
+  // - tangential: stick (|lambda + c w_tau| <= F_b: w_tau = 0) or slip
+  //   (lambda = F_b q/|q|, q = lambda + c w_tau).
+  enum class NormalBranch
+  {
+    separating,
+    stick,
+    damped
+  };
+
+  // The state at an iterate: w split into w_nu and w_tau, and the
+  // multipliers of the laws' convex parts from the nodal contact force
+  // G_i = -(K0 w - b)_i: s = G.nu/m_i - p(w_nu), lambda = G_tau/m_i.
+  template <int dim>
+  struct ContactNode
+  {
+    std::array<types::global_dof_index, dim> dofs;
+    Tensor<1, dim>                           normal;
+    double                                   mass = 0, c = 1;
+    NormalBranch   normal_branch = NormalBranch::separating;
+    bool           slips         = false;
+    double         w_nu = 0, s = 0;
+    Tensor<1, dim> w_tau, lambda;
+  };
+
+  // @sect3{The KelvinVoigtContact class}
+  //
+  // The structure of deal.II's tutorial programs: make_grid(),
+  // setup_system(), assemble_system() (the constant matrices M, A, B and
+  // the contact nodes), assemble_rhs() (the load of one step), solve() (the
+  // active-set Newton method for one step), output_results() and run() (the
+  // time loop). The errors against an exact solution are accumulated along
+  // the way.
+  template <int dim>
+  class KelvinVoigtContact
+  {
+  public:
+    KelvinVoigtContact(const ProblemData<dim> &data,
+                       const unsigned int      refinements,
+                       const double            time_step,
+                       const std::string      &output_directory = "");
+    void
+    run();
+
+    // E_H = max_n |w(t_n) - w_n|_L2, E_V = (k sum_n |eps(w(t_n) - w_n)|^2)^1/2,
+    // E_u = max_n |eps(u(t_n) - u_n)|_L2 over n = 1..N.
+    double       E_H = 0, E_V = 0, E_u = 0;
+    double       mesh_size = 0;
+    unsigned int n_dofs = 0, n_steps = 0, newton_iterations = 0;
+
+  private:
+    void
+    make_grid();
+    void
+    setup_system();
+    void
+    assemble_system();
+    void
+    assemble_rhs(const double time);
+    unsigned int
+    solve();
+    void
+    output_results(const unsigned int step) const;
+    void
+    accumulate_errors(const double time);
+
+    // pieces of solve()
+    unsigned int
+    update_branches(const unsigned int iteration);
+    double
+    nonsmooth_residual() const;
+    void
+    solve_linearized(Vector<double> &trial);
+    double
+    nodal_energy(const Vector<double> &v) const;
+
+    const ProblemData<dim> &data;
+    const unsigned int      refinements;
+    const double            time_step;
+    const std::string       output_directory;
+
+    Triangulation<dim>        triangulation;
+    const FESystem<dim>       fe;
+    DoFHandler<dim>           dof_handler;
+    AffineConstraints<double> clamped_constraints;
+
+    SparsityPattern      sparsity_pattern;
+    SparseMatrix<double> mass_matrix;    // rho M
+    SparseMatrix<double> elastic_matrix; // B
+    SparseMatrix<double> step_matrix;    // K0 = rho/k M + A
+    SparseMatrix<double> newton_matrix;
+
+    Vector<double> velocity;     // w_n
+    Vector<double> old_velocity; // w_{n-1}
+    Vector<double> displacement; // u_n = u_0 + k sum_{i<n} w_i
+    Vector<double> step_rhs;     // b = rho/k M w_{n-1} - B u_n + F_n
+    Vector<double> residual;     // K0 w - b
+
+    std::vector<ContactNode<dim>> contact_nodes;
+
+    // Newton converges when no branch changes and the nonsmooth residual is
+    // below tolerance |b| (plus a tiny absolute floor).
+    static constexpr double       tolerance          = 1e-12;
+    static constexpr double       absolute_tolerance = 1e-14;
+    static constexpr unsigned int max_iterations     = 50;
+  };
+
+  template <int dim>
+  KelvinVoigtContact<dim>::KelvinVoigtContact(
+    const ProblemData<dim> &data,
+    const unsigned int      refinements,
+    const double            time_step,
+    const std::string      &output_directory)
+    : data(data)
+    , refinements(refinements)
+    , time_step(time_step)
+    , output_directory(output_directory)
+    , fe(FE_Q<dim>(1), dim)
+    , dof_handler(triangulation)
+  {}
+
+  // @sect4{KelvinVoigtContact::make_grid}
+  //
+  // A subdivided rectangle whose sides carry the boundary ids 0 (left),
+  // 1 (right), 2 (bottom) and 3 (top), refined globally.
+  template <int dim>
+  void
+  KelvinVoigtContact<dim>::make_grid()
+  {
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              data.subdivisions,
+                                              data.lower_left,
+                                              data.upper_right,
+                                              true);
+    triangulation.refine_global(refinements);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      mesh_size = std::max(mesh_size, cell->diameter());
+  }
+
+  // @sect4{KelvinVoigtContact::setup_system}
+  //
+  // Q1 vector fields, zero on Gamma_1: the clamped dofs are the only
+  // constraints of the matrices. The active set adds its own constraints
+  // in each Newton iteration (solve_linearized()).
+  template <int dim>
+  void
+  KelvinVoigtContact<dim>::setup_system()
+  {
+    dof_handler.distribute_dofs(fe);
+    n_dofs = dof_handler.n_dofs();
+
+    clamped_constraints.clear();
+    for (const types::boundary_id id : data.clamped_ids)
+      VectorTools::interpolate_boundary_values(dof_handler,
+                                               id,
+                                               Functions::ZeroFunction<dim>(
+                                                 dim),
+                                               clamped_constraints);
+    clamped_constraints.close();
+
+    DynamicSparsityPattern dsp(n_dofs);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    dsp,
+                                    clamped_constraints,
+                                    true);
+    sparsity_pattern.copy_from(dsp);
+    for (SparseMatrix<double> *m :
+         {&mass_matrix, &elastic_matrix, &step_matrix, &newton_matrix})
+      m->reinit(sparsity_pattern);
+    for (Vector<double> *v :
+         {&velocity, &old_velocity, &displacement, &step_rhs, &residual})
+      v->reinit(n_dofs);
+  }
+
+  // @sect4{KelvinVoigtContact::assemble_system}
+  //
+  // The matrices that do not change in time: rho M, A, B (two-point Gauss,
+  // exact for Q1 on rectangles) and K0 = rho/k M + A; then the contact
+  // nodes.
+  template <int dim>
+  void
+  KelvinVoigtContact<dim>::assemble_system()
+  {
+    const QGauss<dim> quadrature(2);
+    FEValues<dim>     fe_values(
+      fe, quadrature, update_values | update_gradients | update_JxW_values);
+    const unsigned int n = fe.n_dofs_per_cell();
+    FullMatrix<double> cell_mass(n, n), cell_viscous(n, n), cell_elastic(n, n);
+    std::vector<types::global_dof_index> dofs(n);
+    const FEValuesExtractors::Vector     v(0);
+    const Material                      &material = data.material;
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        cell_mass    = 0;
+        cell_viscous = 0;
+        cell_elastic = 0;
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const SymmetricTensor<2, dim> eps_i =
+                fe_values[v].symmetric_gradient(i, q);
+              const SymmetricTensor<2, dim> a_i =
+                material.viscosity.stress(eps_i);
+              const SymmetricTensor<2, dim> b_i =
+                material.elasticity.stress(eps_i);
+              for (unsigned int j = 0; j < n; ++j)
+                {
+                  const double JxW = fe_values.JxW(q);
+                  cell_mass(i, j) +=
+                    material.density *
+                    (fe_values[v].value(i, q) * fe_values[v].value(j, q)) * JxW;
+                  cell_viscous(i, j) +=
+                    (a_i * fe_values[v].symmetric_gradient(j, q)) * JxW;
+                  cell_elastic(i, j) +=
+                    (b_i * fe_values[v].symmetric_gradient(j, q)) * JxW;
+                }
+            }
+        cell->get_dof_indices(dofs);
+        clamped_constraints.distribute_local_to_global(cell_mass,
+                                                       dofs,
+                                                       mass_matrix);
+        clamped_constraints.distribute_local_to_global(cell_elastic,
+                                                       dofs,
+                                                       elastic_matrix);
+        cell_viscous.add(1. / time_step, cell_mass);
+        clamped_constraints.distribute_local_to_global(cell_viscous,
+                                                       dofs,
+                                                       step_matrix);
+      }
+
+    // The contact nodes: the vertices of Gamma_3 that are not clamped, with
+    // m_i = int_{Gamma_3} phi_i, the sum of |F|/(vertices of F) over the
+    // faces F at the node (exact for Q1 on flat faces), the normal averaged
+    // with the same weights, and c_i = (mean diagonal of K0 at the node)/m_i.
+    FEFaceValues<dim> fe_face(fe, QGauss<dim - 1>(1), update_normal_vectors);
+    std::map<types::global_dof_index, ContactNode<dim>> nodes;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && data.contact_ids.count(face->boundary_id()))
+          {
+            fe_face.reinit(cell, face);
+            const double share = face->measure() / face->n_vertices();
+            for (const unsigned int v : face->vertex_indices())
+              {
+                ContactNode<dim> &node = nodes[face->vertex_dof_index(v, 0)];
+                for (unsigned int c = 0; c < dim; ++c)
+                  node.dofs[c] = face->vertex_dof_index(v, c);
+                node.mass += share;
+                node.normal += share * fe_face.normal_vector(0);
+              }
+          }
+    contact_nodes.clear();
+    for (auto &[dof, node] : nodes)
+      if (!clamped_constraints.is_constrained(dof))
+        {
+          double diagonal = 0;
+          for (unsigned int c = 0; c < dim; ++c)
+            diagonal += step_matrix.diag_element(node.dofs[c]) / dim;
+          node.c = diagonal / node.mass;
+          node.normal /= node.normal.norm();
+          contact_nodes.push_back(node);
+        }
+  }
+
+  // @sect4{KelvinVoigtContact::assemble_rhs}
+  //
+  // The right-hand side of step n,
+  //   b = rho/k M w_{n-1} - B u_n + F_n,
+  // F_n.v = int_Omega f0(t_n).v + int_Gamma2 f2(t_n).v (+ int_Gamma3 f3.v),
+  // the loads by three-point Gauss rules.
+  template <int dim>
+  void
+  KelvinVoigtContact<dim>::assemble_rhs(const double time)
+  {
+    const QGauss<dim>                    quadrature(3);
+    const QGauss<dim - 1>                face_quadrature(3);
+    FEValues<dim>                        fe_values(fe,
+                            quadrature,
+                            update_values | update_quadrature_points |
+                              update_JxW_values);
+    FEFaceValues<dim>                    fe_face(fe,
+                              face_quadrature,
+                              update_values | update_quadrature_points |
+                                update_normal_vectors | update_JxW_values);
+    const FEValuesExtractors::Vector     v(0);
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    Vector<double>                       cell_rhs(n);
+    std::vector<types::global_dof_index> dofs(n);
+    Vector<double>                       load(n_dofs);
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell_rhs = 0;
+        fe_values.reinit(cell);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const Tensor<1, dim> f0 =
+              data.body_force(fe_values.quadrature_point(q), time);
+            for (unsigned int i = 0; i < n; ++i)
+              cell_rhs(i) += f0 * fe_values[v].value(i, q) * fe_values.JxW(q);
+          }
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() &&
+              (data.traction_ids.count(face->boundary_id()) ||
+               data.contact_ids.count(face->boundary_id())))
+            {
+              const bool on_traction =
+                data.traction_ids.count(face->boundary_id()) > 0;
+              fe_face.reinit(cell, face);
+              for (const unsigned int q : fe_face.quadrature_point_indices())
+                {
+                  const Point<dim>     &x      = fe_face.quadrature_point(q);
+                  const Tensor<1, dim> &normal = fe_face.normal_vector(q);
+                  const Tensor<1, dim>  f =
+                    on_traction ? data.surface_traction(x, normal, time) :
+                                   data.contact_traction(x, normal, time);
+                  for (unsigned int i = 0; i < n; ++i)
+                    cell_rhs(i) += f * fe_face[v].value(i, q) * fe_face.JxW(q);
+                }
+            }
+        cell->get_dof_indices(dofs);
+        clamped_constraints.distribute_local_to_global(cell_rhs, dofs, load);
+      }
+
+    Vector<double> tmp(n_dofs);
+    mass_matrix.vmult(step_rhs, old_velocity);
+    step_rhs /= time_step;
+    elastic_matrix.vmult(tmp, displacement);
+    step_rhs -= tmp;
+    step_rhs += load;
+    clamped_constraints.set_zero(step_rhs);
+  }
+
+  // @sect3{The active-set Newton method}
+  //
+  // Step n minimises
+  //   J_n(w) = 1/2 w.K0 w - b.w + sum_i m_i [ j_nu(w_nu) + F_b |w_tau| ]
+  // (the nodal sum is the nodal quadrature of the Gamma_3 integrals). Its
+  // stationarity condition at node i is G_i = m_i xi_i, G_i = -(K0 w - b)_i
+  // the nodal contact force, xi_i in dj_nu(w_nu) nu + F_b d|.|(w_tau). The
+  // functions below evaluate the node states, choose the branches from the
+  // complementarity functions, linearise and solve, and damp the update by
+  // backtracking on J_n.
+
+  // @sect4{KelvinVoigtContact::update_branches}
+  //
+  // The complementarity functions
+  //   C_nu  = s - P_[0,a](s + c w_nu),
+  //   C_tau = lambda - P_{|.| <= F_b}(lambda + c w_tau)
+  // vanish exactly at the solution; their projections decide the branches
+  // (see ContactNode). After the first iteration of a step a node does not
+  // jump between separating and damped directly but passes through normal
+  // stick, the branch between them: groups of nodes at the edge of a
+  // lifting contact zone would otherwise alternate between the two. Returns
+  // the number of nodes whose branches changed.
+  template <int dim>
+  unsigned int
+  KelvinVoigtContact<dim>::update_branches(const unsigned int iteration)
+  {
+    const double a         = data.normal_law.a;
+    unsigned int n_changed = 0;
+    for (ContactNode<dim> &node : contact_nodes)
+      {
+        Tensor<1, dim> w, traction;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            w[c]        = velocity(node.dofs[c]);
+            traction[c] = -residual(node.dofs[c]) / node.mass;
+          }
+        node.w_nu  = w * node.normal;
+        node.w_tau = w - node.w_nu * node.normal;
+        node.s = traction * node.normal - data.normal_law.remainder(node.w_nu);
+        node.lambda = traction - (traction * node.normal) * node.normal;
+
+        const double q_nu   = node.s + node.c * node.w_nu;
+        NormalBranch normal = q_nu < 0  ? NormalBranch::separating :
+                              q_nu <= a ? NormalBranch::stick :
+                                          NormalBranch::damped;
+        if (iteration > 0 && a > 0 &&
+            ((node.normal_branch == NormalBranch::separating &&
+              normal == NormalBranch::damped) ||
+             (node.normal_branch == NormalBranch::damped &&
+              normal == NormalBranch::separating)))
+          normal = NormalBranch::stick;
+        const bool slips =
+          (node.lambda + node.c * node.w_tau).norm() > data.friction_bound;
+
+        if (normal != node.normal_branch || slips != node.slips)
+          ++n_changed;
+        node.normal_branch = normal;
+        node.slips         = slips;
+      }
+    return n_changed;
+  }
+
+  // @sect4{KelvinVoigtContact::nonsmooth_residual}
+  //
+  // Equilibrium on the free dofs away from Gamma_3, and the complementarity
+  // functions (as nodal forces m_i C) at the contact nodes.
+  template <int dim>
+  double
+  KelvinVoigtContact<dim>::nonsmooth_residual() const
+  {
+    Vector<double> free_part(residual);
+    for (const ContactNode<dim> &node : contact_nodes)
+      for (unsigned int c = 0; c < dim; ++c)
+        free_part(node.dofs[c]) = 0;
+    double sum = free_part.norm_sqr();
+
+    const double a = data.normal_law.a, F_b = data.friction_bound;
+    for (const ContactNode<dim> &node : contact_nodes)
+      {
+        const double C_nu =
+          node.s - std::clamp(node.s + node.c * node.w_nu, 0., a);
+        const Tensor<1, dim> q = node.lambda + node.c * node.w_tau;
+        const Tensor<1, dim> C_tau =
+          node.lambda - (q.norm() <= F_b ? q : F_b / q.norm() * q);
+        sum += node.mass * node.mass * (C_nu * C_nu + C_tau.norm_square());
+      }
+    return std::sqrt(sum);
+  }
+
+  // @sect4{KelvinVoigtContact::solve_linearized}
+  //
+  // One Newton step on the current branches: minimise
+  //   1/2 x.(K0 + sum L_i) x - g.x
+  // over the fields that satisfy the constraints of the stick branches, with
+  // the free branches' nodal forces linearised about the iterate w_k,
+  // G_i ~ f_i + L_i (x - w_k):
+  //
+  // - damped: f_i = m_i (a + p(w_nu)) nu, L_i = m_i p'(w_nu) nu (x) nu;
+  // - slip: f_i = m_i F_b d + T_i w_tau, L_i = T_i, with d = q/|q|,
+  //   q = lambda + c w_tau, the semismooth Newton tangent of the friction
+  //   disk T_i = m_i F_b c/(|q| - F_b) (I - nu (x) nu - d (x) d) (zero in 2D;
+  //   the floor on |q| - F_b bounds it for nodes that barely slip);
+  // - separating: no force; stick branches: a constraint instead.
+  //
+  // The constraints w.nu = 0 (normal stick) and w_tau = 0 (tangential stick)
+  // are rows of an AffineConstraints object (with the clamped dofs), and the
+  // system is condensed and solved by UMFPACK, as the active set of
+  // deal.II's step-41 is.
+  template <int dim>
+  void
+  KelvinVoigtContact<dim>::solve_linearized(Vector<double> &trial)
+  {
+    newton_matrix.copy_from(step_matrix);
+    Vector<double>            newton_rhs(step_rhs);
+    AffineConstraints<double> constraints;
+    constraints.merge(clamped_constraints);
+
+    const double a = data.normal_law.a, F_b = data.friction_bound;
+    for (const ContactNode<dim> &node : contact_nodes)
+      {
+        const Tensor<1, dim> &nu = node.normal;
+
+        Tensor<2, dim> L;
+        Tensor<1, dim> f;
+        if (node.normal_branch == NormalBranch::damped)
+          {
+            f += node.mass * (a + data.normal_law.remainder(node.w_nu)) * nu;
+            L += node.mass * data.normal_law.remainder_derivative(node.w_nu) *
+                 outer_product(nu, nu);
+          }
+        if (node.slips)
+          {
+            const Tensor<1, dim> q = node.lambda + node.c * node.w_tau;
+            const Tensor<1, dim> d = q / q.norm();
+            const double   excess  = std::max(q.norm() - F_b, 1e-2 * q.norm());
+            Tensor<2, dim> T       = unit_symmetric_tensor<dim>();
+            T -= outer_product(nu, nu) + outer_product(d, d);
+            T *= node.mass * F_b * node.c / excess;
+            L += T;
+            f += node.mass * F_b * d + T * node.w_tau;
+          }
+
+        // K0 + L_i, and g_i = b_i + L_i w_k - f_i
+        Tensor<1, dim> w_k;
+        for (unsigned int c = 0; c < dim; ++c)
+          w_k[c] = velocity(node.dofs[c]);
+        const Tensor<1, dim> g = L * w_k - f;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            newton_rhs(node.dofs[c]) += g[c];
+            for (unsigned int e = 0; e < dim; ++e)
+              if (L[c][e] != 0)
+                newton_matrix.add(node.dofs[c], node.dofs[e], L[c][e]);
+          }
+
+        // The stick constraints, written on the component p where |nu_p| is
+        // largest: w.nu = 0 is w_p = -sum_{c != p} nu_c/nu_p w_c, and
+        // w_tau = 0 (w parallel to nu) is w_c = nu_c/nu_p w_p for c != p.
+        const bool normal_stick     = node.normal_branch == NormalBranch::stick;
+        const bool tangential_stick = !node.slips;
+        if (!normal_stick && !tangential_stick)
+          continue;
+        unsigned int p = 0;
+        for (unsigned int c = 1; c < dim; ++c)
+          if (std::abs(nu[c]) > std::abs(nu[p]))
+            p = c;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            if (normal_stick && tangential_stick) // w = 0
+              constraints.add_line(node.dofs[c]);
+            else if (normal_stick && c == p)
+              {
+                constraints.add_line(node.dofs[p]);
+                for (unsigned int e = 0; e < dim; ++e)
+                  if (e != p && nu[e] != 0)
+                    constraints.add_entry(node.dofs[p],
+                                          node.dofs[e],
+                                          -nu[e] / nu[p]);
+              }
+            else if (tangential_stick && c != p)
+              {
+                constraints.add_line(node.dofs[c]);
+                if (nu[c] != 0)
+                  constraints.add_entry(node.dofs[c],
+                                        node.dofs[p],
+                                        nu[c] / nu[p]);
+              }
+          }
+      }
+    constraints.close();
+    constraints.condense(newton_matrix, newton_rhs);
+
+    SparseDirectUMFPACK direct_solver;
+    direct_solver.initialize(newton_matrix);
+    direct_solver.vmult(trial, newton_rhs);
+    constraints.distribute(trial);
+  }
+
+  // @sect4{The step energy for the line search}
+  //
+  // J_n(w + theta d) - J_n(w)
+  //   = theta d.(K0 w - b) + theta^2/2 d.K0 d + nodal part,
+  // the nodal part m_i [ j_nu(w_nu) + F_b |w_tau| ] summed over Gamma_3.
+  template <int dim>
+  double
+  KelvinVoigtContact<dim>::nodal_energy(const Vector<double> &v) const
+  {
+    double energy = 0;
+    for (const ContactNode<dim> &node : contact_nodes)
+      {
+        Tensor<1, dim> w;
+        for (unsigned int c = 0; c < dim; ++c)
+          w[c] = v(node.dofs[c]);
+        const double w_nu = w * node.normal;
+        energy +=
+          node.mass * (data.normal_law.potential(w_nu) +
+                       data.friction_bound * (w - w_nu * node.normal).norm());
+      }
+    return energy;
+  }
+
+  // @sect4{KelvinVoigtContact::solve}
+  //
+  // The active-set Newton method for one step, started from w_{n-1}:
+  // branches from the complementarity functions, stop when no branch
+  // changed and the nonsmooth residual is below the tolerance (or far
+  // below it), else a Newton step on the branches, damped by halving
+  // theta until J_n decreases (the full step whenever it does not raise
+  // J_n beyond round-off). Returns the number of Newton steps.
+  template <int dim>
+  unsigned int
+  KelvinVoigtContact<dim>::solve()
+  {
+    const double   target = tolerance * step_rhs.l2_norm() + absolute_tolerance;
+    Vector<double> trial(n_dofs), direction(n_dofs), K_d(n_dofs),
+      candidate(n_dofs);
+
+    step_matrix.vmult(residual, velocity);
+    residual -= step_rhs;
+    for (unsigned int iteration = 0;; ++iteration)
+      {
+        const unsigned int n_changed = update_branches(iteration);
+        const double       res       = nonsmooth_residual();
+        if ((n_changed == 0 && res <= target) || res <= 1e-2 * target)
+          return iteration;
+        AssertThrow(iteration < max_iterations,
+                    ExcMessage("Newton did not converge in " +
+                               std::to_string(max_iterations) +
+                               " iterations."));
+
+        solve_linearized(trial);
+
+        // the line search on J_n along d = trial - w
+        direction = trial;
+        direction -= velocity;
+        step_matrix.vmult(K_d, direction);
+        const double slope     = direction * residual;
+        const double curvature = direction * K_d;
+        const double nodal_0   = nodal_energy(velocity);
+        const double scale =
+          std::abs(slope) + std::abs(curvature) + std::abs(nodal_0) + 1e-300;
+        const auto change = [&](const double theta) {
+          candidate = velocity;
+          candidate.add(theta, direction);
+          return theta * slope + 0.5 * theta * theta * curvature +
+                 nodal_energy(candidate) - nodal_0;
+        };
+        double theta = 1;
+        if (change(1.) > 1e-12 * scale)
+          {
+            for (theta = 0.5; theta >= 1e-3; theta /= 2)
+              if (change(theta) < 0)
+                break;
+            if (theta < 1e-3) // no decrease found: the full step
+              theta = 1;
+          }
+        velocity.add(theta, direction);
+        residual.add(theta, K_d); // K0 is linear
+      }
+  }
+
+  // @sect4{KelvinVoigtContact::output_results}
+  //
+  // A VTU file of w_n and u_n for ParaView, and the nodal values in full
+  // double precision (x, y, w, u per vertex, "%.17g"), the file the
+  // comparison with the full program reads.
+  template <int dim>
+  void
+  KelvinVoigtContact<dim>::output_results(const unsigned int step) const
+  {
+    char number[16];
+    std::snprintf(number, sizeof(number), "%05u", step);
+
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      vector(dim, DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(velocity,
+                             std::vector<std::string>(dim, "velocity"),
+                             DataOut<dim>::type_dof_data,
+                             vector);
+    data_out.add_data_vector(displacement,
+                             std::vector<std::string>(dim, "displacement"),
+                             DataOut<dim>::type_dof_data,
+                             vector);
+    data_out.build_patches();
+    std::ofstream vtu(output_directory + "/solution_" + number + ".vtu");
+    data_out.write_vtu(vtu);
+
+    std::FILE *nodal =
+      std::fopen((output_directory + "/nodal_" + number + ".txt").c_str(), "w");
+    AssertThrow(nodal != nullptr, ExcIO());
+    std::fprintf(nodal,
+                 "# step %u, t = %.17g; x[dim] w[dim] u[dim]\n",
+                 step,
+                 step * time_step);
+    std::set<types::global_dof_index> written;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        if (written.insert(cell->vertex_dof_index(v, 0)).second)
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              std::fprintf(nodal, "%.17g ", cell->vertex(v)[d]);
+            for (const Vector<double> *field : {&velocity, &displacement})
+              for (unsigned int c = 0; c < dim; ++c)
+                std::fprintf(nodal,
+                             "%.17g ",
+                             (*field)(cell->vertex_dof_index(v, c)));
+            std::fprintf(nodal, "\n");
+          }
+    std::fclose(nodal);
+  }
+
+  // @sect4{KelvinVoigtContact::accumulate_errors}
+  //
+  // |w(t_n) - w_n|_L2, |eps(w(t_n) - w_n)|_L2 and |eps(u(t_n) - u_n)|_L2 by
+  // a three-point Gauss rule, into the maxima E_H, E_u and the sum of E_V.
+  template <int dim>
+  void
+  KelvinVoigtContact<dim>::accumulate_errors(const double time)
+  {
+    const QGauss<dim>                quadrature(3);
+    FEValues<dim>                    fe_values(fe,
+                            quadrature,
+                            update_values | update_gradients |
+                              update_quadrature_points | update_JxW_values);
+    const FEValuesExtractors::Vector v(0);
+    std::vector<Tensor<1, dim>>      w_h(quadrature.size());
+    std::vector<Tensor<2, dim>>      grad_w_h(quadrature.size()),
+      grad_u_h(quadrature.size());
+    double w_L2 = 0, w_V = 0, u_V = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        fe_values[v].get_function_values(velocity, w_h);
+        fe_values[v].get_function_gradients(velocity, grad_w_h);
+        fe_values[v].get_function_gradients(displacement, grad_u_h);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const ExactValues<dim> e =
+              data.exact(fe_values.quadrature_point(q), time);
+            const SymmetricTensor<2, dim> eps_w =
+              symmetrize(Tensor<2, dim>(e.grad_w - grad_w_h[q]));
+            const SymmetricTensor<2, dim> eps_u =
+              symmetrize(Tensor<2, dim>(e.grad_u - grad_u_h[q]));
+            w_L2 += (e.w - w_h[q]).norm_square() * fe_values.JxW(q);
+            w_V += eps_w * eps_w * fe_values.JxW(q);
+            u_V += eps_u * eps_u * fe_values.JxW(q);
+          }
+      }
+    E_H = std::max(E_H, std::sqrt(w_L2));
+    E_u = std::max(E_u, std::sqrt(u_V));
+    E_V = std::sqrt(E_V * E_V + time_step * w_V);
+  }
+
+  // @sect4{KelvinVoigtContact::run}
+  //
+  // The time loop of Problem 4.4: w_0 and u_0 interpolated, then for
+  // n = 1..N the left-point rule u_n = u_{n-1} + k w_{n-1}, the right-hand
+  // side with w_{n-1} and u_n, and the step problem for w_n.
+  template <int dim>
+  void
+  KelvinVoigtContact<dim>::run()
+  {
+    make_grid();
+    setup_system();
+    assemble_system();
+
+    // nodal interpolation of u_0 and w_0
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          const Tensor<1, dim> u_0 =
+            data.initial_displacement(cell->vertex(v), 0);
+          const Tensor<1, dim> w_0 = data.initial_velocity(cell->vertex(v), 0);
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              displacement(cell->vertex_dof_index(v, c)) = u_0[c];
+              velocity(cell->vertex_dof_index(v, c))     = w_0[c];
+            }
+        }
+    clamped_constraints.distribute(velocity);
+    clamped_constraints.distribute(displacement);
+
+    n_steps =
+      static_cast<unsigned int>(std::llround(data.end_time / time_step));
+    const bool write = !output_directory.empty();
+    if (write)
+      {
+        std::filesystem::create_directories(output_directory);
+        output_results(0);
+      }
+    for (unsigned int step = 1; step <= n_steps; ++step)
+      {
+        const double time = step * time_step;
+        displacement.add(time_step, velocity); // u_n = u_{n-1} + k w_{n-1}
+        old_velocity = velocity;
+        assemble_rhs(time);
+        const unsigned int iterations = solve();
+        newton_iterations += iterations;
+
+        if (data.exact)
+          accumulate_errors(time);
+        if (write)
+          {
+            unsigned int count[5] = {0, 0, 0, 0, 0};
+            for (const ContactNode<dim> &node : contact_nodes)
+              {
+                ++count[static_cast<int>(node.normal_branch)];
+                ++count[node.slips ? 4 : 3];
+              }
+            std::printf("step %3u  t = %.4f  Newton %u  separating %u  "
+                        "normal stick %u  damped %u  stick %u  slip %u\n",
+                        step,
+                        time,
+                        iterations,
+                        count[0],
+                        count[1],
+                        count[2],
+                        count[3],
+                        count[4]);
+            output_results(step);
+          }
+      }
+  }
+} // namespace Step2
+
+// @sect3{The main function}
+//
+// "step-2 block DIR" runs the block of the full program's example and
+// writes its output to DIR; "step-2 convergence L" runs the manufactured
+// solution on L levels of coupled refinement (h and k halved together,
+// from 8 x 8 cells and k = 1/8) and prints the errors with their observed
+// orders. Without arguments: both, with output-block/ and four levels.
+int
+main(int argc, char **argv)
+{
+  using namespace Step2;
+  try
+    {
+      const std::string mode = argc > 1 ? argv[1] : "all";
+      if (mode == "block" || mode == "all")
+        {
+          const std::string directory =
+            mode == "block" && argc > 2 ? argv[2] : "output-block";
+          const ProblemData<2>  block = block_problem();
+          KelvinVoigtContact<2> problem(block, 3, 0.04, directory);
+          std::cout << "The block of prm/block_2d.prm, 32 x 8 cells, k = 0.04"
+                    << std::endl;
+          problem.run();
+          std::cout << "Output in " << directory << "/" << std::endl
+                    << std::endl;
+        }
+      if (mode == "convergence" || mode == "all")
+        {
+          const unsigned int n_levels =
+            mode == "convergence" && argc > 2 ? std::stoi(argv[2]) : 4;
+          const ProblemData<2> exact = manufactured_problem();
+          ConvergenceTable     table;
+          for (unsigned int level = 0; level < n_levels; ++level)
+            {
+              KelvinVoigtContact<2> problem(exact,
+                                            3 + level,
+                                            0.125 / (1 << level));
+              problem.run();
+              table.add_value("level", level);
+              table.add_value("h", problem.mesh_size);
+              table.add_value("k", 0.125 / (1 << level));
+              table.add_value("dofs", problem.n_dofs);
+              table.add_value("E_H", problem.E_H);
+              table.add_value("E_V", problem.E_V);
+              table.add_value("E_u", problem.E_u);
+              table.add_value("Newton",
+                              double(problem.newton_iterations) /
+                                problem.n_steps);
+            }
+          for (const std::string column : {"h", "k", "E_H", "E_V", "E_u"})
+            {
+              table.set_precision(column, 3);
+              table.set_scientific(column, true);
+            }
+          table.set_precision("Newton", 2);
+          for (const std::string column : {"E_H", "E_V", "E_u"})
+            table.evaluate_convergence_rates(
+              column, ConvergenceTable::reduction_rate_log2);
+          std::cout << "Manufactured solution, coupled refinement k = h/sqrt(2)"
+                    << " (Newton: mean iterations per step)" << std::endl;
+          table.write_text(std::cout);
+        }
+      else if (mode != "block" && mode != "all")
+        {
+          std::cerr << "usage: step-2 [block DIR | convergence LEVELS]"
+                    << std::endl;
+          return 1;
+        }
+    }
+  catch (std::exception &exc)
+    {
+      std::cerr << "step-2: " << exc.what() << std::endl;
+      return 1;
+    }
+  return 0;
+}
