@@ -119,11 +119,11 @@ namespace hemicontact
     // the contact pressure p_nu of the bound: in the velocity classes the
     // step before's throughout the step, in the static class the last
     // solve's (doc/theory.md, section 9.9)
-    const TrilinosWrappers::MPI::Vector  traction_before(contact_traction);
+    const TrilinosWrappers::MPI::Vector traction_before(contact_traction);
     // the branches of the last converged state: a failed step's iterates
     // change them, and the state written after a failure carries its own
     // (a retry with halved steps starts from the failed iterate's)
-    const std::vector<ContactNode<dim>> nodes_before(contact_nodes);
+    const std::vector<ContactNode<dim>>  nodes_before(contact_nodes);
     const TrilinosWrappers::MPI::Vector *pressure =
       scheme.is_static() ? &contact_traction : &traction_before;
     update_friction_bounds(start + k, pressure);

@@ -33,10 +33,9 @@ namespace hemicontact
     // the displacement of the first step without a solve: u_0 + k w_0 in
     // the left-point rule of the dynamic class (the quasistatic w_0 solves
     // the step problem with the wall)
-    const double k = scheme.has_inertia() ?
-                       scheme.held_displacement_offset(time_step) :
-                       0.;
-    std::string  error;
+    const double k =
+      scheme.has_inertia() ? scheme.held_displacement_offset(time_step) : 0.;
+    std::string error;
     for (const ContactNode<dim> &node : contact_nodes)
       if (node.locally_owned && error.empty())
         {
@@ -50,8 +49,7 @@ namespace hemicontact
           if (u_nu > g + slack)
             message << "data: the initial displacement starts beyond the "
                        "wall of the normal law at the contact node "
-                    << node.position << ": u_nu = " << u_nu
-                    << " > g = " << g
+                    << node.position << ": u_nu = " << u_nu << " > g = " << g
                     << " ('penetration limit'); the law forbids that "
                        "state. Change 'data/initial displacement' so that "
                        "u_nu <= g on the contact boundary (doc/theory.md "
@@ -84,12 +82,11 @@ namespace hemicontact
     const double g = law->penetration_limit();
     if (!std::isfinite(g) || scheme.is_static())
       return {0, 0.};
-    const double offset = scheme.held_displacement_offset(time_step);
+    const double offset  = scheme.held_displacement_offset(time_step);
     unsigned int n_moved = 0;
     double       largest = 0;
     for (const ContactNode<dim> &node : contact_nodes)
-      if (node.locally_owned &&
-          !base_constraints.is_constrained(node.dofs[0]))
+      if (node.locally_owned && !base_constraints.is_constrained(node.dofs[0]))
         {
           const double excess = normal_part(node, displacement) +
                                 offset * normal_part(node, velocity) - g;
@@ -97,7 +94,7 @@ namespace hemicontact
             {
               for (unsigned int c = 0; c < dim; ++c)
                 {
-                  const double u_c = displacement[node.dofs[c]];
+                  const double u_c           = displacement[node.dofs[c]];
                   displacement[node.dofs[c]] = u_c - excess * node.normal[c];
                 }
               ++n_moved;
