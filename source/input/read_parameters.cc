@@ -32,17 +32,20 @@ namespace hemicontact
   namespace
   {
     /**
-     * The entries of @p prm that define the problem, as "path/entry =
-     * value", from its short listing (subsection / set / end lines).
+     * The entries of @p prm that define the problem and the output entries
+     * that name the series files, as "path/entry = value", from its short
+     * listing (subsection / set / end lines).
      */
     std::vector<std::string>
     problem_definition(const ParameterHandler &prm)
     {
-      static const std::set<std::string> not_defining = {"output",
-                                                         "checkpoint",
-                                                         "linear solver",
-                                                         "nonlinear solver",
-                                                         "convergence study"};
+      static const std::set<std::string> not_defining   = {"output",
+                                                           "checkpoint",
+                                                           "linear solver",
+                                                           "nonlinear solver",
+                                                           "convergence study"};
+      static const std::set<std::string> series_entries = {"output/format",
+                                                           "output/precision"};
       std::ostringstream                 listing;
       prm.print_parameters(listing, ParameterHandler::ShortPRM);
       std::istringstream       in(listing.str());
@@ -58,13 +61,22 @@ namespace hemicontact
             path.push_back(line.substr(11));
           else if (line == "end")
             path.pop_back();
-          else if (line.rfind("set ", 0) == 0 &&
-                   (path.empty() || not_defining.count(path.front()) == 0))
+          else if (line.rfind("set ", 0) == 0)
             {
               std::string prefix;
               for (const std::string &p : path)
                 prefix += p + "/";
-              entries.push_back(prefix + line.substr(4));
+              // "set NAME = VALUE", NAME padded to its subsection's longest
+              const std::size_t eq   = line.find(" = ");
+              const std::string name = line.substr(4, eq - 4);
+              const std::string path_name =
+                prefix + name.substr(0, name.find_last_not_of(' ') + 1);
+              if (path.empty() || not_defining.count(path.front()) == 0 ||
+                  series_entries.count(path_name) > 0)
+                entries.push_back(path_name + " = " +
+                                  (eq == std::string::npos ?
+                                     std::string() :
+                                     line.substr(eq + 3)));
             }
         }
       return entries;
