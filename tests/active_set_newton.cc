@@ -4,7 +4,8 @@
 // x_i < 0). The answer is found by trying all 16 branch sets. Newton must
 // find it within a few iterations, decrease J in every iteration, report
 // the iterations it took, and fail with its message when it may take only
-// one iteration.
+// one or two iterations (naming 'max iterations') or when its linear
+// solves are too inaccurate (a stall on fixed branches).
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -12,6 +13,7 @@
 #include <hemicontact/solver/active_set_newton.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "tests.h"
@@ -164,6 +166,44 @@ namespace
     std::vector<double> energies; ///< J at every iteration's start
     Vector<double>      last_w = Vector<double>(n);
   };
+
+  /** The same problem with linear solves that miss the branch set's
+   *  minimiser by @p miss in every entry, a miss that shrinks by the
+   *  factor @p shrink with every solve: with shrink = 1 the residual stops
+   *  falling on fixed branches (a stall), with shrink = 0.1 it falls by
+   *  about 10 in every iteration. */
+  class InaccurateProblem : public PenaltyProblem
+  {
+  public:
+    InaccurateProblem(const double miss, const double shrink)
+      : miss(miss)
+      , shrink(shrink)
+    {}
+
+    unsigned int
+    solve_linearized(const VectorType &,
+                     const double,
+                     const double,
+                     VectorType &trial) override
+    {
+      Vector<double> x = solve_on(active);
+      x.add(miss);
+      miss *= shrink;
+      from_serial(x, trial);
+      return 1;
+    }
+
+  private:
+    double       miss;
+    const double shrink;
+  };
+
+  /** Whether @p message contains @p text. */
+  const char *
+  says(const std::string &message, const std::string &text)
+  {
+    return message.find(text) != std::string::npos ? "yes" : "NO";
+  }
 } // namespace
 
 int
@@ -233,5 +273,42 @@ main(int argc, char **argv)
       const std::string message = failure.what();
       out() << "max iterations 1: " << message.substr(0, message.find(':'))
             << "\n";
+      out() << "  names the limit: "
+            << says(message, "limit 'nonlinear solver/max iterations' = 1")
+            << ", nodes changing branch: "
+            << says(message, "nodes still changing branch")
+            << ", says stalled: " << says(message, "stalled") << "\n";
     }
+
+  // linear solves whose error falls by 10 in every iteration: at the
+  // limit of 4 iterations the residual is still falling, the iteration was
+  // cut short, not stalled
+  const auto failure_of = [&](InaccurateProblem &inaccurate) {
+    TrilinosWrappers::MPI::Vector w_0(all, MPI_COMM_WORLD), r_0(w_0);
+    try
+      {
+        ActiveSetNewton(settings).solve(inaccurate, w_0, r_0);
+      }
+    catch (const SolverFailure &failure)
+      {
+        return std::string(failure.what());
+      }
+    return std::string("converged");
+  };
+  settings.max_iterations = 4;
+  InaccurateProblem slow(1e-2, 0.1);
+  std::string       message = failure_of(slow);
+  out() << "max iterations 4, residual falling: cut short: "
+        << says(message, "the iteration was cut short") << ", names the limit: "
+        << says(message, "limit 'nonlinear solver/max iterations' = 4")
+        << ", says stalled: " << says(message, "stalled") << "\n";
+
+  // linear solves that cannot reach the tolerance: a stall on fixed
+  // branches, named as such and not blamed on the limit
+  settings.max_iterations = 8;
+  InaccurateProblem stalling(1e-4, 1);
+  message = failure_of(stalling);
+  out() << "max iterations 8, residual not falling: stalled: "
+        << says(message, "stalled on fixed branches")
+        << ", cut short: " << says(message, "cut short") << "\n";
 }

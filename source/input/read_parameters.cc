@@ -32,17 +32,20 @@ namespace hemicontact
   namespace
   {
     /**
-     * The entries of @p prm that define the problem, as "path/entry =
-     * value", from its short listing (subsection / set / end lines).
+     * The entries of @p prm that define the problem and the output entries
+     * that name the series files, as "path/entry = value", from its short
+     * listing (subsection / set / end lines).
      */
     std::vector<std::string>
     problem_definition(const ParameterHandler &prm)
     {
-      static const std::set<std::string> not_defining = {"output",
-                                                         "checkpoint",
-                                                         "linear solver",
-                                                         "nonlinear solver",
-                                                         "convergence study"};
+      static const std::set<std::string> not_defining   = {"output",
+                                                           "checkpoint",
+                                                           "linear solver",
+                                                           "nonlinear solver",
+                                                           "convergence study"};
+      static const std::set<std::string> series_entries = {"output/format",
+                                                           "output/precision"};
       std::ostringstream                 listing;
       prm.print_parameters(listing, ParameterHandler::ShortPRM);
       std::istringstream       in(listing.str());
@@ -58,13 +61,22 @@ namespace hemicontact
             path.push_back(line.substr(11));
           else if (line == "end")
             path.pop_back();
-          else if (line.rfind("set ", 0) == 0 &&
-                   (path.empty() || not_defining.count(path.front()) == 0))
+          else if (line.rfind("set ", 0) == 0)
             {
               std::string prefix;
               for (const std::string &p : path)
                 prefix += p + "/";
-              entries.push_back(prefix + line.substr(4));
+              // "set NAME = VALUE", NAME padded to its subsection's longest
+              const std::size_t eq   = line.find(" = ");
+              const std::string name = line.substr(4, eq - 4);
+              const std::string path_name =
+                prefix + name.substr(0, name.find_last_not_of(' ') + 1);
+              if (path.empty() || not_defining.count(path.front()) == 0 ||
+                  series_entries.count(path_name) > 0)
+                entries.push_back(path_name + " = " +
+                                  (eq == std::string::npos ?
+                                     std::string() :
+                                     line.substr(eq + 3)));
             }
         }
       return entries;
@@ -187,6 +199,80 @@ namespace hemicontact
       require_each_key_once(tree, "", filename);
     }
 
+    /**
+     * Throw an InputError naming the key path of the first subsection or
+     * entry of the JSON @p tree that @p declared (the JSON listing of the
+     * declared parameters, where an entry has a "value" or an "alias"
+     * child) lacks, as the .prm reader names an unknown subsection or
+     * entry; deal.II's JSON reader names only the first entry below it.
+     * In @p tree an entry is a string or an object with a "value" key.
+     */
+    void
+    require_declared(const boost::property_tree::ptree &tree,
+                     const boost::property_tree::ptree &declared,
+                     const std::string                 &prefix,
+                     const std::string                 &filename)
+    {
+      const auto is_entry = [](const boost::property_tree::ptree &node) {
+        return node.empty() || node.count("value") > 0;
+      };
+      for (const auto &[key, node] : tree)
+        {
+          if (key.empty()) // an element of an array: deal.II reports it
+            continue;
+          const auto known          = declared.find(key);
+          const bool entry          = is_entry(node);
+          const bool declared_entry = known != declared.not_found() &&
+                                      (known->second.count("value") > 0 ||
+                                       known->second.count("alias") > 0);
+          const std::string where =
+            prefix.empty() ?
+              "at the top level" :
+              "in subsection '" + prefix.substr(0, prefix.size() - 1) + "'";
+          require(known != declared.not_found(),
+                  "the parameter file '" + filename + "' has the " +
+                    (entry ? "entry '" : "subsection '") + prefix + key +
+                    "', but there is no such " +
+                    (entry ? "entry" : "subsection") + " " + where +
+                    " (hemicontact --print-parameters json lists every "
+                    "subsection and entry).");
+          require(entry == declared_entry,
+                  "the parameter file '" + filename + "' gives '" + prefix +
+                    key + "' as " +
+                    (entry ? "an entry (a value)" :
+                             "a subsection (an object)") +
+                    ", but it is " +
+                    (declared_entry ? "an entry" : "a subsection") + " " +
+                    where + ".");
+          if (!entry)
+            require_declared(node, known->second, prefix + key + "/", filename);
+        }
+    }
+
+    /** The same for the JSON @p text against the entries declared in
+     *  @p prm; a file that is not valid JSON is left to deal.II's reader,
+     *  which reports where. */
+    void
+    require_declared_in_json(const std::string      &text,
+                             const std::string      &filename,
+                             const ParameterHandler &prm)
+    {
+      boost::property_tree::ptree tree, declared;
+      std::istringstream          in(text);
+      try
+        {
+          boost::property_tree::read_json(in, tree);
+        }
+      catch (const boost::property_tree::json_parser_error &)
+        {
+          return;
+        }
+      std::stringstream listing;
+      prm.print_parameters(listing, ParameterHandler::JSON);
+      boost::property_tree::read_json(listing, declared);
+      require_declared(tree, declared, "", filename);
+    }
+
     /** "json", "xml" or "prm": how deal.II reads @p filename (by its
      *  extension, in any case; anything else is .prm). */
     std::string
@@ -288,7 +374,10 @@ namespace hemicontact
     return read_with(prm, "'" + filename + "'", [&]() {
       std::istringstream in(body);
       if (format == "json")
-        prm.parse_input_from_json(in);
+        {
+          require_declared_in_json(body, filename, prm);
+          prm.parse_input_from_json(in);
+        }
       else if (format == "xml")
         prm.parse_input_from_xml(in);
       else if (bom)

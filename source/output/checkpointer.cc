@@ -407,15 +407,17 @@ namespace hemicontact
       };
       const auto  before = split(state.problem_definition);
       const auto  now    = split(parameters.problem_definition);
-      std::string changes;
+      std::string changes, series_changes;
       for (const auto &[entry, value] : now)
         {
           const auto        it = before.find(entry);
           const std::string old_value =
             it == before.end() ? "(not recorded)" : it->second;
+          std::string &list =
+            entry.rfind("output/", 0) == 0 ? series_changes : changes;
           if (old_value != value)
-            changes += (changes.empty() ? "" : "; ") + entry + " = '" + value +
-                       "' (the checkpoint's run: '" + old_value + "')";
+            list += (list.empty() ? "" : "; ") + entry + " = '" + value +
+                    "' (the checkpoint's run: '" + old_value + "')";
         }
       require(changes.empty(),
               "checkpoint: the parameter file defines another problem than "
@@ -423,6 +425,17 @@ namespace hemicontact
                 (dir / (name + ".state")).string() + "': " + changes +
                 ". A resume continues the same problem; restore these "
                 "entries, or start a new run without --resume.");
+      // ... and writes the series files the run began
+      require(series_changes.empty(),
+              "checkpoint: the parameter file writes other solution files "
+              "than the run that wrote '" +
+                (dir / (name + ".state")).string() + "': " + series_changes +
+                ". A resume continues that run's series (solution.pvd or "
+                "solution.xdmf, nodal.xdmf) in '" +
+                parameters.output.directory +
+                "', whose files are left as they are; restore these entries, "
+                "or start a new run without --resume (in another output "
+                "directory to keep these files).");
     }
     {
       // ... and so must the mesh file's content

@@ -19,7 +19,55 @@ namespace hemicontact
       s << std::scientific << x;
       return s.str();
     }
+
+    /** An iteration on fixed branches that leaves more than this fraction
+     *  of the residual has stalled. */
+    constexpr double stalled_reduction = 0.5;
   } // namespace
+
+  std::string
+  ActiveSetNewton::failure_message(const double       relative_residual,
+                                   const unsigned int n_changed,
+                                   const double       last_reduction,
+                                   const unsigned int settled_iterations) const
+  {
+    const std::string limit = "'nonlinear solver/max iterations' = " +
+                              std::to_string(settings.max_iterations);
+    std::string message = "Newton did not converge in " +
+                          std::to_string(settings.max_iterations) +
+                          " iterations: relative nonsmooth residual " +
+                          format_number(relative_residual) + " (tolerance " +
+                          format_number(settings.tolerance) + "), ";
+    if (n_changed > 0)
+      return message + std::to_string(n_changed) +
+             " nodes still changing branch when the limit " + limit +
+             " was reached. Raise it, reduce the time step, or check the "
+             "convexity warning at start-up.";
+    // cut short: the branches settled only in the last iteration, or the
+    // residual still fell; else a stall on fixed branches
+    if (settled_iterations == 0 || last_reduction < stalled_reduction)
+      return message + "no node changing branch" +
+             (settled_iterations == 0 ?
+                std::string(" (the branches settled in the last iteration)") :
+                " and the residual still falling (the last iteration took it "
+                "to " +
+                  format_number(last_reduction) + " times its value)") +
+             " when the limit " + limit +
+             " was reached: the iteration was cut short. Raise 'nonlinear "
+             "solver/max iterations'.";
+    return message + "with no node changing branch for " +
+           std::to_string(settled_iterations) +
+           " iterations and the residual no longer falling (the last one "
+           "took it to " +
+           format_number(last_reduction) +
+           " times its value): the iteration stalled on fixed branches, "
+           "where it is a linear solve, so the residual is limited by the "
+           "accuracy of the linear solves ('linear solver/relative "
+           "tolerance' = " +
+           format_number(settings.linear_relative_tolerance) +
+           ") or by the convexity of the step. Loosen the Newton tolerance, "
+           "tighten the linear solver's, or reduce the time step.";
+  }
 
   ActiveSetNewton::ActiveSetNewton(const Settings &settings, TimerOutput *timer)
     : settings(settings)
@@ -91,6 +139,9 @@ namespace hemicontact
                (load_norm + problem.operator_norm(r));
     };
 
+    // the iterations in a row so far that began with no branch changed
+    unsigned int settled_iterations = 0;
+
     problem.make_feasible(w);
     problem.residual(w, residual); // then kept up to date by line_search()
     for (unsigned int iteration = 0;; ++iteration)
@@ -112,25 +163,11 @@ namespace hemicontact
           return report;
         if (iteration == settings.max_iterations)
           throw SolverFailure(
-            "Newton did not converge in " +
-            std::to_string(settings.max_iterations) +
-            " iterations: relative nonsmooth residual " +
-            format_number(report.relative_residual) + " (tolerance " +
-            format_number(settings.tolerance) + "), " +
-            (n_changed > 0 ?
-               std::to_string(n_changed) +
-                 " nodes still changing branch. Reduce the time step, raise "
-                 "'nonlinear solver/max iterations', or check the convexity "
-                 "warning at start-up." :
-               std::string(
-                 "with no node changing branch: the iteration stalled on "
-                 "fixed branches, where it is a linear solve, so the "
-                 "residual is limited by the accuracy of the linear solves "
-                 "('linear solver/relative tolerance' = ") +
-                 format_number(settings.linear_relative_tolerance) +
-                 ") or by the convexity of the step. Loosen the Newton "
-                 "tolerance, tighten the linear solver's, or reduce the "
-                 "time step."));
+            failure_message(report.relative_residual,
+                            n_changed,
+                            iteration > 0 ? res / previous_res : 1.,
+                            settled_iterations));
+        settled_iterations = n_changed == 0 ? settled_iterations + 1 : 0;
 
         // inexact Newton: the Krylov tolerance follows the decrease of the
         // nonsmooth residual (Eisenstat-Walker, choice 2), but never asks for

@@ -362,8 +362,9 @@ namespace hemicontact
     /**
      * Every entry that defines the problem, as "path/entry = value" (all
      * subsections but output, checkpoint, the solvers and the convergence
-     * study): a checkpoint records them, and a resume that would change
-     * one is refused.
+     * study), and output/format and output/precision, which name the
+     * series files a resume continues: a checkpoint records them, and a
+     * resume that would change one is refused.
      */
     std::vector<std::string> problem_definition;
 

@@ -3,6 +3,8 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <string>
+
 namespace hemicontact
 {
   using namespace dealii;
@@ -155,6 +157,21 @@ namespace hemicontact
                 const VectorType       &trial,
                 VectorType             &residual,
                 unsigned int           &n_reductions) const;
+
+    /**
+     * Why 'max iterations' did not suffice, from the @p relative_residual
+     * and @p n_changed of the last iteration, the factor @p last_reduction
+     * of the residual over the step before it and the number of
+     * @p settled_iterations before it in a row with no branch changed:
+     * nodes still changing branch, an iteration cut short by the limit
+     * (the branches settled in the last iteration, or the residual still
+     * falling), or a stall on fixed branches.
+     */
+    std::string
+    failure_message(double       relative_residual,
+                    unsigned int n_changed,
+                    double       last_reduction,
+                    unsigned int settled_iterations) const;
 
     Settings     settings;
     TimerOutput *timer;
