@@ -24,6 +24,7 @@
 #include <hemicontact/memory/memory_history.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <vector>
 
@@ -202,6 +203,10 @@ namespace
         for (MemoryHistory<dim> *h : {&by_prony, &by_expression})
           h->commit_step();
       }
+    // the measured values, for a report (not part of the expected output)
+    if (std::getenv("HEMICONTACT_TEST_VERBOSE") != nullptr)
+      std::cerr << dim << "D: Prony " << worst_prony << ", sum "
+                << worst_expression << ", the two " << worst_pair << "\n";
     out() << "  " << dim << "D closed form, " << N
           << " steps: Prony recursion within 1e-13: "
           << (worst_prony < 1e-13 ? "yes" : "no")
@@ -238,6 +243,8 @@ namespace
             h->commit_step();
           }
       }
+    if (std::getenv("HEMICONTACT_TEST_VERBOSE") != nullptr)
+      std::cerr << dim << "D varying steps: " << worst_variable << "\n";
     out() << "  " << dim
           << "D steps of varying length: both within 1e-13 of the sum: "
           << (worst_variable < 1e-13 ? "yes" : "no") << "\n";

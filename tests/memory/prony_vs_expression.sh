@@ -4,8 +4,9 @@
 # its two-term Prony kernel and with the same kernel written as expressions
 # mu_R(t), lambda_R(t) (the recursion against the sum over the stored
 # states): the branch counts exactly, every energy, its memory work and
-# every probe value to a relative 1e-9 (round-off of the two sums,
-# amplified at most by the Newton solves they feed).
+# every probe value to a relative 1e-9. The two sums differ by round-off;
+# the Newton solves they feed are run to a tight tolerance, so that their
+# stopping points do not hide a difference in the memory.
 set -euo pipefail
 exe=$1; work=$2; shift 2
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
@@ -27,6 +28,8 @@ for prm in "$@"; do
     { cat "$prm"
       printf 'subsection output\n  set directory = %s-%s\n  set terminal = quiet\n' "$name" "$kernel"
       printf '  set probe points = 4, 0; 2, 0; 1, 0.5\nend\n'
+      printf 'subsection nonlinear solver\n  set tolerance = 1e-11\nend\n'
+      printf 'subsection linear solver\n  set relative tolerance = 1e-12\nend\n'
       if [ $kernel = expression ]; then
         printf 'subsection relaxation\n  set kernel = expression\n'
         printf '  set mu = 20*exp(-t/0.2) + 5*exp(-t)\n'
