@@ -111,7 +111,10 @@ namespace hemicontact
     // the memory of the states up to t_{n-1} = start, u_{n-1} the last
     // (doc/theory.md, section 11)
     if (memory.active())
-      memory.prepare_step(start, k, displacement);
+      {
+        TimerOutput::Scope t(timer, "memory");
+        memory.prepare_step(start, k, displacement);
+      }
     scheme.displacement_before_step(displacement, old_velocity, k);
     if (extrapolate)
       {
