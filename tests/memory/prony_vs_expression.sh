@@ -51,6 +51,12 @@ for prm in "$@"; do
       END { printf "%.2e", m }')
     echo "$name: $f of the Prony and the expression kernel agree (largest relative difference $largest)"
   done
+  # a run named *halving* halves steps
+  if [[ $name == *halving* ]]; then
+    halvings=$(columns_of "$name-prony/steps.csv" time_step_halvings | awk 'NR > 1 { s += $1 } END { print s + 0 }')
+    [ "$halvings" -gt 0 ] || { echo "FAIL: $name halves no step"; exit 1; }
+    echo "$name: $halvings halvings"
+  fi
   # the memory did something: its work is not zero at the end
   last=$(columns_of "$name-prony/steps.csv" memory_work | tail -1)
   awk -v m="$last" 'BEGIN { exit !(m != 0) }' || { echo "FAIL: $name: memory_work is 0"; exit 1; }
