@@ -782,6 +782,7 @@ namespace hemicontact
     TimeParameters::declare(prm);
     ProblemParameters::declare(prm);
     DataParameters::declare(prm);
+    RelaxationParameters::declare(prm);
     NonlinearSolverParameters::declare(prm);
     LinearSolverParameters::declare(prm);
     OutputParameters::declare(prm);
@@ -801,6 +802,7 @@ namespace hemicontact
     time.parse(prm);
     problem.parse(prm);
     data.parse(prm);
+    relaxation.parse(prm);
     nonlinear_solver.parse(prm);
     linear_solver.parse(prm);
     output.parse(prm);

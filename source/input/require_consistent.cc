@@ -4,6 +4,7 @@
  */
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/memory/relaxation_kernel.h>
 
 #include <algorithm>
 #include <cmath>
@@ -131,6 +132,28 @@ namespace hemicontact
                 "resumes from them, but the parameter file sets " +
                   list + "; remove " + (set.size() > 1 ? "them" : "it") +
                   " (a study runs from the start).");
+      }
+
+    // what the memory of the stress does not do (doc/theory.md, section
+    // 11): its history lives on one mesh, and manufactured data do not
+    // hold the memory integral
+    if (parameters.relaxation.active())
+      {
+        require(adaptivity.interval == 0 &&
+                  adaptivity.pre_refinement_steps == 0,
+                "relaxation: a memory kernel ('relaxation/kernel' = prony or "
+                "expression) does not work with adaptive meshes: its history "
+                "is not moved to a new mesh. Set 'adaptivity/interval = 0' "
+                "and 'adaptivity/pre-refinement steps = 0', or "
+                "'relaxation/kernel = none'.");
+        require(!manufactured,
+                "relaxation: a memory kernel ('relaxation/kernel' = prony or "
+                "expression) does not work with 'manufactured solution/"
+                "enabled = true': the derived data do not hold the memory "
+                "integral. Set 'relaxation/kernel = none' for a manufactured "
+                "solution.");
+        RelaxationKernel(parameters.relaxation, parameters.data.constants)
+          .require_finite(parameters.time.end_time / n_steps, n_steps);
       }
   }
 } // namespace hemicontact

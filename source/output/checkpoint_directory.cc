@@ -225,7 +225,8 @@ namespace hemicontact
               e.damping_dissipation,
               e.external_work,
               e.numerical_dissipation,
-              e.transfer_change};
+              e.transfer_change,
+              e.memory_work};
     }
 
     std::vector<unsigned int>

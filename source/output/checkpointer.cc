@@ -110,6 +110,7 @@ namespace hemicontact
     e.external_work         = v[6];
     e.numerical_dissipation = v[7];
     e.transfer_change       = v[8];
+    e.memory_work           = v[9];
     return e;
   }
 
@@ -205,13 +206,16 @@ namespace hemicontact
     branches_to_field(constrained_amg_branches(s.contact_nodes,
                                                s.preconditioner),
                       amg_branches);
-    const std::vector<const TrilinosWrappers::MPI::Vector *> owned_fields{
+    std::vector<const TrilinosWrappers::MPI::Vector *> owned_fields{
       &s.velocity,
       &s.displacement,
       &branches,
       &s.old_velocity,
       &amg_branches,
       &s.contact_traction};
+    // and the vectors of the memory's history (doc/theory.md, section 11)
+    for (const TrilinosWrappers::MPI::Vector *v : s.memory.saved_fields())
+      owned_fields.push_back(v);
     if (s.discretization.is_simplex())
       throw_if_any(write_rank_fields(
                      aside / (name + ".fields." +
@@ -261,6 +265,7 @@ namespace hemicontact
         state.mesh_signature   = mesh_signature;
         state.constrained_amg =
           static_cast<unsigned int>(s.preconditioner.constrained_amg_status());
+        state.memory_history = s.memory.saved_values();
         {
           std::ofstream out(aside / (name + ".state"), std::ios::binary);
           out << state_text(state);
@@ -294,8 +299,9 @@ namespace hemicontact
     // the six fields of write() (w_n, u_n, the branches, w_{n-1}, the AMG's
     // branches, the contact traction) on every cell (p4est's data file) or
     // at every dof with its index (the rank files of a simplex mesh), the
-    // cells themselves, and the state with the series and the parameters
-    const std::uintmax_t n_fields = 6;
+    // cells themselves, and the state with the series and the parameters;
+    // the memory's vectors besides
+    const std::uintmax_t n_fields = 6 + s.memory.saved_fields().size();
     std::uintmax_t       bytes    = 16 * 1024;
     for (const SeriesRecord &record : series)
       bytes += record.stored().second.size() + 32;

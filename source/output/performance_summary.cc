@@ -55,6 +55,9 @@ namespace hemicontact
                     s.locally_relevant_dofs.memory_consumption());
     breakdown.add("contact nodes",
                   s.contact_nodes.capacity() * sizeof(ContactNode<dim>));
+    // A_mu, A_lambda and the history of a memory kernel (doc/theory.md 11)
+    if (s.memory.active())
+      breakdown.add("memory of the stress", s.memory.memory_consumption());
     return breakdown;
   }
 

@@ -171,7 +171,7 @@ namespace hemicontact
            "kinetic_before_adaptation,elastic_before_adaptation,"
            "kinetic_after_adaptation,elastic_after_adaptation,"
            "energy_transfer_change,time_step_halvings,minimised_energy,"
-           "bound_iterations,n_at_breakpoint,n_at_wall\n";
+           "bound_iterations,n_at_breakpoint,n_at_wall,memory_work\n";
     // probes.csv (the points are checked above)
     if (!probe_points.empty() &&
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
@@ -225,6 +225,13 @@ namespace hemicontact
     if (s.scheme.name() !=
         StepScheme(ProblemClass::dynamic, TimeScheme::left_point).name())
       pcout << ", " << s.scheme.name();
+    if (s.memory.active())
+      pcout << ", memory "
+            << (s.memory.get_kernel().type() == RelaxationKernelType::prony ?
+                  "'prony' (" +
+                    std::to_string(s.memory.get_kernel().n_terms()) +
+                    " terms)" :
+                  std::string("'expression'"));
     if (parameters.output.terminal != TerminalOutput::test)
       pcout << ", " << Utilities::MPI::n_mpi_processes(mpi_communicator)
             << " MPI rank(s)";
@@ -359,7 +366,7 @@ namespace hemicontact
             << "," << s.elastic_after_adaptation << "," << e.transfer_change
             << "," << s.time_step_halvings << "," << e.minimised_energy << ","
             << s.bound_iterations << "," << s.n_at_breakpoint << ","
-            << s.n_at_wall << "\n";
+            << s.n_at_wall << "," << e.memory_work << "\n";
         error = append_complete(steps_file,
                                 parameters.output.directory + "/steps.csv",
                                 row.str());

@@ -168,6 +168,22 @@ namespace hemicontact
     if (parameters.adaptivity.interval > 0)
       cell_data.emplace_back("refinement_indicator",
                              problem.refinement_indicators());
+    // the memory part M_n of the stress, which stress_* leaves out
+    // (doc/theory.md, section 11)
+    if (state.memory.active())
+      {
+        const std::vector<Vector<float>> memory_stress =
+          state.memory.cell_stress(dof_handler,
+                                   *discretization.mapping,
+                                   discretization.cell_quadrature(2));
+        const char  *xyz[] = {"x", "y", "z"};
+        unsigned int c     = 0;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = i; j < dim; ++j)
+            cell_data.emplace_back(std::string("memory_stress_") + xyz[i] +
+                                     xyz[j],
+                                   memory_stress[c++]);
+      }
 
     // the job, on the writer's thread and without MPI: stresses, patches
     // and the VTU files, or the data in HDF5 layout

@@ -262,6 +262,9 @@ namespace hemicontact
                     time_step,
                     step_rhs,
                     tmp);
+    // the memory term -(M_n, eps(v)) (doc/theory.md, section 11)
+    if (memory.active())
+      memory.subtract_from(step_rhs);
     base_constraints.set_zero(step_rhs);
   }
 

@@ -155,6 +155,9 @@ namespace hemicontact
         if (!initial)
           energy.minimised_energy = minimised_step_energy(
             step_matrix, step_rhs, w, contact_nodes, *law, *friction);
+        // the memory term of the identity, halved as the others
+        if (memory.active())
+          energy.memory_work = 0.5 * (memory.step_functional() * w);
         return;
       }
     std::tie(energy.kinetic, energy.elastic) = stored_energy();
@@ -188,6 +191,9 @@ namespace hemicontact
     energy.viscous_dissipation += terms.viscous;
     energy.numerical_dissipation += terms.numerical;
     energy.external_work += k * (load * w);
+    // the work k (M_n, eps(w_n)) of the memory stress (doc/theory.md 11)
+    if (memory.active())
+      energy.memory_work += k * (memory.step_functional() * w);
 
     // the work xi . w of the contact forces, not their potentials: with a
     // nonconvex law the two differ, and the work is what the step balances

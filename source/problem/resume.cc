@@ -47,14 +47,17 @@ namespace hemicontact
                                            mpi_communicator);
     TrilinosWrappers::MPI::Vector amg_branches(locally_owned_dofs,
                                                mpi_communicator);
-    checkpointer.load_fields(dof_handler,
-                             locally_owned_dofs,
-                             {&velocity,
-                              &displacement,
-                              &branches,
-                              &old_velocity,
-                              &amg_branches,
-                              &contact_traction});
+    std::vector<TrilinosWrappers::MPI::Vector *> fields{&velocity,
+                                                        &displacement,
+                                                        &branches,
+                                                        &old_velocity,
+                                                        &amg_branches,
+                                                        &contact_traction};
+    // the memory's history, its vectors after those (doc/theory.md 11)
+    for (TrilinosWrappers::MPI::Vector *v :
+         memory.restore(state.memory_history))
+      fields.push_back(v);
+    checkpointer.load_fields(dof_handler, locally_owned_dofs, fields);
     branches_from_field(branches,
                         locally_owned_dofs,
                         locally_relevant_dofs,

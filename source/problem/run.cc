@@ -110,6 +110,13 @@ namespace hemicontact
         trend -= old_velocity;
       }
     old_velocity = velocity;
+    // the memory of the states up to t_{n-1} = start, u_{n-1} the last
+    // (doc/theory.md, section 11)
+    if (memory.active())
+      {
+        TimerOutput::Scope t(timer, "memory");
+        memory.prepare_step(start, k, displacement);
+      }
     scheme.displacement_before_step(displacement, old_velocity, k);
     if (extrapolate)
       {
@@ -148,6 +155,8 @@ namespace hemicontact
             parameters.nonlinear_solver,
             stats);
         scheme.displacement_after_step(displacement, velocity, k);
+        if (memory.active())
+          memory.commit_step();
         update_energy_balance(/*initial=*/false);
         last_step_length = k;
         return stats;

@@ -42,6 +42,7 @@ namespace hemicontact
     , law(std::move(laws.normal))
     , friction(std::move(laws.friction))
     , data(std::move(data))
+    , memory(parameters.relaxation, parameters.data.constants, comm)
     , discretization(parameters.geometry, comm)
     , dof_handler(*discretization.triangulation)
     , linear_solver(parameters.linear_solver, comm)
@@ -82,6 +83,12 @@ namespace hemicontact
     assemble_constant_matrices(scheme.step_matrix(time_step));
     setup_contact_nodes();
     preconditioner.reinit(dof_handler, *discretization.mapping);
+    memory.reinit(dof_handler,
+                  *discretization.mapping,
+                  discretization.cell_quadrature(2),
+                  base_constraints,
+                  locally_owned_dofs,
+                  locally_relevant_dofs);
   }
 
   template <int dim>
@@ -368,6 +375,9 @@ namespace hemicontact
     // no contact pressure before the first step (doc/theory.md 9.9)
     contact_traction = 0;
     update_friction_bounds(0.);
+    memory.clear();
+    if (scheme.is_static() && memory.active())
+      solve_static_initial_state();
     if (scheme.initial_velocity_from_step())
       {
         // doc/theory.md, section 9.2: the equation at t_0 with the data u_0,
@@ -415,6 +425,38 @@ namespace hemicontact
     update_energy_balance(/*initial=*/true);
   }
 
+  template <int dim>
+  void
+  ContactProblem<dim>::solve_static_initial_state()
+  {
+    // u_0, the first state of the memory sum, is the solution of load value
+    // 0 (M_0 = 0: the problem without memory; doc/theory.md, section 11)
+    assemble_load(0.);
+    step_rhs = load;
+    base_constraints.set_zero(step_rhs);
+    velocity = 0;
+    try
+      {
+        StepStatistics            stats = solve_step();
+        const FrictionBound<dim> &bound = *data.friction_bound;
+        if (bound.uses_normal_displacement() || bound.uses_contact_pressure())
+          iterate_friction_bound([&]() { return update_friction_bounds(0.); },
+                                 [&]() { return solve_step(); },
+                                 parameters.nonlinear_solver,
+                                 stats);
+      }
+    catch (const SolverFailure &failure)
+      {
+        throw SolverFailure(
+          std::string("the initial displacement u_0 of the static class with "
+                      "memory (the problem of load value t = 0, "
+                      "doc/theory.md section 11) failed: ") +
+          failure.what());
+      }
+    old_velocity = velocity;
+    scheme.displacement_after_step(displacement, velocity, time_step);
+  }
+
 #define HEMICONTACT_INSTANTIATE(dim)                               \
   template ContactProblem<dim>::ContactProblem(const Parameters &, \
                                                ContactLaws,        \
@@ -430,7 +472,8 @@ namespace hemicontact
   template void ContactProblem<dim>::setup_dofs();                 \
   template void ContactProblem<dim>::setup_base_constraints();     \
   template void ContactProblem<dim>::setup_contact_nodes();        \
-  template void ContactProblem<dim>::initialize_state();
+  template void ContactProblem<dim>::initialize_state();           \
+  template void ContactProblem<dim>::solve_static_initial_state();
 
   HEMICONTACT_INSTANTIATE(2)
   HEMICONTACT_INSTANTIATE(3)

@@ -37,8 +37,8 @@ cut = text.rstrip('\n').rfind('\n') + 1
 body, checksum = text[:cut], text[cut:]
 tokens = body.split(' ')
 # 22 serialization::archive V 0 0 step k n_steps count item_version values...
-assert tokens[8] == '9', tokens[:10]
-tokens[8] = '8'
+assert tokens[8] == '10', tokens[:10]
+tokens[8] = '9'
 del tokens[10]
 body = ' '.join(tokens)
 if len(sys.argv) > 2:

@@ -140,6 +140,43 @@ namespace hemicontact
     parse(ParameterHandler &prm);
   };
 
+  /** The kernel of the relaxation tensor R(t) ('relaxation/kernel'). */
+  enum class RelaxationKernelType
+  {
+    none,      ///< no memory: sigma as without relaxation
+    prony,     ///< R(t) = sum_m R_m exp(-t/tau_m), O(1) history per term
+    expression ///< mu_R(t), lambda_R(t) as expressions: every past state
+  };
+
+  /**
+   * Long memory in the stress (doc/theory.md, section 10): the isotropic
+   * relaxation tensor R(t) eps = 2 mu_R(t) eps + lambda_R(t) tr(eps) I of
+   * sigma = ... + int_0^t R(t - s) eps(u(s)) ds.
+   */
+  struct RelaxationParameters
+  {
+    RelaxationKernelType kernel;
+    /** The Prony series: mu_m, lambda_m and tau_m of each term. */
+    std::vector<double> mu_amplitudes;
+    std::vector<double> lambda_amplitudes;
+    std::vector<double> relaxation_times;
+    /** The general kernel: expressions in t. */
+    std::string mu;
+    std::string lambda;
+
+    /** Whether the stress has a memory term. */
+    bool
+    active() const
+    {
+      return kernel != RelaxationKernelType::none;
+    }
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
+  };
+
   /** Where Newton starts in a step. */
   enum class InitialGuess
   {
@@ -350,6 +387,7 @@ namespace hemicontact
     TimeParameters            time;
     ProblemParameters         problem;
     DataParameters            data;
+    RelaxationParameters      relaxation;
     NonlinearSolverParameters nonlinear_solver;
     LinearSolverParameters    linear_solver;
     /** Set from C++ only (tests, benchmarks): see SolverTuning. */

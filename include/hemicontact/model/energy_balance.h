@@ -42,6 +42,12 @@ namespace hemicontact
       0; ///< sum of E after - E before a mesh or k change
     /** The step energy J_n at the step's solution (doc/theory.md 9). */
     double minimised_energy = 0;
+    /**
+     * The work of the memory stress (doc/theory.md, section 11): sum k
+     * (M_n, eps(w_n)) in the velocity classes, 1/2 (M_n, eps(u_n)) at a
+     * load value of the static class; 0 without memory.
+     */
+    double memory_work = 0;
 
     double
     total_energy() const
@@ -53,23 +59,27 @@ namespace hemicontact
     double
     defect() const
     {
-      return total_energy() - initial_energy - transfer_change +
-             viscous_dissipation + friction_dissipation + damping_dissipation +
-             numerical_dissipation - external_work;
+      const double d = total_energy() - initial_energy - transfer_change +
+                       viscous_dissipation + friction_dissipation +
+                       damping_dissipation + numerical_dissipation -
+                       external_work;
+      return memory_work == 0. ? d : d + memory_work;
     }
 
     /**
      * The energy put into the body: |E_0| + |sum k <f_n, w_n>| + |transfer
-     * changes|. A stable run holds at most about this much (the
-     * dissipations of the laws and the viscosity are non-negative), so it is
-     * the scale the defect is measured against: an energy that explodes
-     * cannot hide its own round-off in it.
+     * changes| (+ |memory work|, which a kernel may turn into energy put
+     * in). A stable run holds at most about this much (the dissipations of
+     * the laws and the viscosity are non-negative), so it is the scale the
+     * defect is measured against: an energy that explodes cannot hide its
+     * own round-off in it.
      */
     double
     supplied_energy() const
     {
-      return std::abs(initial_energy) + std::abs(external_work) +
-             std::abs(transfer_change);
+      const double e = std::abs(initial_energy) + std::abs(external_work) +
+                       std::abs(transfer_change);
+      return memory_work == 0. ? e : e + std::abs(memory_work);
     }
 
     /** The defect relative to the energy supplied. */

@@ -24,7 +24,7 @@ namespace hemicontact
     namespace fs = std::filesystem;
 
     /** The number of values of EnergyBalance in a checkpoint. */
-    inline constexpr std::size_t n_energy_values = 9;
+    inline constexpr std::size_t n_energy_values = 10;
 
     /**
      * @p state as a text archive followed by the line "crc32 N" of that

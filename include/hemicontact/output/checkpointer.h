@@ -47,6 +47,8 @@ namespace hemicontact
     std::string mesh_signature;
     /** The preconditioner's ConstrainedAmgStatus. */
     unsigned int constrained_amg = 0;
+    /** MemoryHistory::saved_values() (its vectors are fields). */
+    std::vector<double> memory_history;
 
     /** The energy balance it records. */
     EnergyBalance
@@ -58,7 +60,7 @@ namespace hemicontact
     {
       ar &step_number &time_step &n_steps &energy &pvd_records
         &problem_definition &file_signatures &n_ranks &last_step_length &run_id
-          &mesh_signature &constrained_amg;
+          &mesh_signature &constrained_amg &memory_history;
     }
   };
 

@@ -14,6 +14,7 @@
 #include <hemicontact/input/parameters.h>
 #include <hemicontact/laws/contact_laws.h>
 #include <hemicontact/laws/normal_law.h>
+#include <hemicontact/memory/memory_history.h>
 #include <hemicontact/mesh/discretization.h>
 #include <hemicontact/model/contact_node.h>
 #include <hemicontact/model/energy_balance.h>
@@ -226,6 +227,8 @@ namespace hemicontact
       double       last_step_length;
       unsigned int step_number;
       unsigned int n_steps;
+      /** The history of the memory term of the stress. */
+      const MemoryHistory<dim> &memory;
     };
 
     State
@@ -256,7 +259,8 @@ namespace hemicontact
               time_step,
               last_step_length,
               step_number,
-              n_steps};
+              n_steps,
+              memory};
     }
     /** @} */
 
@@ -278,6 +282,12 @@ namespace hemicontact
      */
     void
     initialize_state();
+    /**
+     * The static class with memory: u_0 = the solution of load value 0,
+     * the first state of the memory sum (doc/theory.md, section 11).
+     */
+    void
+    solve_static_initial_state();
     /**
      * F_b at every contact node from 'data/friction bound' at time @p t,
      * u_nu from the displacement held (static class: from the step's
@@ -446,6 +456,8 @@ namespace hemicontact
     std::unique_ptr<NormalLaw>   law;
     std::unique_ptr<FrictionLaw> friction;
     ProblemData<dim>             data;
+    /** The memory term of the stress: its history and its step functional. */
+    MemoryHistory<dim> memory;
 
     Discretization<dim> discretization;
     DoFHandler<dim>     dof_handler;

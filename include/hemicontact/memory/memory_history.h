@@ -1,0 +1,172 @@
+#pragma once
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <hemicontact/input/parameters.h>
+#include <hemicontact/memory/relaxation_kernel.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace hemicontact
+{
+  using namespace dealii;
+
+  /**
+   * The history of the memory term of the stress (doc/theory.md, section
+   * 11), its only owner: the step on [t_{n-1}, t_n] gets the functional
+   * m_n(v) = (M_n, eps(v)) of
+   *
+   *   M_n = sum_{j<n} k_j R(t_n - t_j) eps(u_j),   k_j = t_{j+1} - t_j,
+   *
+   * u_j the displacement the scheme holds at t_j, and subtracts it from its
+   * right-hand side; the step matrix, the Newton method and the laws do
+   * not see it. Since R is isotropic and constant in space,
+   * m_n = A_mu S_mu + A_lambda S_lambda with the matrices of
+   * a_mu(u, v) = 2 (eps(u), eps(v)) and a_lambda(u, v) = (div u, div v) and
+   * the nodal vectors S_mu = sum_j k_j mu_R(t_n - t_j) u_j, S_lambda the
+   * same with lambda_R.
+   *
+   * A Prony series keeps one vector per term, h_n = e^{-k_n/tau}
+   * (h_{n-1} + k_n u_{n-1}), the same sum exactly; an expression kernel
+   * keeps every past state u_j with t_j and k_j. prepare_step() forms m_n
+   * without changing the history, commit_step() adds the step to it after
+   * the step converged: a failed step (and its halves) needs no undo.
+   */
+  template <int dim>
+  class MemoryHistory
+  {
+  public:
+    using VectorType = TrilinosWrappers::MPI::Vector;
+
+    /** The kernel of @p parameters ('data/constants' @p constants). */
+    MemoryHistory(const RelaxationParameters &parameters,
+                  const std::string          &constants,
+                  MPI_Comm                    comm);
+
+    /** Whether the stress has a memory term ('relaxation/kernel' not none). */
+    bool
+    active() const
+    {
+      return kernel.type() != RelaxationKernelType::none;
+    }
+
+    const RelaxationKernel &
+    get_kernel() const
+    {
+      return kernel;
+    }
+
+    /**
+     * The matrices A_mu and A_lambda on the mesh of @p dof_handler,
+     * condensed with @p constraints as the step matrix is, and an empty
+     * history. Nothing without a kernel.
+     */
+    void
+    reinit(const DoFHandler<dim>           &dof_handler,
+           const Mapping<dim>              &mapping,
+           const Quadrature<dim>           &quadrature,
+           const AffineConstraints<double> &constraints,
+           const IndexSet                  &owned,
+           const IndexSet                  &relevant);
+
+    /** Forget every past state (a run starting at t = 0). */
+    void
+    clear();
+
+    /**
+     * The memory functional m of the step on [@p start, @p start + @p k]
+     * from the history and @p u_start, the displacement at @p start, the
+     * state the step adds to the history once it converged.
+     */
+    void
+    prepare_step(const double start, const double k, const VectorType &u_start);
+
+    /** @p rhs -= m of the step prepared last. */
+    void
+    subtract_from(VectorType &rhs) const
+    {
+      rhs -= functional;
+    }
+
+    /** m = A_mu S_mu + A_lambda S_lambda of the step prepared last. */
+    const VectorType &
+    step_functional() const
+    {
+      return functional;
+    }
+
+    /** The step prepared last converged: its state joins the history. */
+    void
+    commit_step();
+
+    /**
+     * The cell averages of the memory stress M_n = 2 eps(S_mu) +
+     * div(S_lambda) I of the step prepared last (zero before the first
+     * step), the components xx, xy, (xz,) yy, ... as the field output
+     * names them; owned cells only.
+     */
+    std::vector<Vector<float>>
+    cell_stress(const DoFHandler<dim> &dof_handler,
+                const Mapping<dim>    &mapping,
+                const Quadrature<dim> &quadrature) const;
+
+    /** @name Checkpoints */
+    /** @{ */
+    /** The numbers of the history: its size and, for an expression, t_j, k_j.
+     */
+    std::vector<double>
+    saved_values() const;
+    /** The vectors of the history: one per Prony term or per past state. */
+    std::vector<const VectorType *>
+    saved_fields() const;
+    /**
+     * A history of the size @p values record (from saved_values()), with
+     * its t_j and k_j; the vectors to read its fields into.
+     */
+    std::vector<VectorType *>
+    restore(const std::vector<double> &values);
+    /** @} */
+
+    /** Bytes held: the two matrices and the vectors. */
+    std::size_t
+    memory_consumption() const;
+
+  private:
+    RelaxationKernel kernel;
+    MPI_Comm         comm;
+    IndexSet         owned_dofs;
+    IndexSet         relevant_dofs;
+
+    /** A_mu and A_lambda. */
+    TrilinosWrappers::SparseMatrix shear_matrix;
+    TrilinosWrappers::SparseMatrix volumetric_matrix;
+
+    /** Prony: h_{n-1} of each term, and h_n of the step prepared. */
+    std::vector<VectorType> terms;
+    std::vector<VectorType> trial_terms;
+
+    /** Expression: t_j, k_j and u_j of every state j < n - 1. */
+    std::vector<double>     past_times;
+    std::vector<double>     past_steps;
+    std::vector<VectorType> past_states;
+    /** ... and the state the step prepared adds. */
+    double     pending_time = 0;
+    double     pending_step = 0;
+    VectorType pending_state;
+
+    /** S_mu, S_lambda and m of the step prepared last. */
+    VectorType shear_sum;
+    VectorType volumetric_sum;
+    VectorType functional;
+    bool       prepared = false;
+  };
+} // namespace hemicontact

@@ -1,0 +1,140 @@
+/**
+ * The subsection 'relaxation': the kernel of the memory term of the stress
+ * (RelaxationParameters, include/hemicontact/input/parameters.h).
+ */
+#include <deal.II/base/utilities.h>
+
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/input/parameters.h>
+#include <hemicontact/input/selection.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace hemicontact
+{
+  namespace
+  {
+    const SelectionNames<RelaxationKernelType> kernel_types = {
+      {"none", RelaxationKernelType::none},
+      {"prony", RelaxationKernelType::prony},
+      {"expression", RelaxationKernelType::expression}};
+
+    /** The comma-separated numbers of @p entry, each a finite number. */
+    std::vector<double>
+    get_numbers(const ParameterHandler &prm, const std::string &entry)
+    {
+      std::vector<double> numbers;
+      for (const std::string &item :
+           Utilities::split_string_list(prm.get(entry), ','))
+        {
+          double value;
+          try
+            {
+              value = Utilities::string_to_double(item);
+            }
+          catch (...)
+            {
+              throw InputError("relaxation: '" + entry + "' entry '" + item +
+                               "' is not a number.");
+            }
+          require(std::isfinite(value),
+                  "relaxation: '" + entry + "' entry '" + item +
+                    "' is not a finite number.");
+          numbers.push_back(value);
+        }
+      return numbers;
+    }
+  } // namespace
+
+  void
+  RelaxationParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("relaxation");
+    prm.declare_entry(
+      "kernel",
+      "none",
+      selection_pattern(kernel_types),
+      "Long memory in the stress (doc/theory.md, section 11): sigma = "
+      "A eps(w) + B eps(u) + int_0^t R(t - s) eps(u(s)) ds, R(t) eps = "
+      "2 mu_R(t) eps + lambda_R(t) tr(eps) I, in every problem class "
+      "(static: sigma = B eps(u) + int R eps(u)). The integral is the "
+      "left-rectangle sum over the states before the step, M_n = sum_{j<n} "
+      "k_j R(t_n - t_j) eps(u_j), on the step's right-hand side. 'none': no "
+      "memory. 'prony': R(t) = sum_m exp(-t/tau_m) (2 mu_m eps + lambda_m "
+      "tr(eps) I) from the three lists below, one vector of history per "
+      "term, updated exactly at a fixed cost per step. 'expression': "
+      "mu_R(t) and lambda_R(t) from 'mu' and 'lambda'; every past state is "
+      "kept, so a step costs time and memory growing with the number of "
+      "steps before it. Not with adaptive meshes or manufactured solutions.");
+    prm.declare_entry("mu amplitudes",
+                      "",
+                      Patterns::Anything(),
+                      "'kernel = prony': the amplitudes mu_m of mu_R(t) = "
+                      "sum_m mu_m exp(-t/tau_m), comma-separated finite "
+                      "numbers, one per term of 'relaxation times'.");
+    prm.declare_entry("lambda amplitudes",
+                      "",
+                      Patterns::Anything(),
+                      "'kernel = prony': the amplitudes lambda_m of "
+                      "lambda_R(t) = sum_m lambda_m exp(-t/tau_m), "
+                      "comma-separated finite numbers, one per term of "
+                      "'relaxation times'.");
+    prm.declare_entry("relaxation times",
+                      "",
+                      Patterns::Anything(),
+                      "'kernel = prony': the relaxation times tau_m > 0 of "
+                      "the terms, comma-separated finite numbers.");
+    prm.declare_entry("mu",
+                      "0",
+                      Patterns::Anything(),
+                      "'kernel = expression': mu_R(t), a scalar expression "
+                      "(doc/parameters.md, Expressions) in t and the "
+                      "constants of 'data/constants'; it must be finite at "
+                      "t = k, 2k, ..., T (the rule never evaluates it at "
+                      "t = 0).");
+    prm.declare_entry("lambda",
+                      "0",
+                      Patterns::Anything(),
+                      "'kernel = expression': lambda_R(t), as 'mu'.");
+    prm.leave_subsection();
+  }
+
+  void
+  RelaxationParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("relaxation");
+    kernel            = get_selection(prm, "kernel", kernel_types);
+    mu_amplitudes     = get_numbers(prm, "mu amplitudes");
+    lambda_amplitudes = get_numbers(prm, "lambda amplitudes");
+    relaxation_times  = get_numbers(prm, "relaxation times");
+    mu                = prm.get("mu");
+    lambda            = prm.get("lambda");
+    prm.leave_subsection();
+
+    if (kernel != RelaxationKernelType::prony)
+      return;
+    require(!relaxation_times.empty(),
+            "relaxation: 'kernel = prony' needs at least one term: set "
+            "'relaxation times' (and the amplitudes of each term).");
+    for (const double tau : relaxation_times)
+      {
+        std::ostringstream message;
+        message << "relaxation: 'relaxation times' holds " << tau
+                << "; every relaxation time tau_m must be positive (the "
+                   "terms are exp(-t/tau_m)).";
+        require(tau > 0, message.str());
+      }
+    for (const auto &[name, amplitudes] :
+         {std::make_pair("mu amplitudes", &mu_amplitudes),
+          std::make_pair("lambda amplitudes", &lambda_amplitudes)})
+      require(amplitudes->size() == relaxation_times.size(),
+              "relaxation: '" + std::string(name) + "' has " +
+                std::to_string(amplitudes->size()) +
+                " values and 'relaxation times' " +
+                std::to_string(relaxation_times.size()) +
+                "; give one amplitude per term (0 for none).");
+  }
+} // namespace hemicontact
