@@ -437,11 +437,11 @@ namespace hemicontact
     velocity = 0;
     try
       {
-        StepStatistics            stats = solve_step();
+        StepStatistics            stats = solve_step(time_step);
         const FrictionBound<dim> &bound = *data.friction_bound;
         if (bound.uses_normal_displacement() || bound.uses_contact_pressure())
           iterate_friction_bound([&]() { return update_friction_bounds(0.); },
-                                 [&]() { return solve_step(); },
+                                 [&]() { return solve_step(time_step); },
                                  parameters.nonlinear_solver,
                                  stats);
       }
