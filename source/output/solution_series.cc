@@ -168,6 +168,15 @@ namespace hemicontact
     if (parameters.adaptivity.interval > 0)
       cell_data.emplace_back("refinement_indicator",
                              problem.refinement_indicators());
+    // eta_K of the step written; 0 before the first step
+    if (parameters.output.error_estimate)
+      {
+        const ErrorEstimate *estimate = problem.last_error_estimate();
+        cell_data.emplace_back("error_estimate",
+                               estimate != nullptr ?
+                                 estimate->cell_values() :
+                                 Vector<float>(mesh.n_active_cells()));
+      }
 
     // the job, on the writer's thread and without MPI: stresses, patches
     // and the VTU files, or the data in HDF5 layout
