@@ -9,16 +9,19 @@
 # 'problem/class' and 'problem/time scheme' (doc/theory.md, section 9) and
 # write to results/CASE-TYPE-CLASS-SCHEME/ instead. The static cases
 # (*_static.prm) set their class themselves and write to
-# results/CASE-TYPE/.
+# results/CASE-TYPE/. ESTIMATE=true sets 'output/error estimate' (the
+# estimate and effectivity index per level, doc/theory.md section 11) and
+# appends -estimate to the directory.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 case_name=$1; type=$2; levels=$3; refinement=$4; time_step=$5; np=${6:-1}
-class=${CLASS:-}; scheme=${SCHEME:-}
+class=${CLASS:-}; scheme=${SCHEME:-}; estimate=${ESTIMATE:-false}
 out="$root/results/$case_name-$type"
 if [ -n "$class$scheme" ]; then
   out="$out-${class:-dynamic}-${scheme:-left point}"
   out="${out// /-}"
 fi
+[ "$estimate" != true ] || out="$out-estimate"
 mkdir -p "$out"
 {
   cat "$root/prm/verification/$case_name.prm"
@@ -28,6 +31,7 @@ mkdir -p "$out"
   printf 'subsection output\n  set directory = %s\nend\n' "$out"
   [ -z "$class" ] || printf 'subsection problem\n  set class = %s\nend\n' "$class"
   [ -z "$scheme" ] || printf 'subsection problem\n  set time scheme = %s\nend\n' "$scheme"
+  [ "$estimate" != true ] || printf 'subsection output\n  set error estimate = true\nend\n'
 } > "$out/study.prm"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 start=$(date +%s)

@@ -530,6 +530,16 @@ namespace hemicontact
                       "true",
                       Patterns::Bool(),
                       "Print the TimerOutput summary at the end.");
+    prm.declare_entry(
+      "error estimate",
+      "false",
+      Patterns::Bool(),
+      "After every step, evaluate the residual a posteriori error estimate "
+      "eta_n in the energy norm of the step (doc/theory.md, section 12): "
+      "its terms in steps.csv, eta_K per cell ('error_estimate') in the "
+      "solution files, the run's estimate in the summary line, and the "
+      "estimate and effectivity index of each level of a convergence "
+      "study.");
     prm.leave_subsection();
   }
 
@@ -546,6 +556,7 @@ namespace hemicontact
     compression         = get_selection(prm, "compression", compression_levels);
     timing_summary      = prm.get_bool("timing summary");
     performance_summary = prm.get_bool("performance summary");
+    error_estimate      = prm.get_bool("error estimate");
     prm.leave_subsection();
     require(!directory.empty(), "output: 'directory' must not be empty.");
   }

@@ -171,7 +171,9 @@ namespace hemicontact
            "kinetic_before_adaptation,elastic_before_adaptation,"
            "kinetic_after_adaptation,elastic_after_adaptation,"
            "energy_transfer_change,time_step_halvings,minimised_energy,"
-           "bound_iterations,n_at_breakpoint,n_at_wall,memory_work\n";
+           "bound_iterations,n_at_breakpoint,n_at_wall,memory_work,"
+           "error_estimate,estimate_interior,estimate_jumps,"
+           "estimate_neumann,estimate_contact\n";
     // probes.csv (the points are checked above)
     if (!probe_points.empty() &&
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
@@ -366,7 +368,15 @@ namespace hemicontact
             << "," << s.elastic_after_adaptation << "," << e.transfer_change
             << "," << s.time_step_halvings << "," << e.minimised_energy << ","
             << s.bound_iterations << "," << s.n_at_breakpoint << ","
-            << s.n_at_wall << "," << e.memory_work << "\n";
+            << s.n_at_wall << "," << e.memory_work;
+        // the estimate's columns are empty where none was evaluated
+        if (s.estimated)
+          row << "," << s.estimate << "," << s.estimate_interior << ","
+              << s.estimate_jumps << "," << s.estimate_neumann << ","
+              << s.estimate_contact;
+        else
+          row << ",,,,,";
+        row << "\n";
         error = append_complete(steps_file,
                                 parameters.output.directory + "/steps.csv",
                                 row.str());
@@ -465,6 +475,13 @@ namespace hemicontact
           << double(totals.newton_iterations) / std::max(totals.steps, 1u)
           << " max " << totals.max_newton << ", energy defect < 1e-7 relative: "
           << (s.energy.relative_defect() < 1e-7 ? "yes" : "no") << std::endl;
+    if (totals.estimated_steps > 0)
+      pcout << "error estimate (energy norm of the step, doc/theory.md 12): "
+            << "largest eta_n = " << std::scientific << std::setprecision(3)
+            << totals.largest_estimate << " (step "
+            << totals.largest_estimate_step << "), (sum_n k eta_n^2)^(1/2) = "
+            << std::sqrt(totals.estimate_k_sum) << std::defaultfloat
+            << std::endl;
     if (parameters.output.performance_summary)
       write_performance_summary(problem,
                                 parameters,

@@ -184,6 +184,15 @@ namespace hemicontact
                                      xyz[j],
                                    memory_stress[c++]);
       }
+    // eta_K of the step written; 0 before the first step
+    if (parameters.output.error_estimate)
+      {
+        const ErrorEstimate *estimate = problem.last_error_estimate();
+        cell_data.emplace_back("error_estimate",
+                               estimate != nullptr ?
+                                 estimate->cell_values() :
+                                 Vector<float>(mesh.n_active_cells()));
+      }
 
     // the job, on the writer's thread and without MPI: stresses, patches
     // and the VTU files, or the data in HDF5 layout

@@ -93,6 +93,7 @@ namespace hemicontact
 
     std::tie(stats.kinetic_before_adaptation, stats.elastic_before_adaptation) =
       stored_energy();
+    error_estimate_step = 0; // its cells are those of the mesh left
 
     // mark: thresholds from all indicators, sorted, so the same on any
     // number of ranks (see marking_thresholds())

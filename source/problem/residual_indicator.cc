@@ -1,22 +1,13 @@
-#include <deal.II/fe/fe_interface_values.h>
-#include <deal.II/fe/fe_values.h>
-
 #include <hemicontact/problem/contact_problem.h>
-
-#include <algorithm>
-#include <cmath>
-#include <vector>
 
 namespace hemicontact
 {
   template <int dim>
-  Vector<float>
-  ContactProblem<dim>::residual_indicators() const
+  ErrorEstimate
+  ContactProblem<dim>::estimate_error() const
   {
-    // the state of the step just solved: rho/k (w_n - w_{n-1}) - div
-    // sigma_h = f0 in the cells, with sigma_h = A eps(w_n) + B eps(u_n)
-    // (u_n the displacement the step used) and the contact traction xi_h
-    // (the nodal contact forces over the nodal weights) on Gamma_3
+    // the state of the step just solved, ghosted; the nodal traction also
+    // at hanging nodes on Gamma_3 (interpolated from the face's nodes)
     const auto ghosted = [&](const TrilinosWrappers::MPI::Vector &v) {
       TrilinosWrappers::MPI::Vector g(locally_owned_dofs,
                                       locally_relevant_dofs,
@@ -24,182 +15,30 @@ namespace hemicontact
       g = v;
       return g;
     };
-    const TrilinosWrappers::MPI::Vector w     = ghosted(velocity),
-                                        w_old = ghosted(old_velocity),
-                                        u     = ghosted(displacement),
-                                        xi    = ghosted(contact_traction);
-
-    const FiniteElement<dim>        &fe      = *discretization.fe;
-    const Mapping<dim>              &mapping = *discretization.mapping;
-    const Quadrature<dim - 1>        face_q = discretization.face_quadrature(2);
-    const FEValuesExtractors::Vector v(0);
-    FEValues<dim>                    fe_values(mapping,
-                            fe,
-                            discretization.cell_quadrature(2),
-                            update_values | update_hessians |
-                              update_quadrature_points | update_JxW_values);
-    FEFaceValues<dim>                fe_face(mapping,
-                              fe,
-                              face_q,
-                              update_values | update_gradients |
-                                update_quadrature_points |
-                                update_normal_vectors | update_JxW_values);
-    FEInterfaceValues<dim>           fe_interface(mapping,
-                                        fe,
-                                        face_q,
-                                        update_gradients |
-                                          update_normal_vectors |
-                                          update_JxW_values);
-
-    const unsigned int          n_q = fe_values.n_quadrature_points;
-    const unsigned int          n_f = face_q.size();
-    std::vector<Tensor<1, dim>> w_values(n_q), w_old_values(n_q);
-    std::vector<Tensor<3, dim>> w_hessians(n_q), u_hessians(n_q);
-    std::vector<Vector<double>> f_values(n_q, Vector<double>(dim));
-    std::vector<Tensor<2, dim>> w_grads(n_f), u_grads(n_f), w_grads_n(n_f),
-      u_grads_n(n_f);
-    std::vector<Tensor<1, dim>> xi_values(n_f);
-    std::vector<Vector<double>> g_values(n_f, Vector<double>(dim));
-
-    const BoundaryParameters &boundary = parameters.boundary;
-    const auto                is_in = [](const std::vector<unsigned int> &ids,
-                          const types::boundary_id         id) {
-      return std::find(ids.begin(), ids.end(), id) != ids.end();
-    };
-    const double rho            = scheme.inertia_density(material.density());
-    const double contact_weight = parameters.adaptivity.contact_weight;
-
-    const auto stress = [&](const Tensor<2, dim> &grad_w,
-                            const Tensor<2, dim> &grad_u) {
-      return Tensor<2, dim>(
-        material.stress(symmetrize(grad_w), symmetrize(grad_u)));
-    };
-
-    Vector<float> indicators(discretization.triangulation->n_active_cells());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          double eta2 = 0;
-
-          // h_K^2 |f0 - rho/k (w_n - w_{n-1}) + div sigma_h|^2 over K
-          fe_values.reinit(cell);
-          fe_values[v].get_function_values(w, w_values);
-          fe_values[v].get_function_values(w_old, w_old_values);
-          fe_values[v].get_function_hessians(w, w_hessians);
-          fe_values[v].get_function_hessians(u, u_hessians);
-          data.body_force->vector_value_list(fe_values.get_quadrature_points(),
-                                             f_values);
-          double cell_residual = 0;
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              Tensor<1, dim> r =
-                -rho / time_step * (w_values[q] - w_old_values[q]) +
-                material.stress_divergence(w_hessians[q], u_hessians[q]);
-              for (unsigned int c = 0; c < dim; ++c)
-                r[c] += f_values[q](c);
-              cell_residual += r.norm_square() * fe_values.JxW(q);
-            }
-          eta2 += std::pow(cell->diameter(), 2) * cell_residual;
-
-          for (const unsigned int f : cell->face_indices())
-            {
-              const auto face = cell->face(f);
-              if (face->at_boundary())
-                {
-                  // h_F |g - sigma_h nu - xi_h|^2 with g = f2 (or f3, or 0),
-                  // xi_h only on Gamma_3; nothing on Gamma_1
-                  const types::boundary_id id = face->boundary_id();
-                  if (is_in(boundary.clamped_ids, id))
-                    continue;
-                  const bool on_traction = is_in(boundary.traction_ids, id);
-                  const bool on_contact =
-                    !on_traction && is_in(boundary.contact_ids, id);
-                  fe_face.reinit(cell, f);
-                  fe_face[v].get_function_gradients(w, w_grads);
-                  fe_face[v].get_function_gradients(u, u_grads);
-                  for (auto &g : g_values)
-                    g = 0;
-                  if (on_traction || on_contact)
-                    data.boundary_traction(on_traction,
-                                           fe_face.get_quadrature_points(),
-                                           fe_face.get_normal_vectors(),
-                                           g_values);
-                  if (on_contact)
-                    fe_face[v].get_function_values(xi, xi_values);
-                  double boundary_residual = 0;
-                  for (unsigned int q = 0; q < n_f; ++q)
-                    {
-                      Tensor<1, dim> r = -stress(w_grads[q], u_grads[q]) *
-                                         fe_face.normal_vector(q);
-                      if (on_contact)
-                        r -= xi_values[q];
-                      for (unsigned int c = 0; c < dim; ++c)
-                        r[c] += g_values[q](c);
-                      boundary_residual += r.norm_square() * fe_face.JxW(q);
-                    }
-                  eta2 += (on_contact ? contact_weight * contact_weight : 1.) *
-                          face->diameter() * boundary_residual;
-                  continue;
-                }
-
-              // 1/2 h_F |[sigma_h nu]|^2, the half of each face of K: all
-              // of it when the neighbour is as fine or coarser, each child
-              // face when it is finer (hanging nodes)
-              const auto add_jump = [&](const unsigned int subface) {
-                const auto &side  = fe_interface.get_fe_face_values(0);
-                const auto &other = fe_interface.get_fe_face_values(1);
-                side[v].get_function_gradients(w, w_grads);
-                side[v].get_function_gradients(u, u_grads);
-                other[v].get_function_gradients(w, w_grads_n);
-                other[v].get_function_gradients(u, u_grads_n);
-                double jump = 0;
-                for (unsigned int q = 0; q < n_f; ++q)
-                  jump += ((stress(w_grads[q], u_grads[q]) -
-                            stress(w_grads_n[q], u_grads_n[q])) *
-                           fe_interface.normal(q))
-                            .norm_square() *
-                          fe_interface.JxW(q);
-                const double h = subface == numbers::invalid_unsigned_int ?
-                                   face->diameter() :
-                                   face->child(subface)->diameter();
-                eta2 += 0.5 * h * jump;
-              };
-              const auto neighbor = cell->neighbor(f);
-              if (face->has_children())
-                for (unsigned int sf = 0; sf < face->n_children(); ++sf)
-                  {
-                    const auto child = cell->neighbor_child_on_subface(f, sf);
-                    fe_interface.reinit(cell,
-                                        f,
-                                        sf,
-                                        child,
-                                        cell->neighbor_face_no(f),
-                                        numbers::invalid_unsigned_int);
-                    add_jump(sf);
-                  }
-              else if (cell->neighbor_is_coarser(f))
-                {
-                  const auto [nf, nsf] = cell->neighbor_of_coarser_neighbor(f);
-                  fe_interface.reinit(
-                    cell, f, numbers::invalid_unsigned_int, neighbor, nf, nsf);
-                  add_jump(numbers::invalid_unsigned_int);
-                }
-              else
-                {
-                  fe_interface.reinit(cell,
-                                      f,
-                                      numbers::invalid_unsigned_int,
-                                      neighbor,
-                                      cell->neighbor_of_neighbor(f),
-                                      numbers::invalid_unsigned_int);
-                  add_jump(numbers::invalid_unsigned_int);
-                }
-            }
-          indicators[cell->active_cell_index()] = std::sqrt(eta2);
-        }
-    return indicators;
+    TrilinosWrappers::MPI::Vector xi_owned(contact_traction);
+    base_constraints.distribute(xi_owned);
+    const ErrorEstimator<dim> estimator(
+      discretization, dof_handler, material, scheme, data, parameters.boundary);
+    return estimator.estimate(ghosted(velocity),
+                              ghosted(old_velocity),
+                              ghosted(displacement),
+                              ghosted(xi_owned),
+                              time_step,
+                              mpi_communicator);
   }
 
+  template <int dim>
+  Vector<float>
+  ContactProblem<dim>::residual_indicators() const
+  {
+    return estimate_error().cell_values(parameters.adaptivity.contact_weight,
+                                        /*in_energy_norm=*/false);
+  }
+
+  template ErrorEstimate
+  ContactProblem<2>::estimate_error() const;
+  template ErrorEstimate
+  ContactProblem<3>::estimate_error() const;
   template Vector<float>
   ContactProblem<2>::residual_indicators() const;
   template Vector<float>

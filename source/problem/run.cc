@@ -84,6 +84,19 @@ namespace hemicontact
     stats.wall_seconds = wall.wall_time();
     stats.n_cells      = discretization.triangulation->n_global_active_cells();
     stats.n_dofs       = dof_handler.n_dofs();
+    if (parameters.output.error_estimate)
+      {
+        TimerOutput::Scope t(timer, "error estimate");
+        error_estimate          = estimate_error();
+        error_estimate_step     = step_number;
+        const ErrorEstimate &e  = error_estimate;
+        stats.estimated         = true;
+        stats.estimate          = e.total();
+        stats.estimate_interior = e.part(e.interior_sum);
+        stats.estimate_jumps    = e.part(e.jumps_sum);
+        stats.estimate_neumann  = e.part(e.neumann_sum);
+        stats.estimate_contact  = e.part(e.contact_sum);
+      }
     return stats;
   }
 
@@ -319,6 +332,7 @@ namespace hemicontact
               "' with a checkpoint to resume from.");
           }
         totals.add(stats);
+        totals.add_estimate(stats, time_step);
         // the fields on the mesh the step ran on, then (maybe) a new mesh
         output.write_probes(*this);
         if (output.solution_due(step_number, finished()))

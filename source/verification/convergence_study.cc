@@ -29,6 +29,8 @@ namespace hemicontact
     struct StepErrors
     {
       double w_L2 = 0, w_V = 0, w_H1 = 0, u_V = 0, u_H1 = 0;
+      /** |||e|||^2 of the step's unknown (doc/theory.md 12.1) */
+      double energy = 0;
     };
 
     /** @p relevant: the locally relevant dofs of the problem's mesh;
@@ -65,6 +67,20 @@ namespace hemicontact
       std::vector<Tensor<2, dim>>      grad_w_h(quadrature.size()),
         grad_u_h(quadrature.size());
 
+      // |||v|||^2 = c_A a_A(v, v) + c_B a_B(v, v) with the step matrix's
+      // coefficients, of the error in the step's unknown (u: static class)
+      const auto                      state = problem.state();
+      const KelvinVoigtMaterial<dim> &mat   = state.material;
+      const StepMatrixCoefficients    c =
+        state.scheme.step_matrix(problem.get_time_step());
+      const bool on_u           = state.scheme.is_static();
+      const auto energy_density = [&](const Tensor<2, dim> &g) {
+        const SymmetricTensor<2, dim> eps = symmetrize(g);
+        return (c.viscous * mat.viscous_stress(eps) +
+                c.elastic * mat.elastic_stress(eps)) *
+               eps;
+      };
+
       StepErrors e;
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -88,13 +104,15 @@ namespace hemicontact
                 e.w_H1 += gw.norm_square() * JxW;
                 e.u_V += symmetrize(gu) * symmetrize(gu) * JxW;
                 e.u_H1 += gu.norm_square() * JxW;
+                e.energy += energy_density(on_u ? gu : gw) * JxW;
               }
           }
-      e.w_L2 = Utilities::MPI::sum(e.w_L2, comm);
-      e.w_V  = Utilities::MPI::sum(e.w_V, comm);
-      e.w_H1 = Utilities::MPI::sum(e.w_H1, comm);
-      e.u_V  = Utilities::MPI::sum(e.u_V, comm);
-      e.u_H1 = Utilities::MPI::sum(e.u_H1, comm);
+      e.w_L2   = Utilities::MPI::sum(e.w_L2, comm);
+      e.w_V    = Utilities::MPI::sum(e.w_V, comm);
+      e.w_H1   = Utilities::MPI::sum(e.w_H1, comm);
+      e.u_V    = Utilities::MPI::sum(e.u_V, comm);
+      e.u_H1   = Utilities::MPI::sum(e.u_H1, comm);
+      e.energy = Utilities::MPI::sum(e.energy, comm);
       return e;
     }
 
@@ -113,8 +131,11 @@ namespace hemicontact
     /** The sums over the steps of one level that make its LevelResult. */
     struct LevelSums
     {
-      ErrorNorms   errors;
-      double       sum_V = 0, sum_V_H1 = 0, sum_dofs = 0;
+      ErrorNorms errors;
+      double     sum_V = 0, sum_V_H1 = 0, sum_dofs = 0;
+      /** k sum_n of |||e_n|||^2, eta_n^2 and of each term's square */
+      double sum_energy = 0, sum_estimate = 0, sum_terms[4] = {0, 0, 0, 0};
+      bool   estimated    = false;
       unsigned int newton = 0, max_newton = 0, n_steps = 0, max_dofs = 0;
       double       branch[7] = {0, 0, 0, 0, 0, 0, 0};
 
@@ -127,6 +148,18 @@ namespace hemicontact
         errors.E_u_H1 = std::max(errors.E_u_H1, std::sqrt(e.u_H1));
         sum_V += k * e.w_V;
         sum_V_H1 += k * e.w_H1;
+        sum_energy += k * e.energy;
+        if (s.estimated)
+          {
+            estimated = true;
+            sum_estimate += k * s.estimate * s.estimate;
+            const double terms[4] = {s.estimate_interior,
+                                     s.estimate_jumps,
+                                     s.estimate_neumann,
+                                     s.estimate_contact};
+            for (unsigned int t = 0; t < 4; ++t)
+              sum_terms[t] += k * terms[t] * terms[t];
+          }
         newton += s.newton_iterations;
         max_newton = std::max(max_newton, s.newton_iterations);
         sum_dofs += s.n_dofs;
@@ -148,10 +181,16 @@ namespace hemicontact
       result() const
       {
         LevelResult r;
-        r.n_steps                = n_steps;
-        r.errors                 = errors;
-        r.errors.E_V             = std::sqrt(sum_V);
-        r.errors.E_V_H1          = std::sqrt(sum_V_H1);
+        r.n_steps         = n_steps;
+        r.errors          = errors;
+        r.errors.E_V      = std::sqrt(sum_V);
+        r.errors.E_V_H1   = std::sqrt(sum_V_H1);
+        r.errors.E_energy = std::sqrt(sum_energy);
+        r.estimated       = estimated;
+        r.estimate        = std::sqrt(sum_estimate);
+        r.effectivity     = r.estimate / r.errors.E_energy;
+        for (unsigned int t = 0; t < 4; ++t)
+          r.estimate_terms[t] = std::sqrt(sum_terms[t]);
         r.mean_dofs              = sum_dofs / n_steps;
         r.max_dofs               = max_dofs;
         r.mean_newton_iterations = double(newton) / n_steps;
@@ -262,7 +301,9 @@ namespace hemicontact
       return "level,h,k,n_dofs,n_steps,E_H,E_V,E_u,E_V_H1,E_u_H1,"
              "mean_newton_iterations,max_newton_iterations,wall_seconds,"
              "share_separating,share_normal_stick,share_damped,"
-             "share_stick,share_slip,mean_dofs,max_dofs,step_wall_seconds\n";
+             "share_stick,share_slip,mean_dofs,max_dofs,step_wall_seconds,"
+             "E_energy,estimate,effectivity,estimate_interior,estimate_jumps,"
+             "estimate_neumann,estimate_contact\n";
     }
 
     std::string
@@ -278,7 +319,17 @@ namespace hemicontact
       for (const double share : r.branch_share)
         csv << "," << share;
       csv << "," << r.mean_dofs << "," << r.max_dofs << ","
-          << r.step_wall_seconds << "\n";
+          << r.step_wall_seconds << "," << e.E_energy;
+      // the estimate's columns are empty without 'output/error estimate'
+      if (r.estimated)
+        {
+          csv << "," << r.estimate << "," << r.effectivity;
+          for (const double term : r.estimate_terms)
+            csv << "," << term;
+        }
+      else
+        csv << ",,,,,,";
+      csv << "\n";
       return csv.str();
     }
 
@@ -325,17 +376,25 @@ namespace hemicontact
       table.add_value("E_V(H1)", r.errors.E_V_H1);
       table.add_value("E_u(H1)", r.errors.E_u_H1);
       table.add_value("newton", r.mean_newton_iterations);
+      if (r.estimated)
+        {
+          table.add_value("E_energy", r.errors.E_energy);
+          table.add_value("estimate", r.estimate);
+          table.add_value("effectivity", r.effectivity);
+        }
     }
 
     /**
      * Formats and orders: log2 of the error ratio between levels, or
      * -log(error ratio) / log(mean dofs ratio) if @p against_dofs (the
-     * table has the column "mean dofs").
+     * table has the column "mean dofs"); the columns of the estimate
+     * @p with_estimate.
      */
     void
     format_table(ConvergenceTable  &table,
                  const unsigned int n_levels,
-                 const bool         against_dofs)
+                 const bool         against_dofs,
+                 const bool         with_estimate)
     {
       for (const char *column : {"E_H", "E_V", "E_u", "E_V(H1)", "E_u(H1)"})
         {
@@ -353,6 +412,15 @@ namespace hemicontact
       table.set_precision("h", 3);
       table.set_precision("k", 3);
       table.set_precision("newton", 2);
+      if (with_estimate)
+        {
+          for (const char *column : {"E_energy", "estimate"})
+            {
+              table.set_scientific(column, true);
+              table.set_precision(column, 3);
+            }
+          table.set_precision("effectivity", 2);
+        }
     }
   } // namespace
 
@@ -439,7 +507,10 @@ namespace hemicontact
           print_branch_shares(level, results.back());
       }
 
-    format_table(table, n_levels, against_dofs);
+    format_table(table,
+                 n_levels,
+                 against_dofs,
+                 parameters.output.error_estimate);
     if (verbose)
       {
         if (against_dofs)

@@ -273,6 +273,8 @@ namespace hemicontact
     bool                                        timing_summary;
     /** Write performance.csv (and time one step-matrix solve) at the end. */
     bool performance_summary;
+    /** Evaluate the residual error estimate after every step. */
+    bool error_estimate;
 
     static void
     declare(ParameterHandler &prm);

@@ -26,6 +26,11 @@ namespace hemicontact
     unsigned int max_newton        = 0;
     unsigned int linear_iterations = 0;
     double       step_wall_seconds = 0; ///< advance() only, no output
+    /** @name The error estimates of the steps ('output/error estimate') */
+    unsigned int estimated_steps       = 0;
+    double       estimate_k_sum        = 0; ///< sum_n k_n eta_n^2
+    double       largest_estimate      = 0; ///< max_n eta_n
+    unsigned int largest_estimate_step = 0;
     /** The parts of the memory at the end of the time loop. */
     MemoryBreakdown memory;
 
@@ -38,6 +43,21 @@ namespace hemicontact
       max_newton = std::max(max_newton, stats.newton_iterations);
       linear_iterations += stats.linear_iterations;
       step_wall_seconds += stats.wall_seconds;
+    }
+
+    /** Count the estimate of the step of @p stats, of length @p k. */
+    void
+    add_estimate(const StepStatistics &stats, const double k)
+    {
+      if (!stats.estimated)
+        return;
+      ++estimated_steps;
+      estimate_k_sum += k * stats.estimate * stats.estimate;
+      if (stats.estimate >= largest_estimate)
+        {
+          largest_estimate      = stats.estimate;
+          largest_estimate_step = stats.step;
+        }
     }
   };
 

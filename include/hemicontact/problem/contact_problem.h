@@ -21,6 +21,7 @@
 #include <hemicontact/model/kelvin_voigt.h>
 #include <hemicontact/model/problem_data.h>
 #include <hemicontact/model/step_scheme.h>
+#include <hemicontact/problem/error_estimator.h>
 #include <hemicontact/solver/linear_solver.h>
 #include <hemicontact/solver/step_preconditioner.h>
 #include <hemicontact/solver/step_statistics.h>
@@ -123,14 +124,31 @@ namespace hemicontact
 
     /**
      * The residual indicator of the step just solved (residual_indicator.cc):
-     * eta_K^2 = h_K^2 |f0 - rho/k (w_n - w_{n-1}) + div sigma_h|^2_K
-     * + 1/2 sum h_F |[sigma_h nu]|^2_F over interior faces + h_F |f2 -
-     * sigma_h nu|^2_F on Neumann faces + 'contact weight'^2 h_F |f3 -
-     * sigma_h nu - xi_h|^2_F on Gamma_3, sigma_h = A eps(w_n) + B eps(u_n),
-     * xi_h the nodal contact traction.
+     * the terms of estimate_error() unscaled, the contact term weighted by
+     * 'adaptivity/contact weight'^2.
      */
     Vector<float>
     residual_indicators() const;
+
+    /**
+     * The residual error estimate of the step just solved (doc/theory.md
+     * section 12, ErrorEstimator).
+     */
+    ErrorEstimate
+    estimate_error() const;
+
+    /**
+     * The estimate advance() evaluated with 'output/error estimate' for the
+     * current step and mesh, or nullptr (not enabled, no step solved
+     * since the start or the last adaptation).
+     */
+    const ErrorEstimate *
+    last_error_estimate() const
+    {
+      return error_estimate_step == step_number && step_number > 0 ?
+               &error_estimate :
+               nullptr;
+    }
 
     /** Whether the final time has been reached. */
     bool
@@ -496,6 +514,10 @@ namespace hemicontact
     StepPreconditioner<dim> preconditioner;
     EnergyBalance           energy;
     ConvexityCheck          convexity;
+
+    /** The estimate of step error_estimate_step (advance(); 0: none). */
+    ErrorEstimate error_estimate;
+    unsigned int  error_estimate_step = 0;
 
     double time_step = 0;
     /** Length of the last converged step (0: none yet). */

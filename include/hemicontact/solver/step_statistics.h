@@ -30,5 +30,13 @@ namespace hemicontact
     double elastic_before_adaptation = 0;
     double kinetic_after_adaptation  = 0;
     double elastic_after_adaptation  = 0;
+    /** @name The error estimate of the step ('output/error estimate',
+     *  doc/theory.md 12); not estimated: all zero */
+    bool   estimated         = false;
+    double estimate          = 0; ///< eta_n in the energy norm of the step
+    double estimate_interior = 0; ///< each term alone, same scaling
+    double estimate_jumps    = 0;
+    double estimate_neumann  = 0;
+    double estimate_contact  = 0;
   };
 } // namespace hemicontact

@@ -24,6 +24,13 @@ namespace hemicontact
     double E_u    = 0;
     double E_V_H1 = 0;
     double E_u_H1 = 0;
+    /**
+     * (k sum_n |||e_n|||^2)^{1/2}, e_n the error of the step's unknown
+     * (static: u) and |||v|||^2 = c_A a_A(v, v) + c_B a_B(v, v) with the
+     * step matrix's coefficients: the norm the estimate bounds
+     * (doc/theory.md 12.1).
+     */
+    double E_energy = 0;
   };
 
   /** One level of a convergence study. */
@@ -52,6 +59,14 @@ namespace hemicontact
     /** shares of (node, step) pairs held at a breakpoint and at the wall */
     double breakpoint_share = 0;
     double wall_share       = 0;
+    /** @name The error estimate ('output/error estimate', doc/theory.md 12) */
+    bool estimated = false;
+    /** (k sum_n eta_n^2)^{1/2} */
+    double estimate = 0;
+    /** estimate / E_energy */
+    double effectivity = 0;
+    /** interior, jumps, Neumann and contact terms, each (k sum_n .^2)^{1/2} */
+    double estimate_terms[4] = {0, 0, 0, 0};
   };
 
   /**
