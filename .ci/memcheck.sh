@@ -6,7 +6,10 @@
 #                                   build-asan/ (Debug, against deal.II's debug
 #                                   library, -DHEMICONTACT_WITH_SANITIZERS=ON),
 #                                   then ctest the unit tests, the short runs
-#                                   (1 and 2 MPI ranks) and the bad-input corpus
+#                                   (1 and 2 MPI ranks; every problem class,
+#                                   walls, laws with breakpoints, Coulomb
+#                                   friction, HDF5 output) and the bad-input
+#                                   corpus
 #   bash .ci/memcheck.sh valgrind   valgrind memcheck: build-valgrind/ (Release
 #                                   with -g), one short run
 #                                   (tests/block_2d_short.prm), full leak check
@@ -25,8 +28,13 @@ jobs=${JOBS:-2}
 # OpenMPI refuses to run as root unless told otherwise
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
-# the tests run under the sanitizers: unit tests, short runs, bad inputs
-asan_tests='^tests/(normal_laws|node_contact|one_step_exact|one_step_rotated_gmsh|block_2d_short|block_3d_short|manufactured_data|projected_vs_direct)\.|^bad_input/'
+# the tests run under the sanitizers: unit tests, short runs, bad inputs;
+# the static and quasistatic classes (static_block_2d, quasistatic_*_2d),
+# walls (signorini_block_2d, finite_penetration_quasistatic_2d, one step of
+# prm/wall_block_2d.prm), jumps and breakpoints (breakpoints_3d_simplex),
+# Coulomb friction (one load value of prm/coulomb_block_2d.prm) and the
+# HDF5 output (io/hdf5_output, nodal_hdf5_writer)
+asan_tests='^tests/(normal_laws|node_contact|one_step_exact|one_step_rotated_gmsh|block_2d_short|block_3d_short|manufactured_data|projected_vs_direct|static_block_2d|quasistatic_left_point_2d|quasistatic_implicit_2d|signorini_block_2d|finite_penetration_quasistatic_2d|breakpoints_3d_simplex|nodal_hdf5_writer)\.|^bad_input/|^shipped_prm/(coulomb_block_2d|wall_block_2d)\.prm$|^io/hdf5_output$'
 
 run_asan() {
   local build=$root/build-asan log=$root/build-asan/memcheck-asan.log
