@@ -55,7 +55,8 @@ namespace hemicontact
       return end == field.c_str() + field.size();
     }
 
-    /** Whether @p line is a row of @p n_fields numbers, the first a step. */
+    /** Whether @p line is a row of @p n_fields numbers or empty fields, the
+     *  first a step. */
     bool
     is_complete_row(const std::string &line, const std::size_t n_fields)
     {
@@ -63,8 +64,10 @@ namespace hemicontact
       if (fields.size() != n_fields ||
           fields[0].find_first_not_of("0123456789") != std::string::npos)
         return false;
+      // an empty field is a value not evaluated at that step (the error
+      // estimate's columns with 'output/error estimate = false')
       for (const std::string &field : fields)
-        if (!is_number(field))
+        if (!field.empty() && !is_number(field))
           return false;
       return true;
     }
