@@ -245,10 +245,8 @@ namespace hemicontact
     for (const ContactNode<dim> &node : system.contact_nodes)
       if (node.locally_owned && std::isfinite(node.upper_limit))
         {
-          Tensor<1, dim> v;
-          for (unsigned int c = 0; c < dim; ++c)
-            v[c] = w[node.dofs[c]];
-          const double excess = v * node.normal - node.upper_limit;
+          const Tensor<1, dim> v      = nodal_vector(node, w);
+          const double         excess = v * node.normal - node.upper_limit;
           if (excess > 0)
             for (unsigned int c = 0; c < dim; ++c)
               w[node.dofs[c]] = v[c] - excess * node.normal[c];

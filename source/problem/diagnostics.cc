@@ -32,18 +32,6 @@ namespace hemicontact
      */
     constexpr double convexity_recheck_headroom = 1.1;
 
-    /** The nodal unknown of @p node in @p v (owned entries). */
-    template <int dim>
-    Tensor<1, dim>
-    nodal_vector(const ContactNode<dim>              &node,
-                 const TrilinosWrappers::MPI::Vector &v)
-    {
-      Tensor<1, dim> x;
-      for (unsigned int c = 0; c < dim; ++c)
-        x[c] = v[node.dofs[c]];
-      return x;
-    }
-
     /**
      * The step energy J = 1/2 v.K v - b.v + sum_i m_i [j_nu + phi] at @p v
      * (constrained entries zero; doc/theory.md section 9): what the step

@@ -8,21 +8,6 @@
 
 namespace hemicontact
 {
-  namespace
-  {
-    /** The normal component of the nodal vector @p v at @p node. */
-    template <int dim>
-    double
-    normal_part(const ContactNode<dim>              &node,
-                const TrilinosWrappers::MPI::Vector &v)
-    {
-      double value = 0;
-      for (unsigned int c = 0; c < dim; ++c)
-        value += v[node.dofs[c]] * node.normal[c];
-      return value;
-    }
-  } // namespace
-
   template <int dim>
   void
   ContactProblem<dim>::require_admissible_initial_state() const
@@ -39,8 +24,8 @@ namespace hemicontact
     for (const ContactNode<dim> &node : contact_nodes)
       if (node.locally_owned && error.empty())
         {
-          const double u_nu = normal_part(node, displacement);
-          const double w_nu = normal_part(node, velocity);
+          const double u_nu = nodal_vector(node, displacement) * node.normal;
+          const double w_nu = nodal_vector(node, velocity) * node.normal;
           // round-off of the nodal values, relative to their own scale
           const double slack =
             1e-12 * std::max(std::abs(g), std::abs(u_nu) + k * std::abs(w_nu));
@@ -88,8 +73,9 @@ namespace hemicontact
     for (const ContactNode<dim> &node : contact_nodes)
       if (node.locally_owned && !base_constraints.is_constrained(node.dofs[0]))
         {
-          const double excess = normal_part(node, displacement) +
-                                offset * normal_part(node, velocity) - g;
+          const double excess =
+            nodal_vector(node, displacement) * node.normal +
+            offset * nodal_vector(node, velocity) * node.normal - g;
           if (excess > 0)
             {
               for (unsigned int c = 0; c < dim; ++c)

@@ -84,6 +84,18 @@ namespace hemicontact
     Tensor<1, dim> force;
   };
 
+  /** The nodal unknown of @p node in the global vector @p v (owned or
+   *  ghosted entries). */
+  template <int dim, class VectorType>
+  Tensor<1, dim>
+  nodal_vector(const ContactNode<dim> &node, const VectorType &v)
+  {
+    Tensor<1, dim> x;
+    for (unsigned int c = 0; c < dim; ++c)
+      x[c] = v[node.dofs[c]];
+    return x;
+  }
+
   /** The pure, node-wise pieces of the active-set method (nodal::). */
   namespace nodal
   {
