@@ -11,8 +11,9 @@
  * one channel and the program's own order.
  */
 
-#include <cstdio>
 #include <unistd.h>
+
+#include <cstdio>
 
 int
 main(int /*argc*/, char *argv[])
