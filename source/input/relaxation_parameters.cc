@@ -68,7 +68,7 @@ namespace hemicontact
       "term, updated exactly at a fixed cost per step. 'expression': "
       "mu_R(t) and lambda_R(t) from 'mu' and 'lambda'; every past state is "
       "kept, so a step costs time and memory growing with the number of "
-      "steps before it. Not with adaptive meshes or manufactured solutions.");
+      "steps before it. Not with adaptive meshes.");
     prm.declare_entry("mu amplitudes",
                       "",
                       Patterns::Anything(),

@@ -135,8 +135,7 @@ namespace hemicontact
       }
 
     // what the memory of the stress does not do (doc/theory.md, section
-    // 11): its history lives on one mesh, and manufactured data do not
-    // hold the memory integral
+    // 11.8): its history lives on one mesh
     if (parameters.relaxation.active())
       {
         require(adaptivity.interval == 0 &&
@@ -146,12 +145,6 @@ namespace hemicontact
                 "is not moved to a new mesh. Set 'adaptivity/interval = 0' "
                 "and 'adaptivity/pre-refinement steps = 0', or "
                 "'relaxation/kernel = none'.");
-        require(!manufactured,
-                "relaxation: a memory kernel ('relaxation/kernel' = prony or "
-                "expression) does not work with 'manufactured solution/"
-                "enabled = true': the derived data do not hold the memory "
-                "integral. Set 'relaxation/kernel = none' for a manufactured "
-                "solution.");
         RelaxationKernel(parameters.relaxation, parameters.data.constants)
           .require_finite(parameters.time.end_time / n_steps, n_steps);
       }

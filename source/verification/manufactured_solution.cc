@@ -1,3 +1,4 @@
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
@@ -65,6 +66,10 @@ namespace hemicontact
                                          "tangential multiplier");
     friction_bound =
       std::make_shared<FrictionBound<dim>>(parameters.data.friction_bound,
+                                           parameters.data.constants);
+    if (parameters.relaxation.active())
+      relaxation =
+        std::make_unique<RelaxationKernel>(parameters.relaxation,
                                            parameters.data.constants);
 
     // the derivatives, once: t is variable number dim; in the static class
@@ -181,6 +186,92 @@ namespace hemicontact
     }
   } // namespace
 
+  namespace
+  {
+    /** Div(2 mu eps(v) + lambda div v I)_i = mu lap v_i + (mu + lambda)
+     *  d_i div v from the Hessian @p h of v ([component][i][j]). */
+    template <int dim>
+    Tensor<1, dim>
+    isotropic_stress_divergence(const Tensor<3, dim> &h,
+                                const double          mu,
+                                const double          lambda)
+    {
+      Tensor<1, dim> result;
+      for (int i = 0; i < dim; ++i)
+        for (int j = 0; j < dim; ++j)
+          result[i] += mu * h[i][j][j] + (mu + lambda) * h[j][i][j];
+      return result;
+    }
+  } // namespace
+
+  template <int dim>
+  std::vector<std::pair<double, double>>
+  ManufacturedSolution<dim>::memory_quadrature(const double t) const
+  {
+    // 8-point Gauss-Legendre on pieces of length at most 1/8: for smooth u
+    // and kernels with relaxation times down to about 0.01 the quadrature
+    // error stays far below the discretisation errors measured
+    const QGauss<1>    gauss(8);
+    const unsigned int n_pieces =
+      std::max(1u, static_cast<unsigned int>(std::ceil(8 * t - 1e-12)));
+    const double                           piece = t / n_pieces;
+    std::vector<std::pair<double, double>> nodes;
+    for (unsigned int i = 0; i < n_pieces; ++i)
+      for (unsigned int q = 0; q < gauss.size(); ++q)
+        nodes.emplace_back((i + gauss.point(q)[0]) * piece,
+                           gauss.weight(q) * piece);
+    return nodes;
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  ManufacturedSolution<dim>::memory_stress(const Point<dim> &p,
+                                           const double      t) const
+  {
+    SymmetricTensor<2, dim> m;
+    if (!relaxation || t <= 0)
+      return m;
+    for (const auto &[s, weight] : memory_quadrature(t))
+      {
+        const auto [mu, lambda] = (*relaxation)(t - s);
+        const SymmetricTensor<2, dim> eps_u =
+          symmetrize(evaluate_fields(std::vector<Point<dim>>{p}, s)[0].grad_u);
+        m += weight * (2 * mu * eps_u +
+                       lambda * trace(eps_u) * unit_symmetric_tensor<dim>());
+      }
+    return m;
+  }
+
+  template <int dim>
+  std::vector<Tensor<1, dim>>
+  ManufacturedSolution<dim>::memory_stress_divergence(
+    const std::vector<Point<dim>> &points,
+    const double                   t) const
+  {
+    std::vector<Tensor<1, dim>> divergence(points.size());
+    if (!relaxation || t <= 0)
+      return divergence;
+    for (const auto &[s, weight] : memory_quadrature(t))
+      {
+        const auto [mu, lambda]     = (*relaxation)(t - s);
+        const std::vector<double> r = evaluate_tape(*force_tape, points, s);
+        for (unsigned int p = 0; p < points.size(); ++p)
+          {
+            // the force tape's outputs: dw/dt, then per (c, i <= j) the
+            // entries of the Hessians of u and of w, interleaved
+            const double  *at = r.data() + p * force_tape->n_outputs() + dim;
+            Tensor<3, dim> hessian_u;
+            for (int c = 0; c < dim; ++c)
+              for (int i = 0; i < dim; ++i)
+                for (int j = i; j < dim; ++j, at += 2)
+                  hessian_u[c][i][j] = hessian_u[c][j][i] = at[0];
+            divergence[p] +=
+              weight * isotropic_stress_divergence(hessian_u, mu, lambda);
+          }
+      }
+    return divergence;
+  }
+
   template <int dim>
   void
   ManufacturedSolution<dim>::unpack_second_derivatives(const double *r,
@@ -253,12 +344,14 @@ namespace hemicontact
                                         SpatialCache *cache) const
   {
     const std::vector<double> r = evaluate_tape(*force_tape, points, t, cache);
+    const std::vector<Tensor<1, dim>> memory =
+      memory_stress_divergence(points, t);
     std::vector<Tensor<1, dim>> forces(points.size());
     for (unsigned int p = 0; p < points.size(); ++p)
       {
         Values v;
         unpack_second_derivatives(r.data() + p * force_tape->n_outputs(), v);
-        forces[p] = inertia_density * v.w_dot - v.div_sigma;
+        forces[p] = inertia_density * v.w_dot - v.div_sigma - memory[p];
       }
     return forces;
   }
@@ -298,7 +391,7 @@ namespace hemicontact
                                               const Tensor<1, dim> &normal,
                                               const double          t) const
   {
-    return stress(evaluate_fields(p, t)) * normal;
+    return (stress(evaluate_fields(p, t)) + memory_stress(p, t)) * normal;
   }
 
   template <int dim>
@@ -339,7 +432,7 @@ namespace hemicontact
     else
       xi_t = friction.response(bound, w_t.norm()) * w_t / w_t.norm();
 
-    return stress(v) * normal + xi_n * normal + xi_t;
+    return (stress(v) + memory_stress(p, t)) * normal + xi_n * normal + xi_t;
   }
 
   template <int dim>

@@ -12,6 +12,7 @@
 #include <hemicontact/laws/friction_bound.h>
 #include <hemicontact/laws/friction_law.h>
 #include <hemicontact/laws/normal_law.h>
+#include <hemicontact/memory/relaxation_kernel.h>
 #include <hemicontact/model/kelvin_voigt.h>
 #include <hemicontact/model/problem_data.h>
 #include <hemicontact/model/step_scheme.h>
@@ -37,6 +38,10 @@ namespace hemicontact
    * (w_nu = 0, w_tau = 0). In the static class (doc/theory.md 9.7) the
    * laws act on u, which takes the place of w here ("w" is u), and the
    * material has no viscosity: f0 = -Div B eps(u).
+   *
+   * With a relaxation kernel (doc/theory.md, section 11.9) sigma gains the
+   * exact memory integral M(t) = int_0^t R(t - s) eps(u(s)) ds, in f0, f2
+   * and f3, by composite Gauss-Legendre quadrature in s.
    */
   template <int dim>
   class ManufacturedSolution
@@ -79,12 +84,17 @@ namespace hemicontact
     std::unique_ptr<SpatialCache>
     make_fields_cache() const;
 
-    /** sigma = A eps(w) + B eps(u). */
+    /** sigma = A eps(w) + B eps(u), the instantaneous part. */
     SymmetricTensor<2, dim>
     stress(const Values &v) const;
 
-    /** f0 = rho dw/dt - Div sigma (quasistatic: -Div sigma, doc/theory.md 9.7).
-     */
+    /** The memory part M(t) = int_0^t R(t - s) eps(u(p, s)) ds of sigma at
+     *  (p, t); zero without a relaxation kernel. */
+    SymmetricTensor<2, dim>
+    memory_stress(const Point<dim> &p, const double t) const;
+
+    /** f0 = rho dw/dt - Div sigma (quasistatic: -Div sigma, doc/theory.md
+     *  9.7), sigma with its memory part. */
     Tensor<1, dim>
     body_force(const Point<dim> &p, const double t) const;
 
@@ -99,7 +109,7 @@ namespace hemicontact
     std::unique_ptr<SpatialCache>
     make_force_cache() const;
 
-    /** f2 = sigma nu. */
+    /** f2 = sigma nu (sigma with its memory part, as below). */
     Tensor<1, dim>
     surface_traction(const Point<dim>     &p,
                      const Tensor<1, dim> &normal,
@@ -122,6 +132,16 @@ namespace hemicontact
     /** w_dot and Div sigma from the force tape's outputs at @p r. */
     void
     unpack_second_derivatives(const double *r, Values &v) const;
+
+    /** The nodes s and weights of the quadrature of [0, t] in the memory
+     *  integral (doc/theory.md, section 11.9). */
+    std::vector<std::pair<double, double>>
+    memory_quadrature(const double t) const;
+
+    /** Div M(t) at @p points (zero without a relaxation kernel). */
+    std::vector<Tensor<1, dim>>
+    memory_stress_divergence(const std::vector<Point<dim>> &points,
+                             const double                   t) const;
 
     const NormalLaw         &law;
     const FrictionLaw       &friction;
@@ -147,5 +167,7 @@ namespace hemicontact
     std::unique_ptr<Expression>               normal_multiplier;
     std::vector<Expression>                   tangential_multiplier;
     std::shared_ptr<const FrictionBound<dim>> friction_bound;
+    /** The relaxation kernel R, or null without memory. */
+    std::unique_ptr<RelaxationKernel> relaxation;
   };
 } // namespace hemicontact
