@@ -135,9 +135,16 @@ namespace hemicontact
       }
 
     // what the memory of the stress does not do (doc/theory.md, section
-    // 11.8): its history lives on one mesh
+    // 11.8): its history lives on one mesh, and the error estimate's
+    // residuals do not hold the memory stress
     if (parameters.relaxation.active())
       {
+        require(!parameters.output.error_estimate,
+                "relaxation: a memory kernel ('relaxation/kernel' = prony or "
+                "expression) does not work with 'output/error estimate = "
+                "true': the estimate's residuals (doc/theory.md, section 12) "
+                "do not hold the memory part of the stress. Set 'output/"
+                "error estimate = false', or 'relaxation/kernel = none'.");
         require(adaptivity.interval == 0 &&
                   adaptivity.pre_refinement_steps == 0,
                 "relaxation: a memory kernel ('relaxation/kernel' = prony or "
