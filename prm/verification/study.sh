@@ -11,17 +11,22 @@
 # (*_static.prm) set their class themselves and write to
 # results/CASE-TYPE/. ESTIMATE=true sets 'output/error estimate' (the
 # estimate and effectivity index per level, doc/theory.md section 11) and
-# appends -estimate to the directory.
+# appends -estimate to the directory. REFERENCE=K (a 'k' study) takes the
+# errors against the run with time step K on the same mesh instead of the
+# manufactured solution ('convergence study/reference time step',
+# doc/verification.md) and appends -reference to the directory.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 case_name=$1; type=$2; levels=$3; refinement=$4; time_step=$5; np=${6:-1}
 class=${CLASS:-}; scheme=${SCHEME:-}; estimate=${ESTIMATE:-false}
+reference=${REFERENCE:-}
 out="$root/results/$case_name-$type"
 if [ -n "$class$scheme" ]; then
   out="$out-${class:-dynamic}-${scheme:-left point}"
   out="${out// /-}"
 fi
 [ "$estimate" != true ] || out="$out-estimate"
+[ -z "$reference" ] || out="$out-reference"
 mkdir -p "$out"
 {
   cat "$root/prm/verification/$case_name.prm"
@@ -32,6 +37,7 @@ mkdir -p "$out"
   [ -z "$class" ] || printf 'subsection problem\n  set class = %s\nend\n' "$class"
   [ -z "$scheme" ] || printf 'subsection problem\n  set time scheme = %s\nend\n' "$scheme"
   [ "$estimate" != true ] || printf 'subsection output\n  set error estimate = true\nend\n'
+  [ -z "$reference" ] || printf 'subsection convergence study\n  set reference time step = %s\nend\n' "$reference"
 } > "$out/study.prm"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 start=$(date +%s)

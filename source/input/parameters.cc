@@ -630,6 +630,16 @@ namespace hemicontact
                       "4",
                       Patterns::Integer(1, 12),
                       "Number of levels.");
+    prm.declare_entry(
+      "reference time step",
+      "0",
+      Patterns::Double(0),
+      "0: the errors are those against the manufactured solution. A value "
+      "> 0 (with 'type = k' on a fixed mesh): the errors of each level are "
+      "taken against a run with this time step on the same mesh, which runs "
+      "first, so that they hold the time error of the scheme alone "
+      "(doc/verification.md). The finest level's time step must be a whole "
+      "multiple (at least 2) of it.");
     prm.leave_subsection();
   }
 
@@ -637,8 +647,9 @@ namespace hemicontact
   ConvergenceStudyParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("convergence study");
-    type     = get_selection(prm, "type", study_types);
-    n_levels = prm.get_integer("levels");
+    type                = get_selection(prm, "type", study_types);
+    n_levels            = prm.get_integer("levels");
+    reference_time_step = prm.get_double("reference time step");
     prm.leave_subsection();
   }
 

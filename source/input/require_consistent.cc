@@ -134,6 +134,36 @@ namespace hemicontact
                   " (a study runs from the start).");
       }
 
+    // a k-study against a reference run on the same mesh
+    // (doc/verification.md): the reference's steps fall on every level's
+    const ConvergenceStudyParameters &study = parameters.study;
+    if (study.reference_time_step > 0)
+      {
+        std::ostringstream value;
+        value << study.reference_time_step;
+        const std::string name =
+          "convergence study: 'reference time step' = " + value.str();
+        require(manufactured && study.type == StudyType::k &&
+                  adaptivity.interval == 0,
+                name +
+                  " needs a 'k' study ('convergence study/type = k', "
+                  "'manufactured solution/enabled = true') on a fixed mesh "
+                  "('adaptivity/interval = 0'): the reference runs on the "
+                  "mesh of every level. Set it to 0 otherwise.");
+        const double finest =
+          parameters.time.time_step / std::ldexp(1., study.n_levels - 1);
+        const double       ratio = finest / study.reference_time_step;
+        std::ostringstream finest_value;
+        finest_value << finest;
+        require(std::abs(ratio - std::round(ratio)) <= 1e-9 * ratio &&
+                  std::round(ratio) >= 2,
+                name + " must divide the finest level's time step " +
+                  finest_value.str() +
+                  " ('time/time step' / 2^(levels - 1)) a whole number of "
+                  "times, at least 2, so that the reference has a step at "
+                  "every step of every level.");
+      }
+
     // what the memory of the stress does not do (doc/theory.md, section
     // 11.8): its history lives on one mesh, and the error estimate's
     // residuals do not hold the memory stress

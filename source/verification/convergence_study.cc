@@ -19,6 +19,7 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <sstream>
 
 namespace hemicontact
@@ -31,6 +32,52 @@ namespace hemicontact
       double w_L2 = 0, w_V = 0, w_H1 = 0, u_V = 0, u_H1 = 0;
       /** |||e|||^2 of the step's unknown (doc/theory.md 12.1) */
       double energy = 0;
+
+      /** The sums over the processes of the locally owned cells' parts. */
+      StepErrors
+      sum(MPI_Comm comm) const
+      {
+        StepErrors e;
+        e.w_L2   = Utilities::MPI::sum(w_L2, comm);
+        e.w_V    = Utilities::MPI::sum(w_V, comm);
+        e.w_H1   = Utilities::MPI::sum(w_H1, comm);
+        e.u_V    = Utilities::MPI::sum(u_V, comm);
+        e.u_H1   = Utilities::MPI::sum(u_H1, comm);
+        e.energy = Utilities::MPI::sum(energy, comm);
+        return e;
+      }
+    };
+
+    /**
+     * The density of |||v|||^2 = c_A a_A(v, v) + c_B a_B(v, v) with the
+     * step matrix's coefficients, of the error in the step's unknown (u:
+     * static class, w otherwise).
+     */
+    template <int dim>
+    class ErrorEnergy
+    {
+    public:
+      explicit ErrorEnergy(const ContactProblem<dim> &problem)
+        : material(problem.state().material)
+        , c(problem.state().scheme.step_matrix(problem.get_time_step()))
+        , on_u(problem.state().scheme.is_static())
+      {}
+
+      /** At a point with error gradients @p grad_u and @p grad_w. */
+      double
+      operator()(const Tensor<2, dim> &grad_u,
+                 const Tensor<2, dim> &grad_w) const
+      {
+        const SymmetricTensor<2, dim> eps = symmetrize(on_u ? grad_u : grad_w);
+        return (c.viscous * material.viscous_stress(eps) +
+                c.elastic * material.elastic_stress(eps)) *
+               eps;
+      }
+
+    private:
+      const KelvinVoigtMaterial<dim> &material;
+      const StepMatrixCoefficients    c;
+      const bool                      on_u;
     };
 
     /** @p relevant: the locally relevant dofs of the problem's mesh;
@@ -67,21 +114,8 @@ namespace hemicontact
       std::vector<Tensor<2, dim>>      grad_w_h(quadrature.size()),
         grad_u_h(quadrature.size());
 
-      // |||v|||^2 = c_A a_A(v, v) + c_B a_B(v, v) with the step matrix's
-      // coefficients, of the error in the step's unknown (u: static class)
-      const auto                      state = problem.state();
-      const KelvinVoigtMaterial<dim> &mat   = state.material;
-      const StepMatrixCoefficients    c =
-        state.scheme.step_matrix(problem.get_time_step());
-      const bool on_u           = state.scheme.is_static();
-      const auto energy_density = [&](const Tensor<2, dim> &g) {
-        const SymmetricTensor<2, dim> eps = symmetrize(g);
-        return (c.viscous * mat.viscous_stress(eps) +
-                c.elastic * mat.elastic_stress(eps)) *
-               eps;
-      };
-
-      StepErrors e;
+      const ErrorEnergy<dim> energy(problem);
+      StepErrors             e;
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -104,16 +138,92 @@ namespace hemicontact
                 e.w_H1 += gw.norm_square() * JxW;
                 e.u_V += symmetrize(gu) * symmetrize(gu) * JxW;
                 e.u_H1 += gu.norm_square() * JxW;
-                e.energy += energy_density(on_u ? gu : gw) * JxW;
+                e.energy += energy(gu, gw) * JxW;
               }
           }
-      e.w_L2   = Utilities::MPI::sum(e.w_L2, comm);
-      e.w_V    = Utilities::MPI::sum(e.w_V, comm);
-      e.w_H1   = Utilities::MPI::sum(e.w_H1, comm);
-      e.u_V    = Utilities::MPI::sum(e.u_V, comm);
-      e.u_H1   = Utilities::MPI::sum(e.u_H1, comm);
-      e.energy = Utilities::MPI::sum(e.energy, comm);
-      return e;
+      return e.sum(comm);
+    }
+
+    /**
+     * The run with 'convergence study/reference time step' on the mesh of
+     * a 'k' study: u and w at the times j k_f, j = 1, 2, ..., of the finest
+     * level's step k_f (entry j - 1; owned entries).
+     */
+    struct ReferenceRun
+    {
+      double                                     finest_step = 0;
+      std::vector<TrilinosWrappers::MPI::Vector> u, w;
+
+      /** The index of the entry at time @p t (a multiple of finest_step). */
+      unsigned int
+      index(const double t) const
+      {
+        const double j = t / finest_step;
+        AssertThrow(std::abs(j - std::round(j)) < 1e-6 && std::round(j) >= 1 &&
+                      std::round(j) <= w.size(),
+                    ExcMessage("no reference step at this time"));
+        return static_cast<unsigned int>(std::round(j)) - 1;
+      }
+    };
+
+    /** The squared norms of w_ref - w_h and u_ref - u_h at time @p t. */
+    template <int dim>
+    StepErrors
+    reference_step_errors(const ContactProblem<dim> &problem,
+                          const ReferenceRun        &reference,
+                          const double               t,
+                          const IndexSet            &relevant,
+                          MPI_Comm                   comm)
+    {
+      const DoFHandler<dim> &dof_handler = problem.get_dof_handler();
+      const unsigned int     j           = reference.index(t);
+      AssertThrow(reference.w[j].size() == problem.get_velocity().size(),
+                  ExcMessage("the reference ran on another mesh"));
+      TrilinosWrappers::MPI::Vector difference(reference.w[j]);
+      difference -= problem.get_velocity();
+      TrilinosWrappers::MPI::Vector d_w(dof_handler.locally_owned_dofs(),
+                                        relevant,
+                                        comm);
+      TrilinosWrappers::MPI::Vector d_u(d_w);
+      d_w        = difference;
+      difference = reference.u[j];
+      difference -= problem.get_displacement();
+      d_u = difference;
+
+      // both fields are finite element functions: Gauss of order 2 is exact
+      const Quadrature<dim> quadrature =
+        dof_handler.get_fe()
+          .reference_cell()
+          .template get_gauss_type_quadrature<dim>(2);
+      FEValues<dim>                    fe_values(problem.get_mapping(),
+                              dof_handler.get_fe(),
+                              quadrature,
+                              update_values | update_gradients |
+                                update_JxW_values);
+      const FEValuesExtractors::Vector v(0);
+      std::vector<Tensor<1, dim>>      w_values(quadrature.size());
+      std::vector<Tensor<2, dim>> gw(quadrature.size()), gu(quadrature.size());
+      const ErrorEnergy<dim>      energy(problem);
+      StepErrors                  e;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            fe_values[v].get_function_values(d_w, w_values);
+            fe_values[v].get_function_gradients(d_w, gw);
+            fe_values[v].get_function_gradients(d_u, gu);
+            for (const unsigned int q : fe_values.quadrature_point_indices())
+              {
+                const double JxW = fe_values.JxW(q);
+                e.w_L2 += w_values[q].norm_square() * JxW;
+                e.w_V += symmetrize(gw[q]) * symmetrize(gw[q]) * JxW;
+                e.w_H1 += gw[q].norm_square() * JxW;
+                e.u_V += symmetrize(gu[q]) * symmetrize(gu[q]) * JxW;
+                e.u_H1 += gu[q].norm_square() * JxW;
+                e.energy += energy(gu[q], gw[q]) * JxW;
+              }
+          }
+      return e.sum(comm);
     }
 
     /** The largest cell diameter of the mesh. */
@@ -206,15 +316,51 @@ namespace hemicontact
     };
 
     /**
+     * The reference of a 'k' study: the run with parameters @p p (the
+     * reference time step), with u and w kept at every multiple of
+     * @p finest_step.
+     */
+    template <int dim>
+    ReferenceRun
+    run_reference(const Parameters &p,
+                  ParameterHandler &prm,
+                  MPI_Comm          comm,
+                  const double      finest_step)
+    {
+      const ContactLaws               laws = create_contact_laws(prm);
+      const ManufacturedSolution<dim> exact(p, *laws.normal, *laws.friction);
+      ContactProblem<dim>             problem(p,
+                                  create_contact_laws(prm),
+                                  exact.make_problem_data(),
+                                  comm);
+      problem.setup();
+      ReferenceRun reference;
+      reference.finest_step = finest_step;
+      while (!problem.finished())
+        {
+          const double j = problem.advance().time / finest_step;
+          if (std::abs(j - std::round(j)) < 1e-6)
+            {
+              reference.u.push_back(problem.get_displacement());
+              reference.w.push_back(problem.get_velocity());
+            }
+        }
+      return reference;
+    }
+
+    /**
      * Run one level with parameters @p p: every step's errors on the mesh
-     * it ran on, then (if due) an adaptation of the mesh as in run().
+     * it ran on (against @p reference if given, else against the
+     * manufactured solution), then (if due) an adaptation of the mesh as
+     * in run().
      */
     template <int dim>
     LevelResult
-    run_level(const Parameters &p,
-              ParameterHandler &prm,
-              MPI_Comm          comm,
-              const bool        check_smoothness)
+    run_level(const Parameters   &p,
+              ParameterHandler   &prm,
+              MPI_Comm            comm,
+              const bool          check_smoothness,
+              const ReferenceRun *reference)
     {
       Timer                           wall;
       const ContactLaws               laws = create_contact_laws(prm);
@@ -252,9 +398,13 @@ namespace hemicontact
       while (!problem.finished())
         {
           StepStatistics s = problem.advance();
-          sums.add(s,
-                   step_errors(problem, exact, s.time, relevant, *cache, comm),
-                   problem.get_time_step());
+          sums.add(
+            s,
+            reference ?
+              reference_step_errors(
+                problem, *reference, s.time, relevant, comm) :
+              step_errors(problem, exact, s.time, relevant, *cache, comm),
+            problem.get_time_step());
           if (problem.adapt_mesh_if_due(s))
             DoFTools::extract_locally_relevant_dofs(problem.get_dof_handler(),
                                                     relevant);
@@ -489,13 +639,36 @@ namespace hemicontact
     require_writable_csv(parameters, comm);
     std::string csv = csv_header();
 
+    // a 'k' study against a reference run on its mesh: the reference first
+    std::unique_ptr<ReferenceRun> reference;
+    const double reference_step = parameters.study.reference_time_step;
+    if (reference_step > 0)
+      {
+        Timer      wall;
+        Parameters p      = parameters;
+        p.time.time_step  = reference_step;
+        p.output.terminal = TerminalOutput::quiet;
+        reference         = std::make_unique<ReferenceRun>(run_reference<dim>(
+          p,
+          prm,
+          comm,
+          study_parameters(parameters, n_levels - 1).time.time_step));
+        if (verbose)
+          std::cout << "reference: time step " << reference_step
+                    << " on the mesh of every level (" << std::fixed
+                    << std::setprecision(1) << wall.wall_time()
+                    << std::defaultfloat
+                    << " s); the errors are those against it" << std::endl;
+      }
+
     std::vector<LevelResult> results;
     ConvergenceTable         table;
     for (unsigned int level = 0; level < n_levels; ++level)
       {
         Parameters p      = study_parameters(parameters, level);
         p.output.terminal = TerminalOutput::quiet;
-        results.push_back(run_level<dim>(p, prm, comm, level == 0));
+        results.push_back(
+          run_level<dim>(p, prm, comm, level == 0, reference.get()));
         add_table_row(table, level, results.back(), adaptive);
         csv += csv_row(level, results.back());
         throw_if_any(root ? write_atomically(parameters.output.directory +

@@ -372,6 +372,12 @@ namespace hemicontact
   {
     StudyType    type;
     unsigned int n_levels; ///< number of levels
+    /**
+     * A 'k' study's errors against the run with this time step on the same
+     * mesh instead of the manufactured solution (0: against the
+     * manufactured solution), doc/verification.md
+     */
+    double reference_time_step;
 
     static void
     declare(ParameterHandler &prm);
