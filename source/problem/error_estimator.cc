@@ -83,6 +83,12 @@ namespace hemicontact
     std::vector<Tensor<1, dim>> xi_values(n_f);
     std::vector<Vector<double>> g_values(n_f, Vector<double>(dim));
 
+    // a part of sigma_h with zero moduli (the static class's A) adds exact
+    // zeros: its field is neither read nor differentiated
+    const bool with_w =
+      material.mu_viscous() != 0 || material.lambda_viscous() != 0;
+    const bool with_u =
+      material.mu_elastic() != 0 || material.lambda_elastic() != 0;
     // the local values of the cell at hand, read once per cell, and of the
     // neighbour across the face at hand
     std::vector<types::global_dof_index> dof_indices(n_dofs),
@@ -97,8 +103,10 @@ namespace hemicontact
     };
     const auto read_other = [&](const auto &other) {
       other->get_dof_indices(other_dof_indices);
-      read(w, other_dof_indices, w_other);
-      read(u, other_dof_indices, u_other);
+      if (with_w)
+        read(w, other_dof_indices, w_other);
+      if (with_u)
+        read(u, other_dof_indices, u_other);
     };
 
     const auto is_in = [](const std::vector<unsigned int> &ids,
@@ -111,10 +119,12 @@ namespace hemicontact
                               const std::vector<double>   &w_cell,
                               const std::vector<double>   &u_cell,
                               std::vector<Tensor<2, dim>> &result) {
-      face_values[v].get_function_gradients_from_local_dof_values(w_cell,
-                                                                  w_grads);
-      face_values[v].get_function_gradients_from_local_dof_values(u_cell,
-                                                                  u_grads);
+      if (with_w)
+        face_values[v].get_function_gradients_from_local_dof_values(w_cell,
+                                                                    w_grads);
+      if (with_u)
+        face_values[v].get_function_gradients_from_local_dof_values(u_cell,
+                                                                    u_grads);
       for (unsigned int q = 0; q < n_f; ++q)
         result[q] = Tensor<2, dim>(
           material.stress(symmetrize(w_grads[q]), symmetrize(u_grads[q])));
@@ -148,16 +158,20 @@ namespace hemicontact
         {
           const unsigned int i = cell->active_cell_index();
           cell->get_dof_indices(dof_indices);
-          read(w, dof_indices, w_local);
-          read(u, dof_indices, u_local);
+          if (with_w || rho != 0)
+            read(w, dof_indices, w_local);
+          if (with_u)
+            read(u, dof_indices, u_local);
 
           // h_K^2 |f0 - rho/k (w_n - w_{n-1}) + div sigma_h|^2 over K, the
           // inertia only where rho > 0 (the dynamic class)
           fe_values.reinit(cell);
-          fe_values[v].get_function_hessians_from_local_dof_values(w_local,
-                                                                   w_hessians);
-          fe_values[v].get_function_hessians_from_local_dof_values(u_local,
-                                                                   u_hessians);
+          if (with_w)
+            fe_values[v].get_function_hessians_from_local_dof_values(
+              w_local, w_hessians);
+          if (with_u)
+            fe_values[v].get_function_hessians_from_local_dof_values(
+              u_local, u_hessians);
           if (rho != 0)
             {
               read(w_old, dof_indices, w_old_local);
