@@ -62,7 +62,8 @@ namespace hemicontact
     const SelectionNames<RefinementIndicator> indicators = {
       {"kelly", RefinementIndicator::kelly},
       {"kelly contact", RefinementIndicator::kelly_contact},
-      {"residual", RefinementIndicator::residual}};
+      {"residual", RefinementIndicator::residual},
+      {"estimator", RefinementIndicator::estimator}};
     const SelectionNames<MarkingStrategy> strategies = {
       {"fixed fraction", MarkingStrategy::fixed_fraction},
       {"fixed number", MarkingStrategy::fixed_number}};
@@ -668,8 +669,10 @@ namespace hemicontact
       selection_pattern(indicators),
       "Cell indicator: 'kelly' (jumps of the normal derivative of w_n), "
       "'kelly contact' (plus the jumps of the nodal contact traction on "
-      "Gamma_3) or 'residual' (the step's residual in cells, on faces and "
-      "on Gamma_3). Formulas in doc/adaptivity.md.");
+      "Gamma_3), 'residual' (the step's residual in cells, on faces and "
+      "on Gamma_3) or 'estimator' (the cell values eta_K of the a "
+      "posteriori error estimate, doc/theory.md 12.1: 'residual' with "
+      "contact weight 1). Formulas in doc/adaptivity.md.");
     prm.declare_entry("contact weight",
                       "1",
                       Patterns::Double(0),

@@ -21,6 +21,8 @@ namespace hemicontact
     const AdaptivityParameters &settings = parameters.adaptivity;
     if (settings.indicator == RefinementIndicator::residual)
       return residual_indicators();
+    if (settings.indicator == RefinementIndicator::estimator)
+      return estimate_error().cell_values();
     TrilinosWrappers::MPI::Vector w(locally_owned_dofs,
                                     locally_relevant_dofs,
                                     mpi_communicator);

@@ -305,7 +305,8 @@ namespace hemicontact
   {
     kelly,         ///< jumps of the normal derivative of w_n
     kelly_contact, ///< plus the jumps of the contact traction on Gamma_3
-    residual       ///< the step's residual in cells, on faces and on Gamma_3
+    residual,      ///< the step's residual in cells, on faces and on Gamma_3
+    estimator      ///< eta_K of the error estimate (doc/theory.md 12.1)
   };
 
   /** Which cells adaptive refinement marks ('adaptivity/strategy'). */
