@@ -794,6 +794,7 @@ namespace hemicontact
     ProblemParameters::declare(prm);
     DataParameters::declare(prm);
     RelaxationParameters::declare(prm);
+    NormalMemoryParameters::declare(prm);
     NonlinearSolverParameters::declare(prm);
     LinearSolverParameters::declare(prm);
     OutputParameters::declare(prm);
@@ -814,6 +815,7 @@ namespace hemicontact
     problem.parse(prm);
     data.parse(prm);
     relaxation.parse(prm);
+    normal_memory.parse(prm);
     nonlinear_solver.parse(prm);
     linear_solver.parse(prm);
     output.parse(prm);

@@ -4,6 +4,7 @@
  */
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/memory/normal_memory_kernel.h>
 #include <hemicontact/memory/relaxation_kernel.h>
 
 #include <algorithm>
@@ -153,6 +154,25 @@ namespace hemicontact
                 "integral. Set 'relaxation/kernel = none' for a manufactured "
                 "solution.");
         RelaxationKernel(parameters.relaxation, parameters.data.constants)
+          .require_finite(parameters.time.end_time / n_steps, n_steps);
+      }
+    // the same for the memory of the normal response (section 11.9)
+    if (parameters.normal_memory.active())
+      {
+        require(adaptivity.interval == 0 &&
+                  adaptivity.pre_refinement_steps == 0,
+                "normal memory: a memory kernel ('normal memory/kernel' = "
+                "prony or expression) does not work with adaptive meshes: "
+                "its history is not moved to a new mesh. Set "
+                "'adaptivity/interval = 0' and 'adaptivity/pre-refinement "
+                "steps = 0', or 'normal memory/kernel = none'.");
+        require(!manufactured,
+                "normal memory: a memory kernel ('normal memory/kernel' = "
+                "prony or expression) does not work with 'manufactured "
+                "solution/enabled = true': the derived data do not hold the "
+                "memory integral. Set 'normal memory/kernel = none' for a "
+                "manufactured solution.");
+        NormalMemoryKernel(parameters.normal_memory, parameters.data.constants)
           .require_finite(parameters.time.end_time / n_steps, n_steps);
       }
   }

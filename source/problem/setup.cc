@@ -42,7 +42,10 @@ namespace hemicontact
     , law(std::move(laws.normal))
     , friction(std::move(laws.friction))
     , data(std::move(data))
-    , memory(parameters.relaxation, parameters.data.constants, comm)
+    , memory(parameters.relaxation,
+             parameters.normal_memory,
+             parameters.data.constants,
+             comm)
     , discretization(parameters.geometry, comm)
     , dof_handler(*discretization.triangulation)
     , linear_solver(parameters.linear_solver, comm)
@@ -88,7 +91,8 @@ namespace hemicontact
                   discretization.cell_quadrature(2),
                   base_constraints,
                   locally_owned_dofs,
-                  locally_relevant_dofs);
+                  locally_relevant_dofs,
+                  contact_nodes);
   }
 
   template <int dim>
