@@ -27,6 +27,8 @@ namespace hemicontact
       if (node.locally_owned)
         nodes.push_back({node.dofs, node.normal, node.mass});
     memory_pressure.reinit(owned, comm);
+    accumulated_slip.reinit(owned, comm);
+    slip_start.reinit(owned, comm);
     clear();
   }
 
@@ -42,8 +44,9 @@ namespace hemicontact
     past_steps.clear();
     past_states.clear();
     pending_state.reinit(owned_dofs, comm);
-    memory_pressure = 0;
-    prepared        = false;
+    memory_pressure  = 0;
+    accumulated_slip = 0;
+    prepared         = false;
   }
 
   template <int dim>
@@ -52,6 +55,13 @@ namespace hemicontact
                                    const double      k,
                                    const VectorType &u_start)
   {
+    prepared     = true;
+    pending_time = start;
+    pending_step = k;
+    if (slip_measured && slip_from_displacement)
+      slip_start = u_start;
+    if (!normal_active())
+      return;
     // (u_nu)_+ of the state at start, at each node's first dof
     std::vector<double> penetration(nodes.size());
     for (std::size_t i = 0; i < nodes.size(); ++i)
@@ -96,25 +106,38 @@ namespace hemicontact
             pending_state[nodes[i].dofs[0]] = penetration[i];
           }
         pending_state.compress(VectorOperation::insert);
-        pending_time = start;
-        pending_step = k;
       }
     memory_pressure = 0;
     for (std::size_t i = 0; i < nodes.size(); ++i)
       for (unsigned int c = 0; c < dim; ++c)
         memory_pressure[nodes[i].dofs[c]] = sum[i] * nodes[i].normal[c];
     memory_pressure.compress(VectorOperation::insert);
-    prepared = true;
   }
 
   template <int dim>
   void
-  ContactMemory<dim>::commit_step()
+  ContactMemory<dim>::commit_step(const VectorType *unknown)
   {
     Assert(prepared, ExcMessage("commit_step() without prepare_step()"));
+    if (slip_measured)
+      {
+        Assert(unknown != nullptr, ExcMessage("the slip needs the unknown"));
+        // |u_tau,n - u_tau,n-1| (static) or k_n |w_tau,n| per node
+        const double k = slip_from_displacement ? 1. : pending_step;
+        for (const Node &node : nodes)
+          {
+            Tensor<1, dim> v;
+            for (unsigned int c = 0; c < dim; ++c)
+              v[c] = (*unknown)[node.dofs[c]] -
+                     (slip_from_displacement ? slip_start[node.dofs[c]] : 0.);
+            const Tensor<1, dim> v_tau = v - (v * node.normal) * node.normal;
+            accumulated_slip[node.dofs[0]] += k * v_tau.norm();
+          }
+        accumulated_slip.compress(VectorOperation::insert);
+      }
     if (kernel.type() == RelaxationKernelType::prony)
       std::swap(terms, trial_terms);
-    else
+    else if (kernel.type() == RelaxationKernelType::expression)
       {
         past_times.push_back(pending_time);
         past_steps.push_back(pending_step);
@@ -152,6 +175,8 @@ namespace hemicontact
     for (const VectorType &x :
          kernel.type() == RelaxationKernelType::prony ? terms : past_states)
       fields.push_back(&x);
+    if (slip_measured)
+      fields.push_back(&accumulated_slip);
     return fields;
   }
 
@@ -174,6 +199,8 @@ namespace hemicontact
     for (VectorType &x :
          kernel.type() == RelaxationKernelType::prony ? terms : past_states)
       fields.push_back(&x);
+    if (slip_measured)
+      fields.push_back(&accumulated_slip);
     return fields;
   }
 
@@ -184,7 +211,7 @@ namespace hemicontact
     if (!active())
       return 0;
     return memory_pressure.memory_consumption() *
-             (2 * terms.size() + past_states.size() + 2) +
+             (2 * terms.size() + past_states.size() + 4) +
            nodes.capacity() * sizeof(Node);
   }
 

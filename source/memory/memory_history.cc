@@ -139,7 +139,8 @@ namespace hemicontact
       contact.prepare_step(start, k, u_start);
     if (!stress_active())
       {
-        contact.add_functional(functional);
+        if (contact.normal_active())
+          contact.add_functional(functional);
         return;
       }
     if (kernel.type() == RelaxationKernelType::prony)
@@ -174,17 +175,17 @@ namespace hemicontact
     shear_matrix.vmult(functional, shear_sum);
     volumetric_matrix.vmult(tmp, volumetric_sum);
     functional += tmp;
-    if (contact.active())
+    if (contact.normal_active())
       contact.add_functional(functional);
   }
 
   template <int dim>
   void
-  MemoryHistory<dim>::commit_step()
+  MemoryHistory<dim>::commit_step(const VectorType *unknown)
   {
     Assert(prepared, ExcMessage("commit_step() without prepare_step()"));
     if (contact.active())
-      contact.commit_step();
+      contact.commit_step(unknown);
     if (kernel.type() == RelaxationKernelType::prony)
       std::swap(terms, trial_terms);
     else if (kernel.type() == RelaxationKernelType::expression)

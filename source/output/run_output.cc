@@ -234,7 +234,7 @@ namespace hemicontact
                     std::to_string(s.memory.get_kernel().n_terms()) +
                     " terms)" :
                   std::string("'expression'"));
-    if (s.memory.contact_memory().active())
+    if (s.memory.contact_memory().normal_active())
       {
         const NormalMemoryKernel &b = s.memory.contact_memory().get_kernel();
         pcout << ", normal memory "

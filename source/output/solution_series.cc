@@ -79,7 +79,7 @@ namespace hemicontact
           {"displacement", &state.displacement},
           {"contact_traction", &state.contact_traction}};
         // N_i nu_i, the memory's part of the traction (doc/theory.md 11.9)
-        if (state.memory.contact_memory().active())
+        if (state.memory.contact_memory().normal_active())
           fields.push_back(
             {"normal_memory", &state.memory.contact_memory().pressure()});
         nodal_writer->write(state.dof_handler,

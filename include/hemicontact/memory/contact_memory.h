@@ -31,6 +31,11 @@ namespace hemicontact
    * save it as they save the displacement. A Prony series keeps one such
    * vector per term, h_n = e^{-k_n/tau} (h_{n-1} + k_n (u_nu,n-1)_+); an
    * expression kernel keeps every past (u_nu,j)_+ with t_j and k_j.
+   *
+   * With measure_slip(), also the slip s_tau accumulated up to the state
+   * before the step (section 11.10), a variable of the friction bound: in
+   * the static class S_n = sum_{j=1}^{n-1} |u_tau,j - u_tau,j-1|, in the
+   * velocity classes S_n = sum_{j=1}^{n-1} k_j |w_tau,j|.
    */
   template <int dim>
   class ContactMemory
@@ -43,11 +48,46 @@ namespace hemicontact
                   const std::string            &constants,
                   MPI_Comm                      comm);
 
-    /** Whether 'normal memory/kernel' is not none. */
+    /** Whether the normal response or the slip has a history. */
     bool
     active() const
     {
+      return normal_active() || slip_measured;
+    }
+
+    /** Whether 'normal memory/kernel' is not none. */
+    bool
+    normal_active() const
+    {
       return kernel.type() != RelaxationKernelType::none;
+    }
+
+    /**
+     * Accumulate the slip: of the displacement (@p of_displacement, the
+     * static class) or of the velocity. Before reinit().
+     */
+    void
+    measure_slip(const bool of_displacement)
+    {
+      slip_measured          = true;
+      slip_from_displacement = of_displacement;
+    }
+
+    /** Whether the slip is accumulated. */
+    bool
+    slip_active() const
+    {
+      return slip_measured;
+    }
+
+    /**
+     * The accumulated slip s_tau of each owned contact node at its first
+     * degree of freedom, up to the state before the step (zero elsewhere).
+     */
+    const VectorType &
+    slip() const
+    {
+      return accumulated_slip;
     }
 
     const NormalMemoryKernel &
@@ -71,9 +111,13 @@ namespace hemicontact
     void
     prepare_step(const double start, const double k, const VectorType &u_start);
 
-    /** The step prepared last converged: its state joins the history. */
+    /**
+     * The step prepared last converged with the unknown @p unknown (u_n in
+     * the static class, w_n otherwise): its state joins the history and
+     * its slip the accumulated slip.
+     */
     void
-    commit_step();
+    commit_step(const VectorType *unknown);
 
     /** @p functional += m_i N_i nu_i at the owned contact nodes. */
     void
@@ -134,5 +178,11 @@ namespace hemicontact
     /** N_i nu_i of the step prepared last. */
     VectorType memory_pressure;
     bool       prepared = false;
+
+    /** The accumulated slip, and u at the start of the static step. */
+    bool       slip_measured          = false;
+    bool       slip_from_displacement = false;
+    VectorType accumulated_slip;
+    VectorType slip_start;
   };
 } // namespace hemicontact

@@ -94,7 +94,7 @@ namespace hemicontact
     void
     add_pressure(VectorType &traction) const
     {
-      if (contact.active())
+      if (contact.normal_active())
         traction += contact.pressure();
     }
 
@@ -102,7 +102,7 @@ namespace hemicontact
     void
     subtract_pressure(VectorType &traction) const
     {
-      if (contact.active())
+      if (contact.normal_active())
         traction -= contact.pressure();
     }
 
@@ -155,9 +155,24 @@ namespace hemicontact
       return functional;
     }
 
-    /** The step prepared last converged: its state joins the history. */
+    /**
+     * The step prepared last converged: its state joins the history, and
+     * with an accumulated slip that of @p unknown (u_n in the static class,
+     * w_n otherwise).
+     */
     void
-    commit_step();
+    commit_step(const VectorType *unknown = nullptr);
+
+    /**
+     * Accumulate the slip of the contact nodes for the friction bound
+     * (section 11.10): of the displacement (@p of_displacement, the static
+     * class) or of the velocity. Before reinit().
+     */
+    void
+    measure_slip(const bool of_displacement)
+    {
+      contact.measure_slip(of_displacement);
+    }
 
     /**
      * The cell averages of the memory stress M_n = 2 eps(S_mu) +
