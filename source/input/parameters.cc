@@ -433,16 +433,19 @@ namespace hemicontact
                       "scalar expression (doc/parameters.md, Expressions) in "
                       "x, y, z, t, u_nu, the normal displacement at the "
                       "node (positive into the foundation), w_nu, the "
-                      "normal velocity (velocity classes), and p_nu, the "
-                      "contact pressure -sigma_nu at the node. u_nu is the "
+                      "normal velocity (velocity classes), p_nu, the "
+                      "contact pressure -sigma_nu at the node, and s_tau, "
+                      "the slip accumulated up to the state before the step "
+                      "(doc/theory.md, section 11.10). u_nu is the "
                       "displacement known when the step starts, p_nu in the "
                       "velocity classes the pressure of the step before; a "
                       "bound in the step's own unknown (w_nu; u_nu or p_nu "
                       "in the static class) is found by fixed-point "
                       "iterations (doc/theory.md, sections 9.8 and 9.9). "
                       "E.g. mu*cp*pos(u_nu) for normal compliance with "
-                      "friction, mu*pos(p_nu) for Coulomb friction, or "
-                      "x < 0.5 ? 0.3 : 0.2.");
+                      "friction, mu*pos(p_nu) for Coulomb friction, "
+                      "0.2 + 0.3*exp(-s_tau/0.01) for a bound weakening "
+                      "with the distance slid, or x < 0.5 ? 0.3 : 0.2.");
     prm.declare_entry("initial displacement",
                       "0",
                       Patterns::Anything(),
@@ -808,6 +811,7 @@ namespace hemicontact
     ProblemParameters::declare(prm);
     DataParameters::declare(prm);
     RelaxationParameters::declare(prm);
+    NormalMemoryParameters::declare(prm);
     NonlinearSolverParameters::declare(prm);
     LinearSolverParameters::declare(prm);
     OutputParameters::declare(prm);
@@ -828,6 +832,7 @@ namespace hemicontact
     problem.parse(prm);
     data.parse(prm);
     relaxation.parse(prm);
+    normal_memory.parse(prm);
     nonlinear_solver.parse(prm);
     linear_solver.parse(prm);
     output.parse(prm);

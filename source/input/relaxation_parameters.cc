@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/input/number_list.h>
 #include <hemicontact/input/parameters.h>
 #include <hemicontact/input/selection.h>
 
@@ -21,32 +22,6 @@ namespace hemicontact
       {"none", RelaxationKernelType::none},
       {"prony", RelaxationKernelType::prony},
       {"expression", RelaxationKernelType::expression}};
-
-    /** The comma-separated numbers of @p entry, each a finite number. */
-    std::vector<double>
-    get_numbers(const ParameterHandler &prm, const std::string &entry)
-    {
-      std::vector<double> numbers;
-      for (const std::string &item :
-           Utilities::split_string_list(prm.get(entry), ','))
-        {
-          double value;
-          try
-            {
-              value = Utilities::string_to_double(item);
-            }
-          catch (...)
-            {
-              throw InputError("relaxation: '" + entry + "' entry '" + item +
-                               "' is not a number.");
-            }
-          require(std::isfinite(value),
-                  "relaxation: '" + entry + "' entry '" + item +
-                    "' is not a finite number.");
-          numbers.push_back(value);
-        }
-      return numbers;
-    }
   } // namespace
 
   void
@@ -107,9 +82,9 @@ namespace hemicontact
   {
     prm.enter_subsection("relaxation");
     kernel            = get_selection(prm, "kernel", kernel_types);
-    mu_amplitudes     = get_numbers(prm, "mu amplitudes");
-    lambda_amplitudes = get_numbers(prm, "lambda amplitudes");
-    relaxation_times  = get_numbers(prm, "relaxation times");
+    mu_amplitudes     = get_number_list(prm, "relaxation", "mu amplitudes");
+    lambda_amplitudes = get_number_list(prm, "relaxation", "lambda amplitudes");
+    relaxation_times  = get_number_list(prm, "relaxation", "relaxation times");
     mu                = prm.get("mu");
     lambda            = prm.get("lambda");
     prm.leave_subsection();

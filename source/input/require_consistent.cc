@@ -4,6 +4,8 @@
  */
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/laws/friction_bound.h>
+#include <hemicontact/memory/normal_memory_kernel.h>
 #include <hemicontact/memory/relaxation_kernel.h>
 
 #include <algorithm>
@@ -183,6 +185,43 @@ namespace hemicontact
                 "and 'adaptivity/pre-refinement steps = 0', or "
                 "'relaxation/kernel = none'.");
         RelaxationKernel(parameters.relaxation, parameters.data.constants)
+          .require_finite(parameters.time.end_time / n_steps, n_steps);
+      }
+    // the same for the memory of the normal response (section 11.9) and
+    // for the accumulated slip of a friction bound (section 11.10)
+    const std::string &bound = parameters.data.friction_bound;
+    if (bound.find("s_tau") != std::string::npos &&
+        (parameters.dimension == 2 ?
+           FrictionBound<2>(bound, parameters.data.constants).uses_slip() :
+           FrictionBound<3>(bound, parameters.data.constants).uses_slip()))
+      {
+        require(adaptivity.interval == 0 &&
+                  adaptivity.pre_refinement_steps == 0,
+                "data: a 'friction bound' in s_tau, the accumulated slip, "
+                "does not work with adaptive meshes: its history is not moved "
+                "to a new mesh. Set 'adaptivity/interval = 0' and "
+                "'adaptivity/pre-refinement steps = 0'.");
+        require(!manufactured,
+                "data: a 'friction bound' in s_tau, the accumulated slip, "
+                "does not work with 'manufactured solution/enabled = true': "
+                "the derived data do not hold the slip's history.");
+      }
+    if (parameters.normal_memory.active())
+      {
+        require(adaptivity.interval == 0 &&
+                  adaptivity.pre_refinement_steps == 0,
+                "normal memory: a memory kernel ('normal memory/kernel' = "
+                "prony or expression) does not work with adaptive meshes: "
+                "its history is not moved to a new mesh. Set "
+                "'adaptivity/interval = 0' and 'adaptivity/pre-refinement "
+                "steps = 0', or 'normal memory/kernel = none'.");
+        require(!manufactured,
+                "normal memory: a memory kernel ('normal memory/kernel' = "
+                "prony or expression) does not work with 'manufactured "
+                "solution/enabled = true': the derived data do not hold the "
+                "memory integral. Set 'normal memory/kernel = none' for a "
+                "manufactured solution.");
+        NormalMemoryKernel(parameters.normal_memory, parameters.data.constants)
           .require_finite(parameters.time.end_time / n_steps, n_steps);
       }
   }

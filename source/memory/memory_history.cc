@@ -6,6 +6,7 @@
 
 #include <hemicontact/memory/memory_history.h>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -15,23 +16,41 @@ namespace hemicontact
   MemoryHistory<dim>::MemoryHistory(const RelaxationParameters &parameters,
                                     const std::string          &constants,
                                     MPI_Comm                    comm)
+    : MemoryHistory(parameters, NormalMemoryParameters{}, constants, comm)
+  {}
+
+  template <int dim>
+  MemoryHistory<dim>::MemoryHistory(const RelaxationParameters   &parameters,
+                                    const NormalMemoryParameters &normal,
+                                    const std::string            &constants,
+                                    MPI_Comm                      comm)
     : kernel(parameters, constants)
+    , contact(normal, constants, comm)
     , comm(comm)
   {}
 
   template <int dim>
   void
-  MemoryHistory<dim>::reinit(const DoFHandler<dim>           &dof_handler,
-                             const Mapping<dim>              &mapping,
-                             const Quadrature<dim>           &quadrature,
-                             const AffineConstraints<double> &constraints,
-                             const IndexSet                  &owned,
-                             const IndexSet                  &relevant)
+  MemoryHistory<dim>::reinit(const DoFHandler<dim>               &dof_handler,
+                             const Mapping<dim>                  &mapping,
+                             const Quadrature<dim>               &quadrature,
+                             const AffineConstraints<double>     &constraints,
+                             const IndexSet                      &owned,
+                             const IndexSet                      &relevant,
+                             const std::vector<ContactNode<dim>> &contact_nodes)
   {
     if (!active())
       return;
     owned_dofs    = owned;
     relevant_dofs = relevant;
+    for (VectorType *x : {&shear_sum, &volumetric_sum, &functional})
+      x->reinit(owned, comm);
+    contact.reinit(contact_nodes, owned);
+    if (!stress_active())
+      {
+        clear();
+        return;
+      }
 
     TrilinosWrappers::SparsityPattern sparsity(owned, owned, relevant, comm);
     DoFTools::make_sparsity_pattern(dof_handler,
@@ -84,9 +103,6 @@ namespace hemicontact
         }
     shear_matrix.compress(VectorOperation::add);
     volumetric_matrix.compress(VectorOperation::add);
-
-    for (VectorType *x : {&shear_sum, &volumetric_sum, &functional})
-      x->reinit(owned, comm);
     clear();
   }
 
@@ -96,6 +112,7 @@ namespace hemicontact
   {
     if (!active())
       return;
+    contact.clear();
     terms.assign(kernel.n_terms(), VectorType(owned_dofs, comm));
     trial_terms = terms;
     past_times.clear();
@@ -116,6 +133,16 @@ namespace hemicontact
   {
     shear_sum      = 0;
     volumetric_sum = 0;
+    functional     = 0;
+    prepared       = true;
+    if (contact.active())
+      contact.prepare_step(start, k, u_start);
+    if (!stress_active())
+      {
+        if (contact.normal_active())
+          contact.add_functional(functional);
+        return;
+      }
     if (kernel.type() == RelaxationKernelType::prony)
       // h_n = e^{-k/tau} (h_{n-1} + k u_{n-1}) per term
       for (unsigned int m = 0; m < terms.size(); ++m)
@@ -148,17 +175,20 @@ namespace hemicontact
     shear_matrix.vmult(functional, shear_sum);
     volumetric_matrix.vmult(tmp, volumetric_sum);
     functional += tmp;
-    prepared = true;
+    if (contact.normal_active())
+      contact.add_functional(functional);
   }
 
   template <int dim>
   void
-  MemoryHistory<dim>::commit_step()
+  MemoryHistory<dim>::commit_step(const VectorType *unknown)
   {
     Assert(prepared, ExcMessage("commit_step() without prepare_step()"));
+    if (contact.active())
+      contact.commit_step(unknown);
     if (kernel.type() == RelaxationKernelType::prony)
       std::swap(terms, trial_terms);
-    else
+    else if (kernel.type() == RelaxationKernelType::expression)
       {
         past_times.push_back(pending_time);
         past_steps.push_back(pending_step);
@@ -213,11 +243,17 @@ namespace hemicontact
   std::vector<double>
   MemoryHistory<dim>::saved_values() const
   {
-    if (kernel.type() != RelaxationKernelType::expression)
-      return {static_cast<double>(terms.size())};
-    std::vector<double> values{static_cast<double>(past_states.size())};
-    values.insert(values.end(), past_times.begin(), past_times.end());
-    values.insert(values.end(), past_steps.begin(), past_steps.end());
+    // the stress's numbers, then those of the contact memory
+    std::vector<double> values{static_cast<double>(terms.size())};
+    if (kernel.type() == RelaxationKernelType::expression)
+      {
+        values = {static_cast<double>(past_states.size())};
+        values.insert(values.end(), past_times.begin(), past_times.end());
+        values.insert(values.end(), past_steps.begin(), past_steps.end());
+      }
+    if (contact.active())
+      for (const double x : contact.saved_values())
+        values.push_back(x);
     return values;
   }
 
@@ -229,6 +265,9 @@ namespace hemicontact
     for (const VectorType &x :
          kernel.type() == RelaxationKernelType::prony ? terms : past_states)
       fields.push_back(&x);
+    if (contact.active())
+      for (const VectorType *x : contact.saved_fields())
+        fields.push_back(x);
     return fields;
   }
 
@@ -241,16 +280,24 @@ namespace hemicontact
     if (!active())
       return fields;
     const std::size_t n = values.empty() ? 0 : std::lround(values[0]);
+    // the stress's numbers: its size, and t_j, k_j of an expression
+    std::size_t stress_size = 1;
     if (kernel.type() == RelaxationKernelType::expression)
       {
-        AssertDimension(values.size(), 1 + 2 * n);
+        stress_size = 1 + 2 * n;
+        AssertIndexRange(stress_size, values.size() + 1);
         past_times.assign(values.begin() + 1, values.begin() + 1 + n);
-        past_steps.assign(values.begin() + 1 + n, values.end());
+        past_steps.assign(values.begin() + 1 + n, values.begin() + stress_size);
         past_states.assign(n, VectorType(owned_dofs, comm));
       }
     for (VectorType &x :
          kernel.type() == RelaxationKernelType::prony ? terms : past_states)
       fields.push_back(&x);
+    if (contact.active())
+      for (VectorType *x : contact.restore(std::vector<double>(
+             values.begin() + std::min(stress_size, values.size()),
+             values.end())))
+        fields.push_back(x);
     return fields;
   }
 
@@ -261,7 +308,8 @@ namespace hemicontact
     if (!active())
       return 0;
     std::size_t bytes = shear_matrix.memory_consumption() +
-                        volumetric_matrix.memory_consumption();
+                        volumetric_matrix.memory_consumption() +
+                        contact.memory_consumption();
     const std::size_t vector = functional.memory_consumption();
     bytes += vector * (2 * terms.size() + past_states.size() + 4);
     return bytes;

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <iomanip>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace hemicontact
 {
@@ -17,8 +19,9 @@ namespace hemicontact
      * On the root: the gathered rows (@p width values each) of step
      * @p step sorted by coordinates, written atomically to
      * @p directory/contact_NNNNN.csv, the columns of the step's unknown
-     * named with @p unknown ("w", or "u" in the static class); returns the
-     * reason of a failure.
+     * named with @p unknown ("w", or "u" in the static class), the last
+     * columns named @p extra (the memory's); returns the reason of a
+     * failure.
      */
     template <int dim>
     std::string
@@ -26,7 +29,8 @@ namespace hemicontact
                       const unsigned int                      width,
                       const std::string                      &directory,
                       const unsigned int                      step,
-                      const std::string                      &unknown)
+                      const std::string                      &unknown,
+                      const std::vector<std::string>         &extra)
     {
       std::vector<std::vector<double>> table;
       for (const std::vector<double> &part : gathered)
@@ -58,7 +62,12 @@ namespace hemicontact
       for (unsigned int d = 0; d < dim; ++d)
         file << ",sigma_tau_" << xyz[d];
       file << ",normal_branch,tangential_branch,mass,friction_bound,"
-              "friction_response,wall_pressure\n";
+              "friction_response,wall_pressure";
+      for (const std::string &name : extra)
+        file << "," << name;
+      file << "\n";
+      // the two branch columns, integers
+      const unsigned int branches = width - extra.size() - 6;
 
       // small values at the solver tolerance are printed as 0 so that the
       // file does not depend on the number of MPI ranks in the last digits
@@ -72,7 +81,7 @@ namespace hemicontact
             {
               if (j > 0)
                 file << ",";
-              if (j >= width - 6 && j < width - 4)
+              if (j == branches || j == branches + 1)
                 file << static_cast<int>(row[j]);
               else
                 file << clean(row[j]);
@@ -95,8 +104,18 @@ namespace hemicontact
     // sigma_tau, normal_branch, tangential_branch, mass, friction_bound (F_b
     // of the step), friction_response (the force F(|w_tau|) = F_b +
     // r(|w_tau|) that the friction law opposes to the node's slip speed)
-    // wall_pressure (the wall's reaction at nodes held there)
-    const unsigned int  width = dim + dim + 1 + 2 + dim + 2 + dim + 3 + 2 + 1;
+    // wall_pressure (the wall's reaction at nodes held there), and with
+    // normal memory normal_memory (N_i, doc/theory.md 11.9), with a bound
+    // in the accumulated slip s_tau (11.10)
+    const bool normal_memory = s.memory.contact_memory().normal_active();
+    const bool slip          = s.memory.contact_memory().slip_active();
+    std::vector<std::string> extra;
+    if (normal_memory)
+      extra.push_back("normal_memory");
+    if (slip)
+      extra.push_back("s_tau");
+    const unsigned int width =
+      dim + dim + 1 + 2 + dim + 2 + dim + 3 + 2 + 1 + extra.size();
     std::vector<double> rows;
     for (const ContactNode<dim> &node : s.contact_nodes)
       if (node.locally_owned)
@@ -135,15 +154,31 @@ namespace hemicontact
           rows.push_back(node.friction_bound);
           rows.push_back(
             s.friction_law.response(node.friction_bound, w_tau.norm()));
-          rows.push_back(nodal::wall_reaction(node, -sigma_nu, s.normal_law));
+          // N_i, a part of -sigma_nu that is not the wall's
+          const double memory_pressure =
+            normal_memory ?
+              nodal_vector(node, s.memory.contact_memory().pressure()) *
+                node.normal :
+              0.;
+          rows.push_back(nodal::wall_reaction(node,
+                                              -sigma_nu - memory_pressure,
+                                              s.normal_law));
+          if (normal_memory)
+            rows.push_back(memory_pressure);
+          if (slip)
+            rows.push_back(s.memory.contact_memory().slip()[node.dofs[0]]);
         }
 
     const std::vector<std::vector<double>> gathered =
       Utilities::MPI::gather(mpi_communicator, rows, 0);
     std::string error;
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      error = write_sorted_rows<dim>(
-        gathered, width, directory, s.step_number, s.scheme.unknown_symbol());
+      error = write_sorted_rows<dim>(gathered,
+                                     width,
+                                     directory,
+                                     s.step_number,
+                                     s.scheme.unknown_symbol(),
+                                     extra);
     throw_if_any(error, mpi_communicator);
   }
 

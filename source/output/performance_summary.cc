@@ -57,7 +57,9 @@ namespace hemicontact
                   s.contact_nodes.capacity() * sizeof(ContactNode<dim>));
     // A_mu, A_lambda and the history of a memory kernel (doc/theory.md 11)
     if (s.memory.active())
-      breakdown.add("memory of the stress", s.memory.memory_consumption());
+      breakdown.add(s.memory.stress_active() ? "memory of the stress" :
+                                               "memory of the contact",
+                    s.memory.memory_consumption());
     return breakdown;
   }
 

@@ -227,13 +227,21 @@ namespace hemicontact
     if (s.scheme.name() !=
         StepScheme(ProblemClass::dynamic, TimeScheme::left_point).name())
       pcout << ", " << s.scheme.name();
-    if (s.memory.active())
+    if (s.memory.stress_active())
       pcout << ", memory "
             << (s.memory.get_kernel().type() == RelaxationKernelType::prony ?
                   "'prony' (" +
                     std::to_string(s.memory.get_kernel().n_terms()) +
                     " terms)" :
                   std::string("'expression'"));
+    if (s.memory.contact_memory().normal_active())
+      {
+        const NormalMemoryKernel &b = s.memory.contact_memory().get_kernel();
+        pcout << ", normal memory "
+              << (b.type() == RelaxationKernelType::prony ?
+                    "'prony' (" + std::to_string(b.n_terms()) + " terms)" :
+                    std::string("'expression'"));
+      }
     if (parameters.output.terminal != TerminalOutput::test)
       pcout << ", " << Utilities::MPI::n_mpi_processes(mpi_communicator)
             << " MPI rank(s)";

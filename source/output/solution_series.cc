@@ -74,10 +74,16 @@ namespace hemicontact
     if (nodal_writer)
       {
         const typename ContactProblem<dim>::State state = problem.state();
+        std::vector<typename NodalHdf5Writer<dim>::Field> fields{
+          {"velocity", &state.velocity},
+          {"displacement", &state.displacement},
+          {"contact_traction", &state.contact_traction}};
+        // N_i nu_i, the memory's part of the traction (doc/theory.md 11.9)
+        if (state.memory.contact_memory().normal_active())
+          fields.push_back(
+            {"normal_memory", &state.memory.contact_memory().pressure()});
         nodal_writer->write(state.dof_handler,
-                            {{"velocity", &state.velocity},
-                             {"displacement", &state.displacement},
-                             {"contact_traction", &state.contact_traction}},
+                            fields,
                             state.step_number,
                             state.time,
                             "displacement");
@@ -170,7 +176,7 @@ namespace hemicontact
                              problem.refinement_indicators());
     // the memory part M_n of the stress, which stress_* leaves out
     // (doc/theory.md, section 11)
-    if (state.memory.active())
+    if (state.memory.stress_active())
       {
         const std::vector<Vector<float>> memory_stress =
           state.memory.cell_stress(dof_handler,

@@ -130,12 +130,16 @@ namespace hemicontact
     const TrilinosWrappers::MPI::Vector w =
       without_constrained(velocity, base_constraints);
     TrilinosWrappers::MPI::Vector tmp(locally_owned_dofs, mpi_communicator);
+    // the laws' part xi of the traction -sigma nu: the memory pressure's
+    // work is in memory_work (doc/theory.md, section 11.9)
+    TrilinosWrappers::MPI::Vector law_traction(contact_traction);
+    memory.subtract_pressure(law_traction);
     if (scheme.is_static())
       {
         energy = clapeyron_balance(elastic_matrix,
                                    load,
                                    w,
-                                   contact_traction,
+                                   law_traction,
                                    contact_nodes,
                                    *law,
                                    *friction,
@@ -195,8 +199,7 @@ namespace hemicontact
           const auto [normal, tangential] =
             nodal::contact_work(node,
                                 v,
-                                nodal_vector(node, contact_traction) *
-                                  node.normal,
+                                nodal_vector(node, law_traction) * node.normal,
                                 *law,
                                 *friction);
           damping += normal;

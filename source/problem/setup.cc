@@ -42,7 +42,10 @@ namespace hemicontact
     , law(std::move(laws.normal))
     , friction(std::move(laws.friction))
     , data(std::move(data))
-    , memory(parameters.relaxation, parameters.data.constants, comm)
+    , memory(parameters.relaxation,
+             parameters.normal_memory,
+             parameters.data.constants,
+             comm)
     , discretization(parameters.geometry, comm)
     , dof_handler(*discretization.triangulation)
     , linear_solver(parameters.linear_solver, comm)
@@ -60,6 +63,9 @@ namespace hemicontact
             "data: 'friction bound' uses w_nu, the normal velocity, which the "
             "static class does not have (the laws act on the displacement); "
             "write the bound in u_nu.");
+    // the slip a bound in s_tau reads (doc/theory.md, section 11.10)
+    if (this->data.friction_bound->uses_slip())
+      memory.measure_slip(scheme.is_static());
   }
 
   template <int dim>
@@ -88,7 +94,8 @@ namespace hemicontact
                   discretization.cell_quadrature(2),
                   base_constraints,
                   locally_owned_dofs,
-                  locally_relevant_dofs);
+                  locally_relevant_dofs,
+                  contact_nodes);
   }
 
   template <int dim>
@@ -266,7 +273,15 @@ namespace hemicontact
   {
     const FrictionBound<dim> &bound = *data.friction_bound;
     // the static class's u is its step's unknown (doc/theory.md 9.1)
-    TrilinosWrappers::MPI::Vector u, w, p;
+    TrilinosWrappers::MPI::Vector u, w, p, s;
+    if (bound.uses_slip())
+      {
+        // zero before the memory has its vectors on this mesh (the bounds
+        // of setup_contact_nodes(): no slip yet, or read again on resume)
+        s.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
+        if (memory.contact_memory().slip().size() == dof_handler.n_dofs())
+          s = memory.contact_memory().slip();
+      }
     if (bound.depends_on_state())
       {
         u.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
@@ -294,7 +309,12 @@ namespace hemicontact
           {
             const double before = node.friction_bound;
             node.friction_bound =
-              bound.value(node.position, t, u_nu, w_nu, p_nu);
+              bound.value(node.position,
+                          t,
+                          u_nu,
+                          w_nu,
+                          p_nu,
+                          bound.uses_slip() ? s[node.dofs[0]] : 0.);
             if (node.locally_owned)
               {
                 largest = std::max(largest, node.friction_bound);

@@ -87,6 +87,8 @@ namespace hemicontact
         for (unsigned int c = 0; c < dim; ++c)
           contact_traction[node.dofs[c]] = -residual[node.dofs[c]] / node.mass;
     contact_traction.compress(VectorOperation::insert);
+    // -sigma nu: the memory pressure N_i nu_i besides (doc/theory.md 11.9)
+    memory.add_pressure(contact_traction);
 
     StepStatistics stats;
     stats.newton_iterations      = report.newton_iterations;

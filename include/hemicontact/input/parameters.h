@@ -177,6 +177,33 @@ namespace hemicontact
     parse(ParameterHandler &prm);
   };
 
+  /**
+   * Memory in the normal response (doc/theory.md, section 11.9): the
+   * kernel b(t) of N_n = sum_{j<n} k_j b(t_n - t_j) (u_nu,j)_+, the part of
+   * -sigma_nu a foundation adds for the time it was penetrated.
+   */
+  struct NormalMemoryParameters
+  {
+    RelaxationKernelType kernel;
+    /** The Prony series b(t) = sum_m b_m exp(-t/tau_m): b_m and tau_m. */
+    std::vector<double> amplitudes;
+    std::vector<double> relaxation_times;
+    /** The general kernel b(t): an expression in t. */
+    std::string b;
+
+    /** Whether the normal response has a memory term. */
+    bool
+    active() const
+    {
+      return kernel != RelaxationKernelType::none;
+    }
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm);
+  };
+
   /** Where Newton starts in a step. */
   enum class InitialGuess
   {
@@ -397,6 +424,7 @@ namespace hemicontact
     ProblemParameters         problem;
     DataParameters            data;
     RelaxationParameters      relaxation;
+    NormalMemoryParameters    normal_memory;
     NonlinearSolverParameters nonlinear_solver;
     LinearSolverParameters    linear_solver;
     /** Set from C++ only (tests, benchmarks): see SolverTuning. */

@@ -15,10 +15,11 @@ namespace hemicontact
    * The friction bound F_b(x, t, u_nu, w_nu, p_nu) >= 0 of 'data/friction
    * bound': an expression in x, y[, z], t, u_nu, the normal displacement
    * u . nu at the contact node (positive into the foundation), w_nu, the
-   * normal velocity (velocity classes), and p_nu, the contact pressure
-   * -sigma_nu at the node. In the velocity classes u_nu is the
-   * displacement held when the step starts and p_nu the pressure of the
-   * step before (doc/theory.md, sections 7 and 9.9); a bound in w_nu, and
+   * normal velocity (velocity classes), p_nu, the contact pressure
+   * -sigma_nu at the node, and s_tau, the slip accumulated up to the state
+   * before the step (doc/theory.md, section 11.10). In the velocity classes
+   * u_nu is the displacement held when the step starts and p_nu the pressure of
+   * the step before (doc/theory.md, sections 7 and 9.9); a bound in w_nu, and
    * in the static class a bound in u_nu or p_nu, depends on the step's own
    * unknown and is found by fixed-point iterations (sections 9.8, 9.9).
    * Examples: mu * cp * pos(u_nu), normal compliance with friction;
@@ -33,7 +34,8 @@ namespace hemicontact
 
     /**
      * F_b at point @p p, time @p t, normal displacement @p u_nu, normal
-     * velocity @p w_nu and contact pressure @p p_nu. Throws an InputError
+     * velocity @p w_nu, contact pressure @p p_nu and accumulated slip
+     * @p s_tau. Throws an InputError
      * naming the expression, the point, the time and the state if the
      * value is negative or not finite.
      */
@@ -42,9 +44,13 @@ namespace hemicontact
           const double      t,
           const double      u_nu,
           const double      w_nu,
-          const double      p_nu) const;
+          const double      p_nu,
+          const double      s_tau = 0) const;
 
-    /** Whether it depends on t, u_nu, w_nu or p_nu (else: once per mesh). */
+    /**
+     * Whether it depends on t, u_nu, w_nu, p_nu or s_tau (else: once per
+     * mesh).
+     */
     bool
     depends_on_state() const
     {
@@ -68,6 +74,12 @@ namespace hemicontact
     uses_contact_pressure() const
     {
       return expression->uses_variable(dim + 3);
+    }
+    /** Whether the expression uses s_tau. */
+    bool
+    uses_slip() const
+    {
+      return expression->uses_variable(dim + 4);
     }
 
   private:

@@ -10,7 +10,9 @@
 #include <deal.II/lac/vector.h>
 
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/memory/contact_memory.h>
 #include <hemicontact/memory/relaxation_kernel.h>
+#include <hemicontact/model/contact_node.h>
 
 #include <cstddef>
 #include <string>
@@ -40,6 +42,11 @@ namespace hemicontact
    * keeps every past state u_j with t_j and k_j. prepare_step() forms m_n
    * without changing the history, commit_step() adds the step to it after
    * the step converged: a failed step (and its halves) needs no undo.
+   *
+   * It also owns the memory of the contact conditions, a ContactMemory
+   * (section 11.9): the memory pressure N_i of each contact node, whose
+   * nodal forces m_i N_i nu_i join m_n, and which add_pressure() adds to
+   * the nodal contact traction of a solve.
    */
   template <int dim>
   class MemoryHistory
@@ -52,11 +59,51 @@ namespace hemicontact
                   const std::string          &constants,
                   MPI_Comm                    comm);
 
-    /** Whether the stress has a memory term ('relaxation/kernel' not none). */
+    /** ... and the memory of the normal response of @p normal. */
+    MemoryHistory(const RelaxationParameters   &parameters,
+                  const NormalMemoryParameters &normal,
+                  const std::string            &constants,
+                  MPI_Comm                      comm);
+
+    /** Whether the stress or the contact conditions have memory. */
     bool
     active() const
     {
+      return stress_active() || contact.active();
+    }
+
+    /** Whether the stress has a memory term ('relaxation/kernel' not none). */
+    bool
+    stress_active() const
+    {
       return kernel.type() != RelaxationKernelType::none;
+    }
+
+    /** The memory of the contact conditions. */
+    const ContactMemory<dim> &
+    contact_memory() const
+    {
+      return contact;
+    }
+
+    /**
+     * @p traction += N_i nu_i at the owned contact nodes: the nodal
+     * traction -(K w - b)_i / m_i of a solve, the laws' part, made the
+     * traction -sigma nu (section 11.9).
+     */
+    void
+    add_pressure(VectorType &traction) const
+    {
+      if (contact.normal_active())
+        traction += contact.pressure();
+    }
+
+    /** @p traction -= N_i nu_i: the laws' part of a traction -sigma nu. */
+    void
+    subtract_pressure(VectorType &traction) const
+    {
+      if (contact.normal_active())
+        traction -= contact.pressure();
     }
 
     const RelaxationKernel &
@@ -67,16 +114,17 @@ namespace hemicontact
 
     /**
      * The matrices A_mu and A_lambda on the mesh of @p dof_handler,
-     * condensed with @p constraints as the step matrix is, and an empty
-     * history. Nothing without a kernel.
+     * condensed with @p constraints as the step matrix is, the contact
+     * nodes @p contact_nodes, and an empty history. Nothing without memory.
      */
     void
-    reinit(const DoFHandler<dim>           &dof_handler,
-           const Mapping<dim>              &mapping,
-           const Quadrature<dim>           &quadrature,
-           const AffineConstraints<double> &constraints,
-           const IndexSet                  &owned,
-           const IndexSet                  &relevant);
+    reinit(const DoFHandler<dim>               &dof_handler,
+           const Mapping<dim>                  &mapping,
+           const Quadrature<dim>               &quadrature,
+           const AffineConstraints<double>     &constraints,
+           const IndexSet                      &owned,
+           const IndexSet                      &relevant,
+           const std::vector<ContactNode<dim>> &contact_nodes = {});
 
     /** Forget every past state (a run starting at t = 0). */
     void
@@ -97,16 +145,34 @@ namespace hemicontact
       rhs -= functional;
     }
 
-    /** m = A_mu S_mu + A_lambda S_lambda of the step prepared last. */
+    /**
+     * m = A_mu S_mu + A_lambda S_lambda + sum_i m_i N_i nu_i of the step
+     * prepared last.
+     */
     const VectorType &
     step_functional() const
     {
       return functional;
     }
 
-    /** The step prepared last converged: its state joins the history. */
+    /**
+     * The step prepared last converged: its state joins the history, and
+     * with an accumulated slip that of @p unknown (u_n in the static class,
+     * w_n otherwise).
+     */
     void
-    commit_step();
+    commit_step(const VectorType *unknown = nullptr);
+
+    /**
+     * Accumulate the slip of the contact nodes for the friction bound
+     * (section 11.10): of the displacement (@p of_displacement, the static
+     * class) or of the velocity. Before reinit().
+     */
+    void
+    measure_slip(const bool of_displacement)
+    {
+      contact.measure_slip(of_displacement);
+    }
 
     /**
      * The cell averages of the memory stress M_n = 2 eps(S_mu) +
@@ -141,10 +207,11 @@ namespace hemicontact
     memory_consumption() const;
 
   private:
-    RelaxationKernel kernel;
-    MPI_Comm         comm;
-    IndexSet         owned_dofs;
-    IndexSet         relevant_dofs;
+    RelaxationKernel   kernel;
+    ContactMemory<dim> contact;
+    MPI_Comm           comm;
+    IndexSet           owned_dofs;
+    IndexSet           relevant_dofs;
 
     /** A_mu and A_lambda. */
     TrilinosWrappers::SparseMatrix shear_matrix;

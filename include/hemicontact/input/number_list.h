@@ -1,0 +1,19 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace hemicontact
+{
+  /**
+   * The comma-separated numbers of the entry @p entry of the subsection
+   * @p subsection (entered already), each a finite number; an InputError
+   * "SUBSECTION: 'ENTRY' entry 'ITEM' is not a (finite) number." otherwise.
+   */
+  std::vector<double>
+  get_number_list(const dealii::ParameterHandler &prm,
+                  const std::string              &subsection,
+                  const std::string              &entry);
+} // namespace hemicontact

@@ -1,0 +1,36 @@
+#include <deal.II/base/utilities.h>
+
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/input/number_list.h>
+
+#include <cmath>
+
+namespace hemicontact
+{
+  std::vector<double>
+  get_number_list(const dealii::ParameterHandler &prm,
+                  const std::string              &subsection,
+                  const std::string              &entry)
+  {
+    std::vector<double> numbers;
+    for (const std::string &item :
+         dealii::Utilities::split_string_list(prm.get(entry), ','))
+      {
+        double value;
+        try
+          {
+            value = dealii::Utilities::string_to_double(item);
+          }
+        catch (...)
+          {
+            throw InputError(subsection + ": '" + entry + "' entry '" + item +
+                             "' is not a number.");
+          }
+        require(std::isfinite(value),
+                subsection + ": '" + entry + "' entry '" + item +
+                  "' is not a finite number.");
+        numbers.push_back(value);
+      }
+    return numbers;
+  }
+} // namespace hemicontact
