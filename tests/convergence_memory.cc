@@ -1,4 +1,4 @@
-// Manufactured solutions with long memory (doc/theory.md, section 11.9) in
+// Manufactured solutions with long memory (doc/theory.md, section 11.11) in
 // prm/verification: the static class on 2D quadrilaterals and the dynamic
 // and quasistatic classes on 2D quadrilaterals, three levels of the coupled
 // study each (h and k halved together). Asserts the observed orders at the

@@ -1,5 +1,5 @@
 // The data derived from a manufactured solution with long memory
-// (doc/theory.md, section 11.9) against closed forms: the static class,
+// (doc/theory.md, section 11.11) against closed forms: the static class,
 //   u = (x^2 y t^3, sin(x) cos(y) t^2),
 // and a one-term Prony kernel R(t) eps = exp(-t/tau) (2 mu_m eps + lambda_m
 // tr(eps) I). The memory integral M(t) = int_0^t R(t - s) eps(u(s)) ds of a

@@ -39,7 +39,7 @@ namespace hemicontact
    * laws act on u, which takes the place of w here ("w" is u), and the
    * material has no viscosity: f0 = -Div B eps(u).
    *
-   * With a relaxation kernel (doc/theory.md, section 11.9) sigma gains the
+   * With a relaxation kernel (doc/theory.md, section 11.11) sigma gains the
    * exact memory integral M(t) = int_0^t R(t - s) eps(u(s)) ds, in f0, f2
    * and f3, by composite Gauss-Legendre quadrature in s.
    */
@@ -134,7 +134,7 @@ namespace hemicontact
     unpack_second_derivatives(const double *r, Values &v) const;
 
     /** The nodes s and weights of the quadrature of [0, t] in the memory
-     *  integral (doc/theory.md, section 11.9). */
+     *  integral (doc/theory.md, section 11.11). */
     std::vector<std::pair<double, double>>
     memory_quadrature(const double t) const;
 
