@@ -62,6 +62,20 @@ namespace hemicontact
                       Patterns::Anything(),
                       "'kernel = prony': the relaxation times tau_m > 0 of "
                       "the terms, comma-separated finite numbers.");
+    prm.declare_entry("young amplitudes",
+                      "",
+                      Patterns::Anything(),
+                      "'kernel = prony', in place of 'mu amplitudes' and "
+                      "'lambda amplitudes': the amplitudes E_m of E_R(t) = "
+                      "sum_m E_m exp(-t/tau_m), one per term, with the one "
+                      "'poisson ratio' nu_R of the kernel: mu_m = E_m/(2 (1 + "
+                      "nu_R)), lambda_m = E_m nu_R/((1 + nu_R)(1 - 2 nu_R)), "
+                      "as 'material/elasticity' converts E and nu.");
+    prm.declare_entry("poisson ratio",
+                      "0",
+                      Patterns::Double(),
+                      "'kernel = prony' with 'young amplitudes': nu_R, -1 < "
+                      "nu_R < 0.5.");
     prm.declare_entry("mu",
                       "0",
                       Patterns::Anything(),
@@ -85,12 +99,33 @@ namespace hemicontact
     mu_amplitudes     = get_number_list(prm, "relaxation", "mu amplitudes");
     lambda_amplitudes = get_number_list(prm, "relaxation", "lambda amplitudes");
     relaxation_times  = get_number_list(prm, "relaxation", "relaxation times");
-    mu                = prm.get("mu");
-    lambda            = prm.get("lambda");
+    const std::vector<double> young_amplitudes =
+      get_number_list(prm, "relaxation", "young amplitudes");
+    const double poisson_ratio = prm.get_double("poisson ratio");
+    mu                         = prm.get("mu");
+    lambda                     = prm.get("lambda");
     prm.leave_subsection();
 
     if (kernel != RelaxationKernelType::prony)
       return;
+    if (!young_amplitudes.empty())
+      {
+        require(mu_amplitudes.empty() && lambda_amplitudes.empty(),
+                "relaxation: both 'young amplitudes' and 'mu amplitudes' or "
+                "'lambda amplitudes' are set; give the terms either as E_m "
+                "with 'poisson ratio' or as mu_m and lambda_m, not both.");
+        std::ostringstream message;
+        message << "relaxation: 'poisson ratio' = " << poisson_ratio
+                << " must lie in (-1, 0.5) with 'young amplitudes'.";
+        require(poisson_ratio > -1 && poisson_ratio < 0.5, message.str());
+        for (const double E : young_amplitudes)
+          {
+            mu_amplitudes.push_back(E / (2 * (1 + poisson_ratio)));
+            lambda_amplitudes.push_back(
+              E * poisson_ratio /
+              ((1 + poisson_ratio) * (1 - 2 * poisson_ratio)));
+          }
+      }
     require(!relaxation_times.empty(),
             "relaxation: 'kernel = prony' needs at least one term: set "
             "'relaxation times' (and the amplitudes of each term).");
@@ -106,8 +141,10 @@ namespace hemicontact
          {std::make_pair("mu amplitudes", &mu_amplitudes),
           std::make_pair("lambda amplitudes", &lambda_amplitudes)})
       require(amplitudes->size() == relaxation_times.size(),
-              "relaxation: '" + std::string(name) + "' has " +
-                std::to_string(amplitudes->size()) +
+              "relaxation: '" +
+                std::string(young_amplitudes.empty() ? name :
+                                                       "young amplitudes") +
+                "' has " + std::to_string(amplitudes->size()) +
                 " values and 'relaxation times' " +
                 std::to_string(relaxation_times.size()) +
                 "; give one amplitude per term (0 for none).");
