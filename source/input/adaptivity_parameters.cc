@@ -93,6 +93,16 @@ namespace hemicontact
                       Patterns::Integer(0, 30),
                       "No cell is refined beyond this refinement level.");
     prm.declare_entry(
+      "target error",
+      "0",
+      Patterns::Double(0),
+      "Static class: solve each load value, refine by the indicator and "
+      "solve it again until the error estimate eta (doc/theory.md 12.1) is "
+      "at most this fraction of the energy norm of u_h, a_B(u_h, u_h)^(1/2); "
+      "stop with exit code 7 if 'max cells' or 'max level' comes first. "
+      "0: off. Needs 'output/error estimate = true' and 'interval' = 0 "
+      "(doc/adaptivity.md).");
+    prm.declare_entry(
       "state transfer",
       "interpolation",
       selection_pattern(state_transfers),
@@ -118,6 +128,7 @@ namespace hemicontact
     max_cells      = prm.get_integer("max cells");
     min_level      = prm.get_integer("min level");
     max_level      = prm.get_integer("max level");
+    target_error   = prm.get_double("target error");
     prm.leave_subsection();
     require(refine_fraction + coarsen_fraction <= 1,
             "adaptivity: 'refine fraction' + 'coarsen fraction' must not "

@@ -43,7 +43,8 @@ namespace hemicontact
            "4 internal error, 5 interrupted (SIGTERM, SIGINT or 'checkpoint/stop\n"
            "after'; a checkpoint was written: continue with --resume), 6 I/O error\n"
            "(output could not be written, e.g. no space left on device; what\n"
-           "was written before stays valid).\n";
+           "was written before stays valid), 7 target error not reached\n"
+           "('adaptivity/target error': the mesh limit came first).\n";
     }
 
     int
@@ -152,6 +153,13 @@ namespace hemicontact
         if (root)
           std::cerr << "hemicontact: interrupted: " << e.what() << std::endl;
         return 5;
+      }
+    catch (const TargetErrorNotReached &e)
+      {
+        if (root)
+          std::cerr << "hemicontact: target error not reached: " << e.what()
+                    << std::endl;
+        return 7;
       }
     catch (const dealii::ExceptionBase &e)
       {

@@ -16,6 +16,53 @@
 
 namespace hemicontact
 {
+  namespace
+  {
+    /**
+     * What 'adaptivity/target error' needs (doc/adaptivity.md, "Solving to
+     * a tolerance"): the static class, the error estimate, a p4est mesh,
+     * one run without memory, and no other adaptation.
+     */
+    void
+    require_target_error_usable(const Parameters &parameters)
+    {
+      const AdaptivityParameters &adaptivity = parameters.adaptivity;
+      if (adaptivity.target_error == 0)
+        return;
+      std::ostringstream value;
+      value << adaptivity.target_error;
+      const std::string name = "adaptivity: 'target error' = " + value.str();
+      require(parameters.problem.problem_class == ProblemClass::static_,
+              name +
+                " refines each load value until the error estimate reaches "
+                "it, which the static class alone does (its load values "
+                "have no history to carry to a new mesh). Set 'problem/"
+                "class = static', or 'target error' = 0.");
+      require(parameters.output.error_estimate,
+              name + " needs the error estimate: set 'output/error "
+                     "estimate = true'.");
+      require(adaptivity.interval == 0 && adaptivity.pre_refinement_steps == 0,
+              name + " adapts the mesh at each load value itself: set "
+                     "'adaptivity/interval = 0' and 'adaptivity/"
+                     "pre-refinement steps = 0'.");
+      require(parameters.geometry.cell_type == CellType::hypercube,
+              name + " needs 'geometry/cell type = hypercube' (p4est "
+                     "meshes), as every adaptive refinement does.");
+      require(!parameters.manufactured.enabled,
+              name + " does not work with a manufactured solution, whose "
+                     "runs are convergence studies on meshes of their own: "
+                     "set 'manufactured solution/enabled = false'.");
+      const bool memory =
+        parameters.relaxation.active() || parameters.normal_memory.active() ||
+        parameters.data.friction_bound.find("s_tau") != std::string::npos;
+      require(!memory,
+              name + " does not work with memory (a relaxation or normal "
+                     "memory kernel, or a friction bound in s_tau): the "
+                     "history is not moved to a new mesh (doc/theory.md, "
+                     "section 11.8).");
+    }
+  } // namespace
+
   void
   require_consistent(const Parameters &parameters)
   {
@@ -86,6 +133,7 @@ namespace hemicontact
       1,
       static_cast<unsigned int>(
         std::llround(parameters.time.end_time / parameters.time.time_step)));
+    require_target_error_usable(parameters);
     require(adaptivity.pre_refinement_steps <= n_steps,
             "adaptivity: 'pre-refinement steps' (" +
               std::to_string(adaptivity.pre_refinement_steps) +

@@ -22,7 +22,12 @@ namespace hemicontact
     if (settings.indicator == RefinementIndicator::residual)
       return residual_indicators();
     if (settings.indicator == RefinementIndicator::estimator)
-      return estimate_error().cell_values();
+      {
+        // the estimate advance() evaluated for this state, if any
+        const ErrorEstimate *evaluated = last_error_estimate();
+        return evaluated != nullptr ? evaluated->cell_values() :
+                                      estimate_error().cell_values();
+      }
     TrilinosWrappers::MPI::Vector w(locally_owned_dofs,
                                     locally_relevant_dofs,
                                     mpi_communicator);
@@ -95,12 +100,11 @@ namespace hemicontact
 
     std::tie(stats.kinetic_before_adaptation, stats.elastic_before_adaptation) =
       stored_energy();
-    error_estimate_step = 0; // its cells are those of the mesh left
-
     // mark: thresholds from all indicators, sorted, so the same on any
     // number of ranks (see marking_thresholds())
     const Vector<float> indicators = refinement_indicators();
-    std::vector<float>  owned;
+    error_estimate_step            = 0; // its cells are those of the mesh left
+    std::vector<float> owned;
     for (const auto &cell : tria->active_cell_iterators())
       if (cell->is_locally_owned())
         owned.push_back(indicators[cell->active_cell_index()]);

@@ -271,6 +271,11 @@ namespace hemicontact
         output.keep_new_output();
         throw;
       }
+    catch (const TargetErrorNotReached &)
+      {
+        output.keep_new_output();
+        throw;
+      }
   }
 
   template <int dim>
@@ -314,7 +319,9 @@ namespace hemicontact
         StepStatistics stats;
         try
           {
-            stats = advance();
+            stats = parameters.adaptivity.target_error > 0 ?
+                      advance_to_target_error(output) :
+                      advance();
             check_energy_growth(energy,
                                 step_number * time_step,
                                 parameters,

@@ -59,6 +59,20 @@ namespace hemicontact
     {}
   };
 
+  /**
+   * 'adaptivity/target error' was not reached at a load value before
+   * 'adaptivity/max cells' or 'max level' stopped the refinement: the
+   * message names the estimate reached, the target and the limit. The
+   * load value's last solution is written first. main() exits with code 7.
+   */
+  class TargetErrorNotReached : public std::runtime_error
+  {
+  public:
+    explicit TargetErrorNotReached(const std::string &message)
+      : std::runtime_error(message)
+    {}
+  };
+
   /** Throw an InputError with @p message unless @p condition holds. */
   inline void
   require(const bool condition, const std::string &message)

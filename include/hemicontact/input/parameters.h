@@ -365,6 +365,15 @@ namespace hemicontact
     unsigned int    min_level;
     unsigned int    max_level;
     StateTransfer   state_transfer;
+    /** Refine each load value until eta <= target_error |||u_h|||; 0 = off. */
+    double target_error;
+
+    /** Whether the mesh changes during the run. */
+    bool
+    changes_mesh() const
+    {
+      return interval > 0 || pre_refinement_steps > 0 || target_error > 0;
+    }
 
     static void
     declare(ParameterHandler &prm);

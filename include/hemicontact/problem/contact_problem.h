@@ -118,6 +118,16 @@ namespace hemicontact
     bool
     adapt_mesh_if_due(StepStatistics &stats, RunOutput<dim> *output = nullptr);
 
+    /**
+     * advance() under 'adaptivity/target error' (static class,
+     * target_error.cc): solve the load value, and while its error estimate
+     * eta exceeds the target times a_B(u_h, u_h)^(1/2), adapt the mesh and
+     * solve it again. Throws TargetErrorNotReached, after @p output wrote
+     * the load value's last solution, if the mesh can grow no further.
+     */
+    StepStatistics
+    advance_to_target_error(RunOutput<dim> &output);
+
     /** The cell-wise refinement indicator of the current state. */
     Vector<float>
     refinement_indicators() const;
