@@ -106,6 +106,8 @@ namespace hemicontact
         stats.estimate_contact  = e.part(e.contact_sum);
         if (time_indicated)
           {
+            // its own share of the section 'error estimate'
+            TimerOutput::Scope t_time(timer, "time indicator");
             stats.time_estimated = true;
             stats.estimate_time  = time_indicator(velocity_before);
           }
