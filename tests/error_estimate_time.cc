@@ -69,17 +69,15 @@ main(int argc, char **argv)
       const LevelResult &l     = r[level];
       const double       E     = l.errors.E_energy;
       const double       ratio = l.estimate_time / E;
-      const bool         in_band =
-        l.time_estimated && l.effectivity_total >= 12 &&
-        l.effectivity_total <= 16;
+      const bool in_band = l.time_estimated && l.effectivity_total >= 12 &&
+                           l.effectivity_total <= 16;
       smallest = std::min(smallest, l.effectivity_total);
       largest  = std::max(largest, l.effectivity_total);
       out() << "level " << level << ": time part / error in [0.5, 1]: "
             << yes(l.time_estimated && ratio >= 0.5 && ratio <= 1) << std::endl;
       if (!(ratio >= 0.5 && ratio <= 1))
         out() << "  (" << std::setprecision(3) << ratio << ")" << std::endl;
-      out() << "  total effectivity in [12, 16]: " << yes(in_band)
-            << std::endl;
+      out() << "  total effectivity in [12, 16]: " << yes(in_band) << std::endl;
       if (!in_band)
         out() << "  (" << std::setprecision(3) << l.effectivity_total << ")"
               << std::endl;
@@ -95,8 +93,7 @@ main(int argc, char **argv)
           out() << "  order of the time part in [0.9, 1.1]: "
                 << yes(order >= 0.9 && order <= 1.1) << std::endl;
           if (!(order >= 0.9 && order <= 1.1))
-            out() << "  (" << std::setprecision(3) << order << ")"
-                  << std::endl;
+            out() << "  (" << std::setprecision(3) << order << ")" << std::endl;
         }
     }
   out() << "max/min total effectivity over the levels <= 1.2: "

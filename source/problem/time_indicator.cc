@@ -30,7 +30,9 @@ namespace hemicontact
   }
 
   template double
-  ContactProblem<2>::time_indicator(const TrilinosWrappers::MPI::Vector &) const;
+  ContactProblem<2>::time_indicator(
+    const TrilinosWrappers::MPI::Vector &) const;
   template double
-  ContactProblem<3>::time_indicator(const TrilinosWrappers::MPI::Vector &) const;
+  ContactProblem<3>::time_indicator(
+    const TrilinosWrappers::MPI::Vector &) const;
 } // namespace hemicontact

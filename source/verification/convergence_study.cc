@@ -245,10 +245,10 @@ namespace hemicontact
       double     sum_V = 0, sum_V_H1 = 0, sum_dofs = 0;
       /** k sum_n of |||e_n|||^2, eta_n^2 and of each term's square */
       double sum_energy = 0, sum_estimate = 0, sum_terms[4] = {0, 0, 0, 0};
-      bool   estimated    = false;
+      bool   estimated = false;
       /** k sum_n |||w_n - w_{n-1}|||^2, the time indicator's */
-      double sum_time       = 0;
-      bool   time_estimated = false;
+      double       sum_time       = 0;
+      bool         time_estimated = false;
       unsigned int newton = 0, max_newton = 0, n_steps = 0, max_dofs = 0;
       double       branch[7] = {0, 0, 0, 0, 0, 0, 0};
 
