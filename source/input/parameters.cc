@@ -527,7 +527,8 @@ namespace hemicontact
       "its terms in steps.csv, eta_K per cell ('error_estimate') in the "
       "solution files, the run's estimate in the summary line, and the "
       "estimate and effectivity index of each level of a convergence "
-      "study.");
+      "study; in the velocity classes also the time indicator "
+      "(the energy norm of w_n - w_{n-1}, section 12.4).");
     prm.leave_subsection();
   }
 

@@ -173,7 +173,7 @@ namespace hemicontact
            "energy_transfer_change,time_step_halvings,minimised_energy,"
            "bound_iterations,n_at_breakpoint,n_at_wall,memory_work,"
            "error_estimate,estimate_interior,estimate_jumps,"
-           "estimate_neumann,estimate_contact\n";
+           "estimate_neumann,estimate_contact,estimate_time\n";
     // probes.csv (the points are checked above)
     if (!probe_points.empty() &&
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
@@ -384,6 +384,10 @@ namespace hemicontact
               << s.estimate_contact;
         else
           row << ",,,,,";
+        // the time indicator: velocity classes only
+        row << ",";
+        if (s.time_estimated)
+          row << s.estimate_time;
         row << "\n";
         error = append_complete(steps_file,
                                 parameters.output.directory + "/steps.csv",
@@ -488,8 +492,13 @@ namespace hemicontact
             << "largest eta_n = " << std::scientific << std::setprecision(3)
             << totals.largest_estimate << " (step "
             << totals.largest_estimate_step << "), (sum_n k eta_n^2)^(1/2) = "
-            << std::sqrt(totals.estimate_k_sum) << std::defaultfloat
-            << std::endl;
+            << std::sqrt(totals.estimate_k_sum);
+    if (totals.time_estimated_steps > 0)
+      pcout << ", time (sum_n k |||w_n - w_{n-1}|||^2)^(1/2) = "
+            << std::sqrt(totals.estimate_time_k_sum) << ", total = "
+            << std::sqrt(totals.estimate_k_sum + totals.estimate_time_k_sum);
+    if (totals.estimated_steps > 0)
+      pcout << std::defaultfloat << std::endl;
     if (parameters.output.performance_summary)
       write_performance_summary(problem,
                                 parameters,

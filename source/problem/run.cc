@@ -66,6 +66,14 @@ namespace hemicontact
     ++step_number;
     const double time = step_number * time_step;
 
+    // w_{n-1} for the time indicator of the velocity classes (old_velocity
+    // holds the start of the last sub-step after a halving)
+    const bool time_indicated =
+      parameters.output.error_estimate && !scheme.is_static();
+    TrilinosWrappers::MPI::Vector velocity_before;
+    if (time_indicated)
+      velocity_before = velocity;
+
     StepStatistics stats;
     try
       {
@@ -96,6 +104,13 @@ namespace hemicontact
         stats.estimate_jumps    = e.part(e.jumps_sum);
         stats.estimate_neumann  = e.part(e.neumann_sum);
         stats.estimate_contact  = e.part(e.contact_sum);
+        if (time_indicated)
+          {
+            // its own share of the section 'error estimate'
+            TimerOutput::Scope t_time(timer, "time indicator");
+            stats.time_estimated = true;
+            stats.estimate_time  = time_indicator(velocity_before);
+          }
       }
     return stats;
   }

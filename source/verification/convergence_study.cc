@@ -245,7 +245,10 @@ namespace hemicontact
       double     sum_V = 0, sum_V_H1 = 0, sum_dofs = 0;
       /** k sum_n of |||e_n|||^2, eta_n^2 and of each term's square */
       double sum_energy = 0, sum_estimate = 0, sum_terms[4] = {0, 0, 0, 0};
-      bool   estimated    = false;
+      bool   estimated = false;
+      /** k sum_n |||w_n - w_{n-1}|||^2, the time indicator's */
+      double       sum_time       = 0;
+      bool         time_estimated = false;
       unsigned int newton = 0, max_newton = 0, n_steps = 0, max_dofs = 0;
       double       branch[7] = {0, 0, 0, 0, 0, 0, 0};
 
@@ -269,6 +272,11 @@ namespace hemicontact
                                      s.estimate_contact};
             for (unsigned int t = 0; t < 4; ++t)
               sum_terms[t] += k * terms[t] * terms[t];
+          }
+        if (s.time_estimated)
+          {
+            time_estimated = true;
+            sum_time += k * s.estimate_time * s.estimate_time;
           }
         newton += s.newton_iterations;
         max_newton = std::max(max_newton, s.newton_iterations);
@@ -301,6 +309,10 @@ namespace hemicontact
         r.effectivity     = r.estimate / r.errors.E_energy;
         for (unsigned int t = 0; t < 4; ++t)
           r.estimate_terms[t] = std::sqrt(sum_terms[t]);
+        r.time_estimated = time_estimated;
+        r.estimate_time  = std::sqrt(sum_time);
+        r.effectivity_total =
+          std::sqrt(sum_estimate + sum_time) / r.errors.E_energy;
         r.mean_dofs              = sum_dofs / n_steps;
         r.max_dofs               = max_dofs;
         r.mean_newton_iterations = double(newton) / n_steps;
@@ -453,7 +465,8 @@ namespace hemicontact
              "share_separating,share_normal_stick,share_damped,"
              "share_stick,share_slip,mean_dofs,max_dofs,step_wall_seconds,"
              "E_energy,estimate,effectivity,estimate_interior,estimate_jumps,"
-             "estimate_neumann,estimate_contact\n";
+             "estimate_neumann,estimate_contact,estimate_time,"
+             "effectivity_total\n";
     }
 
     std::string
@@ -479,6 +492,11 @@ namespace hemicontact
         }
       else
         csv << ",,,,,,";
+      // the time indicator's columns: velocity classes only
+      if (r.time_estimated)
+        csv << "," << r.estimate_time << "," << r.effectivity_total;
+      else
+        csv << ",,";
       csv << "\n";
       return csv.str();
     }
@@ -532,19 +550,25 @@ namespace hemicontact
           table.add_value("estimate", r.estimate);
           table.add_value("effectivity", r.effectivity);
         }
+      if (r.time_estimated)
+        {
+          table.add_value("estimate_time", r.estimate_time);
+          table.add_value("effectivity_total", r.effectivity_total);
+        }
     }
 
     /**
      * Formats and orders: log2 of the error ratio between levels, or
      * -log(error ratio) / log(mean dofs ratio) if @p against_dofs (the
      * table has the column "mean dofs"); the columns of the estimate
-     * @p with_estimate.
+     * @p with_estimate, those of the time indicator @p with_time_estimate.
      */
     void
     format_table(ConvergenceTable  &table,
                  const unsigned int n_levels,
                  const bool         against_dofs,
-                 const bool         with_estimate)
+                 const bool         with_estimate,
+                 const bool         with_time_estimate)
     {
       for (const char *column : {"E_H", "E_V", "E_u", "E_V(H1)", "E_u(H1)"})
         {
@@ -570,6 +594,12 @@ namespace hemicontact
               table.set_precision(column, 3);
             }
           table.set_precision("effectivity", 2);
+        }
+      if (with_time_estimate)
+        {
+          table.set_scientific("estimate_time", true);
+          table.set_precision("estimate_time", 3);
+          table.set_precision("effectivity_total", 2);
         }
     }
   } // namespace
@@ -683,7 +713,8 @@ namespace hemicontact
     format_table(table,
                  n_levels,
                  against_dofs,
-                 parameters.output.error_estimate);
+                 parameters.output.error_estimate,
+                 results.back().time_estimated);
     if (verbose)
       {
         if (against_dofs)

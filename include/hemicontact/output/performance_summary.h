@@ -31,6 +31,10 @@ namespace hemicontact
     double       estimate_k_sum        = 0; ///< sum_n k_n eta_n^2
     double       largest_estimate      = 0; ///< max_n eta_n
     unsigned int largest_estimate_step = 0;
+    /** sum_n k_n |||w_n - w_{n-1}|||^2, the time indicator (velocity
+     *  classes) */
+    unsigned int time_estimated_steps = 0;
+    double       estimate_time_k_sum  = 0;
     /** The parts of the memory at the end of the time loop. */
     MemoryBreakdown memory;
 
@@ -53,6 +57,11 @@ namespace hemicontact
         return;
       ++estimated_steps;
       estimate_k_sum += k * stats.estimate * stats.estimate;
+      if (stats.time_estimated)
+        {
+          ++time_estimated_steps;
+          estimate_time_k_sum += k * stats.estimate_time * stats.estimate_time;
+        }
       if (stats.estimate >= largest_estimate)
         {
           largest_estimate      = stats.estimate;

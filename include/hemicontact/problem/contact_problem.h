@@ -148,6 +148,15 @@ namespace hemicontact
     estimate_error() const;
 
     /**
+     * The time indicator of the velocity classes (doc/theory.md 12.4):
+     * |||w_n - @p w_before||| in the energy norm of the step, |||v|||^2 =
+     * v.K v - c_M v.rho M v, from the step matrix K and the mass matrix
+     * (time_indicator.cc).
+     */
+    double
+    time_indicator(const TrilinosWrappers::MPI::Vector &w_before) const;
+
+    /**
      * The estimate advance() evaluated with 'output/error estimate' for the
      * current step and mesh, or nullptr (not enabled, no step solved
      * since the start or the last adaptation).

@@ -38,5 +38,9 @@ namespace hemicontact
     double estimate_jumps    = 0;
     double estimate_neumann  = 0;
     double estimate_contact  = 0;
+    /** The time indicator |||w_n - w_{n-1}||| in the energy norm of the
+     *  step (velocity classes, doc/theory.md 12.4); static class: none */
+    bool   time_estimated = false;
+    double estimate_time  = 0;
   };
 } // namespace hemicontact

@@ -67,6 +67,12 @@ namespace hemicontact
     double effectivity = 0;
     /** interior, jumps, Neumann and contact terms, each (k sum_n .^2)^{1/2} */
     double estimate_terms[4] = {0, 0, 0, 0};
+    /** The time indicator (velocity classes, doc/theory.md 12.4): (k sum_n
+     *  |||w_n - w_{n-1}|||^2)^{1/2}; static class: none */
+    bool   time_estimated = false;
+    double estimate_time  = 0;
+    /** (estimate^2 + estimate_time^2)^{1/2} / E_energy */
+    double effectivity_total = 0;
   };
 
   /**
