@@ -41,37 +41,41 @@ main()
   const ManufacturedSolution<2> m(p, law, tresca);
 
   const Tensor<1, 2> nu({0., -1.});
-  double err_n = 0, err_s = 0, err_f3 = 0, largest_n = 0;
+  double             err_n = 0, err_s = 0, err_f3 = 0, largest_n = 0;
   for (const double t : {0.3, 0.9, 1.7})
-    for (const Point<2> &x : {Point<2>(0.3, 0.2), Point<2>(0.8, 0.0),
-                              Point<2>(-0.9, 0.5), Point<2>(-0.6, 0.1)})
+    for (const Point<2> &x : {Point<2>(0.3, 0.2),
+                              Point<2>(0.8, 0.0),
+                              Point<2>(-0.9, 0.5),
+                              Point<2>(-0.6, 0.1)})
       {
         const double u_nu = (0.5 + x[0]) * t, u_tau = x[0] * x[0] * t * t;
-        const double N =
-          B * std::max(0.5 + x[0], 0.) * tau * (t - tau * (1 - std::exp(-t / tau)));
+        const double N = B * std::max(0.5 + x[0], 0.) * tau *
+                         (t - tau * (1 - std::exp(-t / tau)));
         const double S    = u_tau;
         const double xi_n = law.subgradient(u_nu);
         const double bound =
           (0.4 + 0.6 * std::exp(-S / L)) * (0.2 + 0.1 * (xi_n + N));
         const Tensor<1, 2> f3_minus_f2 =
-          (xi_n + N) * nu + tresca.response(bound, u_tau) * Tensor<1, 2>({1., 0.});
+          (xi_n + N) * nu +
+          tresca.response(bound, u_tau) * Tensor<1, 2>({1., 0.});
 
         largest_n = std::max(largest_n, N);
         err_n =
           std::max(err_n, std::abs(m.normal_memory_pressure(x, nu, t) - N));
-        err_s = std::max(err_s, std::abs(m.accumulated_slip(x, nu, t) - S));
+        err_s  = std::max(err_s, std::abs(m.accumulated_slip(x, nu, t) - S));
         err_f3 = std::max(err_f3,
                           (m.contact_traction(x, nu, t) -
                            m.surface_traction(x, nu, t) - f3_minus_f2)
                             .norm());
       }
-  std::cout << "N(t) = int b(t - s) (u_nu)_+ ds, closed form (largest N > 0.5): "
-            << (err_n < 1e-12 && largest_n > 0.5 ? "yes" : "no")
-            << "\nS(t) = int |du_tau/ds| ds, closed form: "
-            << (err_s < 1e-12 ? "yes" : "no")
-            << "\nf3 - f2 = (xi_nu + N) nu + F_b(p_nu = xi_nu + N, s_tau = S) "
-               "u_tau/|u_tau|: "
-            << (err_f3 < 1e-12 ? "yes" : "no") << "\n";
+  std::cout
+    << "N(t) = int b(t - s) (u_nu)_+ ds, closed form (largest N > 0.5): "
+    << (err_n < 1e-12 && largest_n > 0.5 ? "yes" : "no")
+    << "\nS(t) = int |du_tau/ds| ds, closed form: "
+    << (err_s < 1e-12 ? "yes" : "no")
+    << "\nf3 - f2 = (xi_nu + N) nu + F_b(p_nu = xi_nu + N, s_tau = S) "
+       "u_tau/|u_tau|: "
+    << (err_f3 < 1e-12 ? "yes" : "no") << "\n";
   if (err_n >= 1e-12 || err_s >= 1e-12 || err_f3 >= 1e-12)
     std::cout << "errors: N " << err_n << ", S " << err_s << ", f3 " << err_f3
               << "\n";

@@ -470,13 +470,15 @@ namespace hemicontact
     // 11.9): the exact contact pressure p_nu of the bound is xi_nu + N, and
     // its s_tau the exact slip up to t (doc/theory.md 11.11)
     const double n_memory = normal_memory_pressure(p, normal, t);
-    const double bound    = friction_bound->value(
-      p,
-      t,
-      v.u * normal,
-      v.w * normal,
-      xi_n + n_memory,
-      friction_bound->uses_slip() ? accumulated_slip(p, normal, t) : 0.);
+    const double bound =
+      friction_bound->value(p,
+                            t,
+                            v.u * normal,
+                            v.w * normal,
+                            xi_n + n_memory,
+                            friction_bound->uses_slip() ?
+                              accumulated_slip(p, normal, t) :
+                              0.);
     // xi_tau in dphi(w_tau): the given multiplier where w_tau = 0
     Tensor<1, dim> xi_t;
     if (w_t.norm() <= scale)
