@@ -249,10 +249,6 @@ namespace hemicontact
                 "does not work with adaptive meshes: its history is not moved "
                 "to a new mesh. Set 'adaptivity/interval = 0' and "
                 "'adaptivity/pre-refinement steps = 0'.");
-        require(!manufactured,
-                "data: a 'friction bound' in s_tau, the accumulated slip, "
-                "does not work with 'manufactured solution/enabled = true': "
-                "the derived data do not hold the slip's history.");
       }
     if (parameters.normal_memory.active())
       {
@@ -263,12 +259,6 @@ namespace hemicontact
                 "its history is not moved to a new mesh. Set "
                 "'adaptivity/interval = 0' and 'adaptivity/pre-refinement "
                 "steps = 0', or 'normal memory/kernel = none'.");
-        require(!manufactured,
-                "normal memory: a memory kernel ('normal memory/kernel' = "
-                "prony or expression) does not work with 'manufactured "
-                "solution/enabled = true': the derived data do not hold the "
-                "memory integral. Set 'normal memory/kernel = none' for a "
-                "manufactured solution.");
         NormalMemoryKernel(parameters.normal_memory, parameters.data.constants)
           .require_finite(parameters.time.end_time / n_steps, n_steps);
       }

@@ -71,6 +71,12 @@ namespace hemicontact
       relaxation =
         std::make_unique<RelaxationKernel>(parameters.relaxation,
                                            parameters.data.constants);
+    if (parameters.normal_memory.active())
+      normal_memory =
+        std::make_unique<NormalMemoryKernel>(parameters.normal_memory,
+                                             parameters.data.constants);
+    for (int c = 0; c < dim; ++c)
+      displacement_rate.push_back(displacement[c].derivative(dim));
 
     // the derivatives, once: t is variable number dim; in the static class
     // the laws see u itself, which takes the place of w (doc/theory.md 9.7)
@@ -240,6 +246,48 @@ namespace hemicontact
                        lambda * trace(eps_u) * unit_symmetric_tensor<dim>());
       }
     return m;
+  }
+
+  template <int dim>
+  double
+  ManufacturedSolution<dim>::normal_memory_pressure(
+    const Point<dim>     &p,
+    const Tensor<1, dim> &normal,
+    const double          t) const
+  {
+    double n = 0;
+    if (!normal_memory || t <= 0)
+      return n;
+    for (const auto &[s, weight] : memory_quadrature(t))
+      {
+        const double u_nu =
+          evaluate_fields(std::vector<Point<dim>>{p}, s)[0].u * normal;
+        n += weight * (*normal_memory)(t - s) * std::max(u_nu, 0.);
+      }
+    return n;
+  }
+
+  template <int dim>
+  double
+  ManufacturedSolution<dim>::accumulated_slip(const Point<dim>     &p,
+                                              const Tensor<1, dim> &normal,
+                                              const double          t) const
+  {
+    double slip = 0;
+    if (t <= 0)
+      return slip;
+    std::vector<double> at(dim + 1);
+    for (int i = 0; i < dim; ++i)
+      at[i] = p[i];
+    for (const auto &[s, weight] : memory_quadrature(t))
+      {
+        at[dim] = s;
+        Tensor<1, dim> rate;
+        for (int c = 0; c < dim; ++c)
+          rate[c] = displacement_rate[c].evaluate(at);
+        slip += weight * (rate - (rate * normal) * normal).norm();
+      }
+    return slip;
   }
 
   template <int dim>
@@ -418,9 +466,19 @@ namespace hemicontact
       held = held || std::abs(w_n - kink.position) <= scale;
     const double xi_n =
       held ? normal_multiplier->evaluate(at) : law.subgradient(w_n);
-    // the exact contact pressure p_nu of the bound is xi_nu
+    // the memory of the normal response, -sigma_nu = xi_nu + N (section
+    // 11.9): the exact contact pressure p_nu of the bound is xi_nu + N, and
+    // its s_tau the exact slip up to t (doc/theory.md 11.11)
+    const double n_memory = normal_memory_pressure(p, normal, t);
     const double bound =
-      friction_bound->value(p, t, v.u * normal, v.w * normal, xi_n);
+      friction_bound->value(p,
+                            t,
+                            v.u * normal,
+                            v.w * normal,
+                            xi_n + n_memory,
+                            friction_bound->uses_slip() ?
+                              accumulated_slip(p, normal, t) :
+                              0.);
     // xi_tau in dphi(w_tau): the given multiplier where w_tau = 0
     Tensor<1, dim> xi_t;
     if (w_t.norm() <= scale)
@@ -432,7 +490,8 @@ namespace hemicontact
     else
       xi_t = friction.response(bound, w_t.norm()) * w_t / w_t.norm();
 
-    return (stress(v) + memory_stress(p, t)) * normal + xi_n * normal + xi_t;
+    return (stress(v) + memory_stress(p, t)) * normal +
+           (xi_n + n_memory) * normal + xi_t;
   }
 
   template <int dim>

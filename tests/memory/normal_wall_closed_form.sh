@@ -1,30 +1,37 @@
 #!/usr/bin/env bash
 # normal_wall_closed_form.sh EXE WORKDIR PRM: the run of PRM (a block held
-# at a wall, normal memory with one Prony term b(t) = B exp(-t/TAU), uniform
-# steps k; doc/theory.md, section 11.9) writes in its double-precision
-# nodal files an N_n that equals, at every contact node of y = 0 (normal
-# -e_y), the rule N_n = sum_{j<n} k b(t_n - t_j) (u_nu,j)_+ from the
-# displacements of the same files, and at the nodes held at the wall
-# (u_nu = g at every step) the geometric sum g B k q (1 - q^n)/(1 - q),
-# q = exp(-k/TAU); both to 1e-12 relative to the largest N.
+# at a wall on its face x_d = 0, d the last coordinate, normal -e_d; normal
+# memory with one Prony term b(t) = B exp(-t/TAU); uniform steps k; any
+# class, 2D or 3D; doc/theory.md, section 11.9) writes in its
+# double-precision nodal files an N_n that equals, at every contact node,
+# the rule N_n = sum_{j<n} k b(t_n - t_j) (u_nu,j)_+ from the displacements
+# of the same files, and at the nodes held at the wall (u_nu = g at every
+# step, u_0 included) the geometric sum g B k q (1 - q^n)/(1 - q),
+# q = exp(-k/TAU); both to 1e-12 relative to the largest N. B, TAU, g, k,
+# the end time and the dimension are read from PRM.
 set -euo pipefail
 exe=$1; work=$2; prm=$3
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
 sed 's/set directory *=.*/set directory = out/' "$prm" > run.prm
 "$exe" run.prm > run.log
 /usr/bin/python3 - <<'PY'
-import glob, math, h5py, numpy as np
-B, tau, g, k = 10.0, 0.5, 0.01, 0.1
+import glob, math, re, h5py, numpy as np
+text = open("run.prm").read()
+def value(name):
+    return re.search(r"set " + name + r" *= *([^\n#]+)", text).group(1).strip()
+B, tau = float(value("amplitudes")), float(value("relaxation times"))
+g, k = float(value("penetration limit")), float(value("time step"))
+dim, n_steps = int(value("dimension")), round(float(value("end time")) / k)
 files = sorted(glob.glob("out/nodal_*.h5"))
-assert len(files) == 11, files
-u, N, t = [], [], []
+assert len(files) == n_steps + 1, files
+d = dim - 1
+u, N = [], []
 for f in files:
     with h5py.File(f, "r") as h:
         x = h["nodes"][:]
-        bottom = np.abs(x[:, 1]) < 1e-12
-        u.append(-h["displacement"][:][bottom, 1])   # u_nu, nu = -e_y
-        N.append(-h["normal_memory"][:][bottom, 1])  # N_i nu_i . nu
-        t.append(h.attrs["time"])
+        bottom = np.abs(x[:, d]) < 1e-12
+        u.append(-h["displacement"][:][bottom, d])   # u_nu, nu = -e_d
+        N.append(-h["normal_memory"][:][bottom, d])  # N_i nu_i . nu
 u, N = np.array(u), np.array(N)
 b = lambda s: B * math.exp(-s / tau)
 scale = np.abs(N).max()

@@ -12,6 +12,7 @@
 #include <hemicontact/laws/friction_bound.h>
 #include <hemicontact/laws/friction_law.h>
 #include <hemicontact/laws/normal_law.h>
+#include <hemicontact/memory/normal_memory_kernel.h>
 #include <hemicontact/memory/relaxation_kernel.h>
 #include <hemicontact/model/kelvin_voigt.h>
 #include <hemicontact/model/problem_data.h>
@@ -41,7 +42,11 @@ namespace hemicontact
    *
    * With a relaxation kernel (doc/theory.md, section 11.11) sigma gains the
    * exact memory integral M(t) = int_0^t R(t - s) eps(u(s)) ds, in f0, f2
-   * and f3, by composite Gauss-Legendre quadrature in s.
+   * and f3, by composite Gauss-Legendre quadrature in s. With a normal
+   * memory kernel b, f3 gains N(t) nu, N(t) = int_0^t b(t - s) (u_nu(s))_+
+   * ds, and the contact pressure p_nu of the bound is xi_nu + N; a bound in
+   * s_tau reads the exact slip S(t) = int_0^t |du_tau/ds| ds (the same
+   * quadrature; doc/theory.md 11.11).
    */
   template <int dim>
   class ManufacturedSolution
@@ -92,6 +97,22 @@ namespace hemicontact
      *  (p, t); zero without a relaxation kernel. */
     SymmetricTensor<2, dim>
     memory_stress(const Point<dim> &p, const double t) const;
+
+    /** N(t) = int_0^t b(t - s) (u(p, s) . nu)_+ ds, the memory of the
+     *  normal response at (p, t) for the normal @p normal; zero without a
+     *  normal memory kernel. */
+    double
+    normal_memory_pressure(const Point<dim>     &p,
+                           const Tensor<1, dim> &normal,
+                           const double          t) const;
+
+    /** S(t) = int_0^t |du_tau/ds (p, s)| ds, the slip accumulated at p up
+     *  to t (the total variation of u_tau in the load parameter in the
+     *  static class), u_tau = u - (u . nu) nu. */
+    double
+    accumulated_slip(const Point<dim>     &p,
+                     const Tensor<1, dim> &normal,
+                     const double          t) const;
 
     /** f0 = rho dw/dt - Div sigma (quasistatic: -Div sigma, doc/theory.md
      *  9.7), sigma with its memory part. */
@@ -169,5 +190,9 @@ namespace hemicontact
     std::shared_ptr<const FrictionBound<dim>> friction_bound;
     /** The relaxation kernel R, or null without memory. */
     std::unique_ptr<RelaxationKernel> relaxation;
+    /** The kernel b of the normal memory, or null without it. */
+    std::unique_ptr<NormalMemoryKernel> normal_memory;
+    /** du_c/dt (also in the static class, where w is u), for the slip. */
+    std::vector<Expression> displacement_rate;
   };
 } // namespace hemicontact
