@@ -37,7 +37,7 @@ left.set_ylabel("wear depth $\\omega$")
 left.set_title("wear profile (up to the state written)", fontsize=9)
 right.set_xlabel("x")
 right.set_ylabel("contact pressure $-\\sigma_\\nu$")
-right.set_title("pressure: the held left end carries less as the foundation wears",
+right.set_title("pressure: the peak at the free right end flattens as it wears",
                 fontsize=9)
 for ax in (left, right):
     ax.legend(fontsize=8)
