@@ -51,8 +51,7 @@ namespace hemicontact
     bool                                     locally_owned  = false;
     /**
      * The wall in the step's unknown, w_nu <= upper_limit (g in the static
-     * class, (g - u_nu)/k in the velocity classes, g + omega in place of g
-     * with the wear depth omega; +inf without a wall).
+     * class, (g - u_nu)/k in the velocity classes; +inf without a wall).
      */
     double upper_limit = std::numeric_limits<double>::infinity();
     /**
