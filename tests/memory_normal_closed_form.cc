@@ -143,11 +143,11 @@ namespace
     pressed.compress(VectorOperation::insert);
 
     const RelaxationParameters no_relaxation{};
-    MemoryHistory<dim> by_prony(no_relaxation, prony(), "", MPI_COMM_WORLD);
-    MemoryHistory<dim> by_expression(no_relaxation,
-                                     expression(),
-                                     constants,
-                                     MPI_COMM_WORLD);
+    const WearParameters       no_wear{};
+    MemoryHistory<dim>         by_prony(
+      no_relaxation, prony(), no_wear, "", MPI_COMM_WORLD);
+    MemoryHistory<dim> by_expression(
+      no_relaxation, expression(), no_wear, constants, MPI_COMM_WORLD);
     for (MemoryHistory<dim> *h : {&by_prony, &by_expression})
       h->reinit(dofs,
                 MappingQ1<dim>(),

@@ -610,6 +610,7 @@ namespace hemicontact
     DataParameters::declare(prm);
     RelaxationParameters::declare(prm);
     NormalMemoryParameters::declare(prm);
+    WearParameters::declare(prm);
     NonlinearSolverParameters::declare(prm);
     LinearSolverParameters::declare(prm);
     OutputParameters::declare(prm);
@@ -631,6 +632,7 @@ namespace hemicontact
     data.parse(prm);
     relaxation.parse(prm);
     normal_memory.parse(prm);
+    wear.parse(prm, dimension);
     nonlinear_solver.parse(prm);
     linear_solver.parse(prm);
     output.parse(prm);

@@ -250,6 +250,26 @@ namespace hemicontact
                 "to a new mesh. Set 'adaptivity/interval = 0' and "
                 "'adaptivity/pre-refinement steps = 0'.");
       }
+    if (parameters.wear.active())
+      {
+        require(adaptivity.interval == 0 &&
+                  adaptivity.pre_refinement_steps == 0,
+                "wear: a 'wear coefficient' > 0 does not work with adaptive "
+                "meshes: the wear depth is not moved to a new mesh. Set "
+                "'adaptivity/interval = 0' and 'adaptivity/pre-refinement "
+                "steps = 0', or 'wear/wear coefficient = 0'.");
+        require(!manufactured,
+                "wear: a 'wear coefficient' > 0 does not work with "
+                "'manufactured solution/enabled = true': the derived data do "
+                "not hold the wear. Set 'wear/wear coefficient = 0' for a "
+                "manufactured solution.");
+        require(!parameters.output.error_estimate,
+                "wear: a 'wear coefficient' > 0 does not work with "
+                "'output/error estimate = true': the estimate's residuals "
+                "(doc/theory.md, section 12) do not hold the moving "
+                "foundation. Set 'output/error estimate = false', or "
+                "'wear/wear coefficient = 0'.");
+      }
     if (parameters.normal_memory.active())
       {
         require(adaptivity.interval == 0 &&

@@ -8,11 +8,18 @@ namespace hemicontact
 {
   template <int dim>
   ContactMemory<dim>::ContactMemory(const NormalMemoryParameters &parameters,
+                                    const WearParameters         &wear,
                                     const std::string            &constants,
                                     MPI_Comm                      comm)
     : kernel(parameters, constants)
     , comm(comm)
-  {}
+    , wear_coefficient(wear.coefficient)
+  {
+    for (unsigned int c = 0;
+         c < std::min<std::size_t>(dim, wear.foundation_velocity.size());
+         ++c)
+      foundation_velocity[c] = wear.foundation_velocity[c];
+  }
 
   template <int dim>
   void
@@ -29,6 +36,7 @@ namespace hemicontact
     memory_pressure.reinit(owned, comm);
     accumulated_slip.reinit(owned, comm);
     slip_start.reinit(owned, comm);
+    wear_depth.reinit(owned, comm);
     clear();
   }
 
@@ -46,6 +54,7 @@ namespace hemicontact
     pending_state.reinit(owned_dofs, comm);
     memory_pressure  = 0;
     accumulated_slip = 0;
+    wear_depth       = 0;
     prepared         = false;
   }
 
@@ -58,7 +67,7 @@ namespace hemicontact
     prepared     = true;
     pending_time = start;
     pending_step = k;
-    if (slip_measured && slip_from_displacement)
+    if ((slip_measured || wear_active()) && slip_from_displacement)
       slip_start = u_start;
     if (!normal_active())
       return;
@@ -116,9 +125,46 @@ namespace hemicontact
 
   template <int dim>
   void
-  ContactMemory<dim>::commit_step(const VectorType *unknown)
+  ContactMemory<dim>::commit_step(const VectorType *unknown,
+                                  const VectorType *traction)
   {
     Assert(prepared, ExcMessage("commit_step() without prepare_step()"));
+    if (wear_active())
+      {
+        Assert(unknown != nullptr && traction != nullptr,
+               ExcMessage("the wear needs the unknown and the traction"));
+        // k_w p_n |u_tau,n - u_tau,n-1 - k_n v*| (static) or
+        // k_w k_n p_n |w_tau,n - v*| per node, p_n = (-sigma_nu)_+
+        for (const Node &node : nodes)
+          {
+            Tensor<1, dim> v, t;
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                v[c] = (*unknown)[node.dofs[c]];
+                t[c] = (*traction)[node.dofs[c]];
+              }
+            const double pressure = std::max(t * node.normal, 0.);
+            if (slip_from_displacement)
+              {
+                for (unsigned int c = 0; c < dim; ++c)
+                  v[c] -= slip_start[node.dofs[c]] +
+                          pending_step * foundation_velocity[c];
+                const Tensor<1, dim> v_tau =
+                  v - (v * node.normal) * node.normal;
+                wear_depth[node.dofs[0]] +=
+                  wear_coefficient * pressure * v_tau.norm();
+              }
+            else
+              {
+                v -= foundation_velocity;
+                const Tensor<1, dim> v_tau =
+                  v - (v * node.normal) * node.normal;
+                wear_depth[node.dofs[0]] +=
+                  wear_coefficient * pending_step * pressure * v_tau.norm();
+              }
+          }
+        wear_depth.compress(VectorOperation::insert);
+      }
     if (slip_measured)
       {
         Assert(unknown != nullptr, ExcMessage("the slip needs the unknown"));
@@ -177,6 +223,8 @@ namespace hemicontact
       fields.push_back(&x);
     if (slip_measured)
       fields.push_back(&accumulated_slip);
+    if (wear_active())
+      fields.push_back(&wear_depth);
     return fields;
   }
 
@@ -201,6 +249,8 @@ namespace hemicontact
       fields.push_back(&x);
     if (slip_measured)
       fields.push_back(&accumulated_slip);
+    if (wear_active())
+      fields.push_back(&wear_depth);
     return fields;
   }
 
@@ -211,7 +261,7 @@ namespace hemicontact
     if (!active())
       return 0;
     return memory_pressure.memory_consumption() *
-             (2 * terms.size() + past_states.size() + 4) +
+             (2 * terms.size() + past_states.size() + 5) +
            nodes.capacity() * sizeof(Node);
   }
 

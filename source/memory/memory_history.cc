@@ -16,16 +16,21 @@ namespace hemicontact
   MemoryHistory<dim>::MemoryHistory(const RelaxationParameters &parameters,
                                     const std::string          &constants,
                                     MPI_Comm                    comm)
-    : MemoryHistory(parameters, NormalMemoryParameters{}, constants, comm)
+    : MemoryHistory(parameters,
+                    NormalMemoryParameters{},
+                    WearParameters{},
+                    constants,
+                    comm)
   {}
 
   template <int dim>
   MemoryHistory<dim>::MemoryHistory(const RelaxationParameters   &parameters,
                                     const NormalMemoryParameters &normal,
+                                    const WearParameters         &wear,
                                     const std::string            &constants,
                                     MPI_Comm                      comm)
     : kernel(parameters, constants)
-    , contact(normal, constants, comm)
+    , contact(normal, wear, constants, comm)
     , comm(comm)
   {}
 
@@ -181,11 +186,12 @@ namespace hemicontact
 
   template <int dim>
   void
-  MemoryHistory<dim>::commit_step(const VectorType *unknown)
+  MemoryHistory<dim>::commit_step(const VectorType *unknown,
+                                  const VectorType *traction)
   {
     Assert(prepared, ExcMessage("commit_step() without prepare_step()"));
     if (contact.active())
-      contact.commit_step(unknown);
+      contact.commit_step(unknown, traction);
     if (kernel.type() == RelaxationKernelType::prony)
       std::swap(terms, trial_terms);
     else if (kernel.type() == RelaxationKernelType::expression)

@@ -21,8 +21,9 @@ namespace hemicontact
     {
       NodeState<dim>        m;
       const Tensor<1, dim> &nu      = node.normal;
-      m.w_normal                    = velocity * nu;
-      m.w_tangential                = velocity - m.w_normal * nu;
+      const double          w_nu    = velocity * nu;
+      m.w_normal                    = w_nu - node.law_offset;
+      m.w_tangential                = velocity - w_nu * nu;
       const Tensor<1, dim> traction = force / node.mass;
       m.s                           = traction * nu - law.remainder(m.w_normal);
       m.lambda                      = traction - (traction * nu) * nu;
@@ -38,8 +39,9 @@ namespace hemicontact
     hold_points(const ContactNode<dim> &node, const NormalLaw &law)
     {
       std::vector<HoldPoint> points;
-      const double           limit = node.upper_limit;
-      double                 s     = 0;
+      // in the law's argument, w_nu - law_offset
+      const double limit = node.upper_limit - node.law_offset;
+      double       s     = 0;
       if (0 < limit)
         {
           points.push_back({0., 0., law.jump(), NormalBranch::stick});
@@ -112,7 +114,7 @@ namespace hemicontact
       if (node.normal_branch != NormalBranch::wall ||
           !std::isfinite(node.upper_limit))
         return 0.;
-      const double limit = node.upper_limit;
+      const double limit = node.upper_limit - node.law_offset;
       return normal_traction - law.remainder(limit) -
              hold_points(node, law).back().lower;
     }
@@ -223,7 +225,7 @@ namespace hemicontact
     {
       const double         wn = velocity * node.normal;
       const Tensor<1, dim> wt = velocity - wn * node.normal;
-      return node.mass * (law.potential(wn) +
+      return node.mass * (law.potential(wn - node.law_offset) +
                           friction.potential(node.friction_bound, wt.norm()));
     }
 
@@ -240,8 +242,9 @@ namespace hemicontact
       const bool   held_away_from_zero =
         node.normal_branch == NormalBranch::breakpoint ||
         node.normal_branch == NormalBranch::wall;
-      const double xi_nu =
-        held_away_from_zero ? normal_traction : law.subgradient(wn);
+      const double xi_nu = held_away_from_zero ?
+                             normal_traction :
+                             law.subgradient(wn - node.law_offset);
       return {node.mass * xi_nu * wn,
               slip > 0 ? node.mass *
                            friction.response(node.friction_bound, slip) * slip :

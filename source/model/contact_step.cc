@@ -86,14 +86,16 @@ namespace hemicontact
         const nodal::NormalHold hold =
           nodal::normal_hold(node, node_states[k], system.law);
         NormalBranch nb = hold.branch;
-        node.held_value = hold.value;
+        // held values in w_nu, the hold points in the law's argument
+        node.held_value = hold.value + node.law_offset;
         // not in the first iteration: its "current" branches are the
         // previous step's, or the default of a new mesh; not behind a wall
         // at or below zero, where w_nu = 0 is out of bounds
-        if (gradual_normal_branches && iteration > 0 && node.upper_limit > 0)
+        if (gradual_normal_branches && iteration > 0 &&
+            node.upper_limit - node.law_offset > 0)
           nb = nodal::gradual_normal_branch(node.normal_branch, nb, system.law);
         if (nb == NormalBranch::stick)
-          node.held_value = 0;
+          node.held_value = node.law_offset;
         const TangentialBranch tb =
           nodal::tangential_branch(node, node_states[k]);
         if (node.locally_owned &&
@@ -222,7 +224,8 @@ namespace hemicontact
     bool any_set = false;
     for (const ContactNode<dim> &node : system.contact_nodes)
       if (node.locally_owned && node.held_value != 0 &&
-          (node.normal_branch == NormalBranch::breakpoint ||
+          (node.normal_branch == NormalBranch::stick ||
+           node.normal_branch == NormalBranch::breakpoint ||
            node.normal_branch == NormalBranch::wall))
         {
           for (unsigned int c = 0; c < dim; ++c)

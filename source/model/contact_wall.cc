@@ -7,18 +7,22 @@ namespace hemicontact
   set_wall_limits(std::vector<ContactNode<dim>>       &nodes,
                   const NormalLaw                     &law,
                   const TrilinosWrappers::MPI::Vector *displacement,
-                  const double                         time_step)
+                  const double                         time_step,
+                  const TrilinosWrappers::MPI::Vector *wear)
   {
     const double g = law.penetration_limit();
     for (ContactNode<dim> &node : nodes)
       {
-        node.upper_limit = g;
+        // the wear depth omega moves the foundation away (section 11.12)
+        const double omega = wear != nullptr ? (*wear)[node.dofs[0]] : 0.;
+        node.upper_limit   = g + omega;
+        node.law_offset    = displacement == nullptr ? omega : 0.;
         if (displacement != nullptr && std::isfinite(g))
           {
             double u_nu = 0;
             for (unsigned int c = 0; c < dim; ++c)
               u_nu += (*displacement)[node.dofs[c]] * node.normal[c];
-            node.upper_limit = (g - u_nu) / time_step;
+            node.upper_limit = (g + omega - u_nu) / time_step;
           }
       }
   }
@@ -27,10 +31,12 @@ namespace hemicontact
   set_wall_limits(std::vector<ContactNode<2>> &,
                   const NormalLaw &,
                   const TrilinosWrappers::MPI::Vector *,
-                  const double);
+                  const double,
+                  const TrilinosWrappers::MPI::Vector *);
   template void
   set_wall_limits(std::vector<ContactNode<3>> &,
                   const NormalLaw &,
                   const TrilinosWrappers::MPI::Vector *,
-                  const double);
+                  const double,
+                  const TrilinosWrappers::MPI::Vector *);
 } // namespace hemicontact

@@ -106,14 +106,18 @@ namespace hemicontact
     // r(|w_tau|) that the friction law opposes to the node's slip speed)
     // wall_pressure (the wall's reaction at nodes held there), and with
     // normal memory normal_memory (N_i, doc/theory.md 11.9), with a bound
-    // in the accumulated slip s_tau (11.10)
+    // in the accumulated slip s_tau (11.10), with wear the wear depth wear
+    // (11.12)
     const bool normal_memory = s.memory.contact_memory().normal_active();
     const bool slip          = s.memory.contact_memory().slip_active();
+    const bool wear          = s.memory.contact_memory().wear_active();
     std::vector<std::string> extra;
     if (normal_memory)
       extra.push_back("normal_memory");
     if (slip)
       extra.push_back("s_tau");
+    if (wear)
+      extra.push_back("wear");
     const unsigned int width =
       dim + dim + 1 + 2 + dim + 2 + dim + 3 + 2 + 1 + extra.size();
     std::vector<double> rows;
@@ -167,6 +171,8 @@ namespace hemicontact
             rows.push_back(memory_pressure);
           if (slip)
             rows.push_back(s.memory.contact_memory().slip()[node.dofs[0]]);
+          if (wear)
+            rows.push_back(s.memory.contact_memory().wear()[node.dofs[0]]);
         }
 
     const std::vector<std::vector<double>> gathered =

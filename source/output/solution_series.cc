@@ -82,6 +82,9 @@ namespace hemicontact
         if (state.memory.contact_memory().normal_active())
           fields.push_back(
             {"normal_memory", &state.memory.contact_memory().pressure()});
+        // the wear depth at each contact node's first dof (11.12)
+        if (state.memory.contact_memory().wear_active())
+          fields.push_back({"wear", &state.memory.contact_memory().wear()});
         nodal_writer->write(state.dof_handler,
                             fields,
                             state.step_number,

@@ -184,7 +184,7 @@ namespace hemicontact
             stats);
         scheme.displacement_after_step(displacement, velocity, k);
         if (memory.active())
-          memory.commit_step(&velocity);
+          memory.commit_step(&velocity, &contact_traction);
         update_energy_balance(/*initial=*/false);
         last_step_length = k;
         return stats;

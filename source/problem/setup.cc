@@ -44,6 +44,7 @@ namespace hemicontact
     , data(std::move(data))
     , memory(parameters.relaxation,
              parameters.normal_memory,
+             parameters.wear,
              parameters.data.constants,
              comm)
     , discretization(parameters.geometry, comm)
@@ -66,6 +67,8 @@ namespace hemicontact
     // the slip a bound in s_tau reads (doc/theory.md, section 11.10)
     if (this->data.friction_bound->uses_slip())
       memory.measure_slip(scheme.is_static());
+    // the wear of the foundation (section 11.12)
+    memory.set_static_class(scheme.is_static());
   }
 
   template <int dim>

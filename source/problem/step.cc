@@ -49,17 +49,34 @@ namespace hemicontact
   StepStatistics
   ContactProblem<dim>::solve_step(const double wall_length)
   {
-    // the wall in the step's unknown (doc/theory.md section 10)
+    // the wall in the step's unknown (doc/theory.md section 10), moved by
+    // the wear depth (section 11.12)
+    TrilinosWrappers::MPI::Vector wear;
+    if (memory.contact_memory().wear_active())
+      {
+        wear.reinit(locally_owned_dofs,
+                    locally_relevant_dofs,
+                    mpi_communicator);
+        wear = memory.contact_memory().wear();
+      }
+    const TrilinosWrappers::MPI::Vector *wear_depth =
+      memory.contact_memory().wear_active() ? &wear : nullptr;
     if (std::isfinite(law->penetration_limit()) && !scheme.is_static())
       {
         TrilinosWrappers::MPI::Vector u(locally_owned_dofs,
                                         locally_relevant_dofs,
                                         mpi_communicator);
         u = displacement;
-        set_wall_limits(contact_nodes, *law, &u, wall_length);
+        set_wall_limits(contact_nodes, *law, &u, wall_length, wear_depth);
       }
     else
-      set_wall_limits(contact_nodes, *law, nullptr, wall_length);
+      // the velocity classes without a wall: the law on w_nu does not see
+      // the wear
+      set_wall_limits(contact_nodes,
+                      *law,
+                      nullptr,
+                      wall_length,
+                      scheme.is_static() ? wear_depth : nullptr);
     ContactStep<dim>      step({step_matrix,
                                 step_rhs,
                                 base_constraints,

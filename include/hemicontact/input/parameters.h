@@ -204,6 +204,32 @@ namespace hemicontact
     parse(ParameterHandler &prm);
   };
 
+  /**
+   * Archard wear on a foundation moving tangentially (doc/theory.md,
+   * section 11.12): the wear depth omega_n = k_w sum_{j<n} p_j |slip_j|
+   * at each contact node moves the foundation away.
+   */
+  struct WearParameters
+  {
+    /** k_w >= 0; 0: no wear. */
+    double coefficient = 0;
+    /** v*, dim components (zero when the entry is empty). */
+    std::vector<double> foundation_velocity;
+
+    /** Whether the foundation wears (k_w > 0). */
+    bool
+    active() const
+    {
+      return coefficient > 0;
+    }
+
+    static void
+    declare(ParameterHandler &prm);
+    /** The entries, checked for @p dimension components of v*. */
+    void
+    parse(ParameterHandler &prm, const unsigned int dimension);
+  };
+
   /** Where Newton starts in a step. */
   enum class InitialGuess
   {
@@ -434,6 +460,7 @@ namespace hemicontact
     DataParameters            data;
     RelaxationParameters      relaxation;
     NormalMemoryParameters    normal_memory;
+    WearParameters            wear;
     NonlinearSolverParameters nonlinear_solver;
     LinearSolverParameters    linear_solver;
     /** Set from C++ only (tests, benchmarks): see SolverTuning. */

@@ -36,6 +36,12 @@ namespace hemicontact
    * before the step (section 11.10), a variable of the friction bound: in
    * the static class S_n = sum_{j=1}^{n-1} |u_tau,j - u_tau,j-1|, in the
    * velocity classes S_n = sum_{j=1}^{n-1} k_j |w_tau,j|.
+   *
+   * With a wear coefficient k_w > 0, also the wear depth (section 11.12)
+   * up to the state before the step: omega_n = k_w sum_{j=1}^{n-1} p_j
+   * |u_tau,j - u_tau,j-1 - k_j v*_tau| in the static class, k_w
+   * sum_{j=1}^{n-1} k_j p_j |w_tau,j - v*_tau| in the velocity classes,
+   * p_j = (-sigma_nu)_+ the contact pressure of state j.
    */
   template <int dim>
   class ContactMemory
@@ -43,16 +49,37 @@ namespace hemicontact
   public:
     using VectorType = TrilinosWrappers::MPI::Vector;
 
-    /** The kernel of @p parameters ('data/constants' @p constants). */
+    /**
+     * The kernel of @p parameters ('data/constants' @p constants) and the
+     * wear of @p wear.
+     */
     ContactMemory(const NormalMemoryParameters &parameters,
+                  const WearParameters         &wear,
                   const std::string            &constants,
                   MPI_Comm                      comm);
 
-    /** Whether the normal response or the slip has a history. */
+    /** Whether the normal response, the slip or the wear has a history. */
     bool
     active() const
     {
-      return normal_active() || slip_measured;
+      return normal_active() || slip_measured || wear_active();
+    }
+
+    /** Whether the foundation wears ('wear/wear coefficient' > 0). */
+    bool
+    wear_active() const
+    {
+      return wear_coefficient > 0;
+    }
+
+    /**
+     * The slip and the wear are of the displacement (@p of_displacement,
+     * the static class) or of the velocity. Before reinit().
+     */
+    void
+    set_static_class(const bool of_displacement)
+    {
+      slip_from_displacement = of_displacement;
     }
 
     /** Whether 'normal memory/kernel' is not none. */
@@ -69,8 +96,8 @@ namespace hemicontact
     void
     measure_slip(const bool of_displacement)
     {
-      slip_measured          = true;
-      slip_from_displacement = of_displacement;
+      slip_measured = true;
+      set_static_class(of_displacement);
     }
 
     /** Whether the slip is accumulated. */
@@ -88,6 +115,16 @@ namespace hemicontact
     slip() const
     {
       return accumulated_slip;
+    }
+
+    /**
+     * The wear depth omega of each owned contact node at its first degree
+     * of freedom, up to the state before the step (zero elsewhere).
+     */
+    const VectorType &
+    wear() const
+    {
+      return wear_depth;
     }
 
     const NormalMemoryKernel &
@@ -113,11 +150,12 @@ namespace hemicontact
 
     /**
      * The step prepared last converged with the unknown @p unknown (u_n in
-     * the static class, w_n otherwise): its state joins the history and
-     * its slip the accumulated slip.
+     * the static class, w_n otherwise) and the nodal traction -sigma nu
+     * @p traction: its state joins the history, its slip the accumulated
+     * slip and its wear the wear depth.
      */
     void
-    commit_step(const VectorType *unknown);
+    commit_step(const VectorType *unknown, const VectorType *traction);
 
     /** @p functional += m_i N_i nu_i at the owned contact nodes. */
     void
@@ -184,5 +222,10 @@ namespace hemicontact
     bool       slip_from_displacement = false;
     VectorType accumulated_slip;
     VectorType slip_start;
+
+    /** k_w, v*, and the wear depth omega. */
+    double         wear_coefficient = 0;
+    Tensor<1, dim> foundation_velocity;
+    VectorType     wear_depth;
   };
 } // namespace hemicontact

@@ -59,9 +59,13 @@ namespace hemicontact
                   const std::string          &constants,
                   MPI_Comm                    comm);
 
-    /** ... and the memory of the normal response of @p normal. */
+    /**
+     * ... and the memory of the normal response of @p normal and the wear
+     * of @p wear.
+     */
     MemoryHistory(const RelaxationParameters   &parameters,
                   const NormalMemoryParameters &normal,
+                  const WearParameters         &wear,
                   const std::string            &constants,
                   MPI_Comm                      comm);
 
@@ -158,10 +162,12 @@ namespace hemicontact
     /**
      * The step prepared last converged: its state joins the history, and
      * with an accumulated slip that of @p unknown (u_n in the static class,
-     * w_n otherwise).
+     * w_n otherwise), with wear that of @p unknown under the nodal traction
+     * -sigma nu @p traction.
      */
     void
-    commit_step(const VectorType *unknown = nullptr);
+    commit_step(const VectorType *unknown  = nullptr,
+                const VectorType *traction = nullptr);
 
     /**
      * Accumulate the slip of the contact nodes for the friction bound
@@ -172,6 +178,16 @@ namespace hemicontact
     measure_slip(const bool of_displacement)
     {
       contact.measure_slip(of_displacement);
+    }
+
+    /**
+     * The wear (section 11.12) is of the displacement (@p of_displacement,
+     * the static class) or of the velocity. Before reinit().
+     */
+    void
+    set_static_class(const bool of_displacement)
+    {
+      contact.set_static_class(of_displacement);
     }
 
     /**

@@ -54,6 +54,13 @@ namespace hemicontact
      * class, (g - u_nu)/k in the velocity classes; +inf without a wall).
      */
     double upper_limit = std::numeric_limits<double>::infinity();
+    /**
+     * The shift of the normal law's argument: the law acts on
+     * w_nu - law_offset (the wear depth in the static class, doc/theory.md
+     * section 11.12; zero otherwise). upper_limit and held_value are in
+     * w_nu itself.
+     */
+    double law_offset = 0;
     /** w_nu on the branches that hold it (stick, breakpoint, wall). */
     double           held_value        = 0;
     NormalBranch     normal_branch     = NormalBranch::separating;
@@ -62,7 +69,8 @@ namespace hemicontact
 
   /**
    * The state of a contact node at an iterate: the velocity in normal and
-   * tangential components, and the multipliers of the laws' convex parts
+   * tangential components (the normal one as the law's argument,
+   * w_nu - law_offset), and the multipliers of the laws' convex parts
    * (normal s, tangential lambda) from the nodal contact force
    * G = m_i (s nu + p(w_nu) nu + lambda + r(|w_tau|) w_tau/|w_tau|)
    * = -(K w - b)_i.
@@ -126,7 +134,8 @@ namespace hemicontact
     /**
      * The node's hold points in increasing position: r = 0 (the jump
      * [0, a]), the law's kinks below the wall, and the wall at
-     * node.upper_limit (doc/theory.md section 10). Between them w_nu is free.
+     * node.upper_limit (doc/theory.md section 10), as values of the law's
+     * argument w_nu - node.law_offset. Between them w_nu is free.
      */
     template <int dim>
     std::vector<HoldPoint>

@@ -99,7 +99,8 @@ namespace hemicontact
   private:
     /**
      * The vector x0 with w . nu = held_value at the owned nodes held away
-     * from zero (breakpoint, wall) and zero elsewhere, and whether any
+     * from zero (breakpoint, wall, and stick at a law_offset) and zero
+     * elsewhere, and whether any
      * rank has one: the inhomogeneous part of the constraints.
      */
     bool
