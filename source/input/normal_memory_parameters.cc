@@ -40,7 +40,7 @@ namespace hemicontact
       "'none': no memory. 'prony': b(t) = sum_m b_m exp(-t/tau_m) from "
       "'amplitudes' and 'relaxation times', one history value per node and "
       "term, updated exactly at a fixed cost per step. 'expression': b(t) "
-      "from 'b'; every past (u_nu)_+ is kept. Not with adaptive meshes.");
+      "from 'b'; every past (u_nu)_+ is kept. Adapted meshes carry the history.");
     prm.declare_entry("amplitudes",
                       "",
                       Patterns::Anything(),

@@ -43,7 +43,7 @@ namespace hemicontact
       "term, updated exactly at a fixed cost per step. 'expression': "
       "mu_R(t) and lambda_R(t) from 'mu' and 'lambda'; every past state is "
       "kept, so a step costs time and memory growing with the number of "
-      "steps before it. Not with adaptive meshes.");
+      "steps before it. Adapted meshes carry the history.");
     prm.declare_entry("mu amplitudes",
                       "",
                       Patterns::Anything(),

@@ -54,12 +54,14 @@ namespace hemicontact
                      "set 'manufactured solution/enabled = false'.");
       const bool memory =
         parameters.relaxation.active() || parameters.normal_memory.active() ||
+        parameters.wear.active() ||
         parameters.data.friction_bound.find("s_tau") != std::string::npos;
       require(!memory,
-              name + " does not work with memory (a relaxation or normal "
-                     "memory kernel, or a friction bound in s_tau): the "
-                     "history is not moved to a new mesh (doc/theory.md, "
-                     "section 11.8).");
+              name +
+                " does not work with memory (a relaxation or normal "
+                "memory kernel, wear, or a friction bound in s_tau): a load "
+                "value solved again on a new mesh would add its state "
+                "to the history twice (doc/theory.md, section 11.8).");
     }
   } // namespace
 
@@ -214,9 +216,9 @@ namespace hemicontact
                   "every step of every level.");
       }
 
-    // what the memory of the stress does not do (doc/theory.md, section
-    // 11.8): its history lives on one mesh, and the error estimate's
-    // residuals do not hold the memory stress
+    // what the memory does not do (doc/theory.md, section 11.8): the
+    // error estimate's residuals hold neither the memory stress nor a
+    // moving foundation
     if (parameters.relaxation.active())
       {
         require(!parameters.output.error_estimate,
@@ -225,39 +227,11 @@ namespace hemicontact
                 "true': the estimate's residuals (doc/theory.md, section 12) "
                 "do not hold the memory part of the stress. Set 'output/"
                 "error estimate = false', or 'relaxation/kernel = none'.");
-        require(adaptivity.interval == 0 &&
-                  adaptivity.pre_refinement_steps == 0,
-                "relaxation: a memory kernel ('relaxation/kernel' = prony or "
-                "expression) does not work with adaptive meshes: its history "
-                "is not moved to a new mesh. Set 'adaptivity/interval = 0' "
-                "and 'adaptivity/pre-refinement steps = 0', or "
-                "'relaxation/kernel = none'.");
         RelaxationKernel(parameters.relaxation, parameters.data.constants)
           .require_finite(parameters.time.end_time / n_steps, n_steps);
       }
-    // the same for the memory of the normal response (section 11.9) and
-    // for the accumulated slip of a friction bound (section 11.10)
-    const std::string &bound = parameters.data.friction_bound;
-    if (bound.find("s_tau") != std::string::npos &&
-        (parameters.dimension == 2 ?
-           FrictionBound<2>(bound, parameters.data.constants).uses_slip() :
-           FrictionBound<3>(bound, parameters.data.constants).uses_slip()))
-      {
-        require(adaptivity.interval == 0 &&
-                  adaptivity.pre_refinement_steps == 0,
-                "data: a 'friction bound' in s_tau, the accumulated slip, "
-                "does not work with adaptive meshes: its history is not moved "
-                "to a new mesh. Set 'adaptivity/interval = 0' and "
-                "'adaptivity/pre-refinement steps = 0'.");
-      }
     if (parameters.wear.active())
       {
-        require(adaptivity.interval == 0 &&
-                  adaptivity.pre_refinement_steps == 0,
-                "wear: a 'wear coefficient' > 0 does not work with adaptive "
-                "meshes: the wear depth is not moved to a new mesh. Set "
-                "'adaptivity/interval = 0' and 'adaptivity/pre-refinement "
-                "steps = 0', or 'wear/wear coefficient = 0'.");
         require(!manufactured,
                 "wear: a 'wear coefficient' > 0 does not work with "
                 "'manufactured solution/enabled = true': the derived data do "
@@ -272,13 +246,6 @@ namespace hemicontact
       }
     if (parameters.normal_memory.active())
       {
-        require(adaptivity.interval == 0 &&
-                  adaptivity.pre_refinement_steps == 0,
-                "normal memory: a memory kernel ('normal memory/kernel' = "
-                "prony or expression) does not work with adaptive meshes: "
-                "its history is not moved to a new mesh. Set "
-                "'adaptivity/interval = 0' and 'adaptivity/pre-refinement "
-                "steps = 0', or 'normal memory/kernel = none'.");
         NormalMemoryKernel(parameters.normal_memory, parameters.data.constants)
           .require_finite(parameters.time.end_time / n_steps, n_steps);
       }

@@ -29,8 +29,8 @@ namespace hemicontact
       "integral is the left-rectangle sum over the states before the step, "
       "omega_n = k_w sum_{j<n} k_j p_j |w_tau,j - v*| (velocity classes) or "
       "k_w sum_{j<n} p_j |u_tau,j - u_tau,j-1 - k_j v*| (static class). "
-      "k_w >= 0, a finite number; 0: no wear. Not with adaptive meshes, "
-      "manufactured solutions or the error estimate.");
+      "k_w >= 0, a finite number; 0: no wear. Adapted meshes carry the "
+      "wear; not with manufactured solutions or the error estimate.");
     prm.declare_entry(
       "foundation velocity",
       "",

@@ -164,11 +164,27 @@ namespace hemicontact
         u_next.add(scheme.held_displacement_offset(time_step), velocity);
         u = u_next;
       }
+    // the memory's history (the Prony vectors or the stored states, and
+    // the contact node values) moves by the same interpolation
+    // (doc/theory.md, section 11.8)
+    const std::vector<double> history_values = memory.saved_values();
+    std::vector<TrilinosWrappers::MPI::Vector> history;
+    for (const TrilinosWrappers::MPI::Vector *x : memory.saved_fields())
+      {
+        history.emplace_back(locally_owned_dofs,
+                             locally_relevant_dofs,
+                             mpi_communicator);
+        history.back() = *x;
+      }
+    std::vector<const TrilinosWrappers::MPI::Vector *> old_fields{&w,
+                                                                  &u,
+                                                                  &traction};
+    for (const TrilinosWrappers::MPI::Vector &x : history)
+      old_fields.push_back(&x);
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
       transfer(dof_handler);
     tria->prepare_coarsening_and_refinement();
-    transfer.prepare_for_coarsening_and_refinement(
-      std::vector<const TrilinosWrappers::MPI::Vector *>{&w, &u, &traction});
+    transfer.prepare_for_coarsening_and_refinement(old_fields);
     const unsigned int functionals =
       project ? attach_coarsened_functionals(w, u) : 0;
     tria->execute_coarsening_and_refinement();
@@ -178,6 +194,8 @@ namespace hemicontact
     std::vector<TrilinosWrappers::MPI::Vector *> new_fields{&velocity,
                                                             &displacement,
                                                             &contact_traction};
+    for (TrilinosWrappers::MPI::Vector *x : memory.restore(history_values))
+      new_fields.push_back(x);
     transfer.interpolate(new_fields);
     // (before the hanging-node values are distributed: a kept cell next to
     // a coarsened one still holds the old field there)

@@ -57,6 +57,12 @@ for prm in "$@"; do
     [ "$halvings" -gt 0 ] || { echo "FAIL: $name halves no step"; exit 1; }
     echo "$name: $halvings halvings"
   fi
+  # a run named *adaptive* adapts its mesh
+  if [[ $name == *adaptive* ]]; then
+    adapted=$(columns_of "$name-prony/steps.csv" adapted | awk 'NR > 1 { s += $1 } END { print s + 0 }')
+    [ "$adapted" -gt 0 ] || { echo "FAIL: $name adapts no mesh"; exit 1; }
+    echo "$name: $adapted adaptations"
+  fi
   # the memory did something: its work is not zero at the end
   last=$(columns_of "$name-prony/steps.csv" memory_work | tail -1)
   awk -v m="$last" 'BEGIN { exit !(m != 0) }' || { echo "FAIL: $name: memory_work is 0"; exit 1; }
