@@ -1,8 +1,11 @@
-// Manufactured solutions with long memory (doc/theory.md, section 11.11) in
-// prm/verification: the static class on 2D quadrilaterals and the dynamic
-// and quasistatic classes on 2D quadrilaterals, three levels of the coupled
-// study each (h and k halved together). Asserts the observed orders at the
-// finest pair: E_u (the energy norm in the static class) and E_V in
+// Manufactured solutions with long memory (doc/theory.md, section 11.11)
+// in prm/verification, three levels of the coupled study each (h and k
+// halved together): the static class on 2D quadrilaterals and the dynamic
+// and quasistatic classes on 2D quadrilaterals, first with a relaxation
+// kernel alone, then with memory in the stress and in the contact (the
+// relaxation kernel, memory in the normal response and a friction bound
+// weakening with the accumulated slip s_tau). Asserts the observed orders
+// at the finest pair: E_u (the energy norm in the static class) and E_V in
 // [0.85, 1.3].
 #include <hemicontact/input/parameters.h>
 #include <hemicontact/verification/convergence_study.h>
@@ -66,4 +69,7 @@ main(int argc, char **argv)
   check("mms_2d_quad_memory_static", "static", 2, 0.25);
   check("mms_2d_quad_memory", "dynamic", 2, 0.25);
   check("mms_2d_quad_memory", "quasistatic", 2, 0.25);
+  check("mms_2d_quad_contact_memory_static", "static", 2, 0.25);
+  check("mms_2d_quad_contact_memory", "dynamic", 2, 0.25);
+  check("mms_2d_quad_contact_memory", "quasistatic", 2, 0.25);
 }
