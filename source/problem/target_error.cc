@@ -24,7 +24,8 @@ namespace hemicontact
     StepStatistics              stats    = advance();
     unsigned int                newton   = 0;
     unsigned int                linear   = 0;
-    StepStatistics              adaptation;
+    // the stored energy before the first adaptation and after the last
+    double elastic_before = 0, elastic_after = 0;
     for (unsigned int refinements = 0;; ++refinements)
       {
         // the static class's stored energy is 1/2 a_B(u_h, u_h)
@@ -45,12 +46,8 @@ namespace hemicontact
             if (refinements > 0)
               {
                 stats.adapted                   = true;
-                stats.kinetic_before_adaptation = 0;
-                stats.elastic_before_adaptation =
-                  adaptation.elastic_before_adaptation;
-                stats.kinetic_after_adaptation = 0;
-                stats.elastic_after_adaptation =
-                  adaptation.elastic_after_adaptation;
+                stats.elastic_before_adaptation = elastic_before;
+                stats.elastic_after_adaptation  = elastic_after;
               }
             return stats;
           }
@@ -61,13 +58,12 @@ namespace hemicontact
           settings.max_cells > 0 && cells >= settings.max_cells;
         if (!at_max_cells)
           {
-            if (refinements == 0)
-              adaptation.elastic_before_adaptation = energy.elastic;
             output.finish_solution_output(); // its job reads the mesh
-            StepStatistics step_adaptation;
-            adapt_mesh(step_adaptation);
-            adaptation.elastic_after_adaptation =
-              step_adaptation.elastic_after_adaptation;
+            StepStatistics adaptation;
+            adapt_mesh(adaptation);
+            if (refinements == 0)
+              elastic_before = adaptation.elastic_before_adaptation;
+            elastic_after = adaptation.elastic_after_adaptation;
             output.mesh_changed(*this);
           }
         if (at_max_cells || dof_handler.n_dofs() <= dofs)
