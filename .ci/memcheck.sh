@@ -33,8 +33,17 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 # walls (signorini_block_2d, finite_penetration_quasistatic_2d, one step of
 # prm/wall_block_2d.prm), jumps and breakpoints (breakpoints_3d_simplex),
 # Coulomb friction (one load value of prm/coulomb_block_2d.prm) and the
-# HDF5 output (io/hdf5_output, nodal_hdf5_writer)
-asan_tests='^tests/(normal_laws|node_contact|one_step_exact|one_step_rotated_gmsh|block_2d_short|block_3d_short|manufactured_data|projected_vs_direct|static_block_2d|quasistatic_left_point_2d|quasistatic_implicit_2d|signorini_block_2d|finite_penetration_quasistatic_2d|breakpoints_3d_simplex|nodal_hdf5_writer)\.|^bad_input/|^shipped_prm/(coulomb_block_2d|wall_block_2d)\.prm$|^io/hdf5_output$'
+# HDF5 output (io/hdf5_output, nodal_hdf5_writer); the history: the
+# stress's memory as a Prony series (memory_static_2d) and as expressions
+# (memory/prony_vs_expression), the normal memory (memory_normal_2d), the
+# accumulated slip (memory/slip_weakening), wear (memory/wear, one step of
+# prm/wear_block_2d.prm), the memory rule's stability check
+# (memory/unstable_memory_rule), adaptivity with memory
+# (memory/normal_wall_adaptive_1), resumes with memory and wear
+# (restart/memory_expression_1_to_1, restart/memory_wear_2_to_2); the error
+# estimator (adaptive_static_estimator) and 'target error'
+# (adaptive_static_target_error)
+asan_tests='^tests/(normal_laws|node_contact|one_step_exact|one_step_rotated_gmsh|block_2d_short|block_3d_short|manufactured_data|projected_vs_direct|static_block_2d|quasistatic_left_point_2d|quasistatic_implicit_2d|signorini_block_2d|finite_penetration_quasistatic_2d|breakpoints_3d_simplex|nodal_hdf5_writer|memory_static_2d|memory_normal_2d|adaptive_static_estimator|adaptive_static_target_error)\.|^bad_input/|^shipped_prm/(coulomb_block_2d|wall_block_2d|wear_block_2d)\.prm$|^io/hdf5_output$|^memory/(prony_vs_expression|slip_weakening|wear|unstable_memory_rule|normal_wall_adaptive_1)$|^restart/(memory_expression_1_to_1|memory_wear_2_to_2)$'
 
 run_asan() {
   local build=$root/build-asan log=$root/build-asan/memcheck-asan.log

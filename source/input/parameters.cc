@@ -293,8 +293,10 @@ namespace hemicontact
       "false",
       Patterns::Bool(),
       "The left-point rule is stable only for k below a limit set by the "
-      "viscosity, the elasticity and the mesh; a larger time step is "
-      "refused at start-up. 'true' runs it anyway, with a warning.");
+      "viscosity, the elasticity and the mesh, and the memory rule "
+      "('relaxation', 'normal memory') below a limit set by the kernel; "
+      "a larger time step is refused at start-up. 'true' runs it anyway, "
+      "with a warning.");
     prm.leave_subsection();
   }
 

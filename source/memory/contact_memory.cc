@@ -151,7 +151,11 @@ namespace hemicontact
                           pending_step * foundation_velocity[c];
                 const Tensor<1, dim> v_tau =
                   v - (v * node.normal) * node.normal;
-                wear_depth[node.dofs[0]] +=
+                // read, then set (not +=): the vector's last operation
+                // must be the 'insert' its compress() names, which deal.II's
+                // debug library checks
+                wear_depth[node.dofs[0]] =
+                  wear_depth[node.dofs[0]] +
                   wear_coefficient * pressure * v_tau.norm();
               }
             else
@@ -159,7 +163,8 @@ namespace hemicontact
                 v -= foundation_velocity;
                 const Tensor<1, dim> v_tau =
                   v - (v * node.normal) * node.normal;
-                wear_depth[node.dofs[0]] +=
+                wear_depth[node.dofs[0]] =
+                  wear_depth[node.dofs[0]] +
                   wear_coefficient * pending_step * pressure * v_tau.norm();
               }
           }
@@ -177,7 +182,8 @@ namespace hemicontact
               v[c] = (*unknown)[node.dofs[c]] -
                      (slip_from_displacement ? slip_start[node.dofs[c]] : 0.);
             const Tensor<1, dim> v_tau = v - (v * node.normal) * node.normal;
-            accumulated_slip[node.dofs[0]] += k * v_tau.norm();
+            accumulated_slip[node.dofs[0]] =
+              accumulated_slip[node.dofs[0]] + k * v_tau.norm();
           }
         accumulated_slip.compress(VectorOperation::insert);
       }
@@ -197,7 +203,8 @@ namespace hemicontact
   {
     for (const Node &node : nodes)
       for (unsigned int c = 0; c < dim; ++c)
-        functional[node.dofs[c]] += node.mass * memory_pressure[node.dofs[c]];
+        functional[node.dofs[c]] =
+          functional[node.dofs[c]] + node.mass * memory_pressure[node.dofs[c]];
     functional.compress(VectorOperation::insert);
   }
 

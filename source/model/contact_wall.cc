@@ -14,15 +14,16 @@ namespace hemicontact
     for (ContactNode<dim> &node : nodes)
       {
         // the wear depth omega moves the foundation away (section 11.12)
-        const double omega = wear != nullptr ? (*wear)[node.dofs[0]] : 0.;
-        node.upper_limit   = g + omega;
-        node.law_offset    = displacement == nullptr ? omega : 0.;
+        const double wall = wall_position(g, node, wear);
+        node.upper_limit  = wall;
+        node.law_offset =
+          displacement == nullptr ? wear_depth_at(node, wear) : 0.;
         if (displacement != nullptr && std::isfinite(g))
           {
             double u_nu = 0;
             for (unsigned int c = 0; c < dim; ++c)
               u_nu += (*displacement)[node.dofs[c]] * node.normal[c];
-            node.upper_limit = (g + omega - u_nu) / time_step;
+            node.upper_limit = (wall - u_nu) / time_step;
           }
       }
   }

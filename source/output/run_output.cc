@@ -486,7 +486,22 @@ namespace hemicontact
           << std::fixed << std::setprecision(2)
           << double(totals.newton_iterations) / std::max(totals.steps, 1u)
           << " max " << totals.max_newton << ", energy defect < 1e-7 relative: "
-          << (s.energy.relative_defect() < 1e-7 ? "yes" : "no") << std::endl;
+          << (s.energy.relative_defect() < 1e-7 ? "yes" : "no");
+    if (totals.unstable_energy_growth > 0)
+      pcout << "; the stored energy grew to " << std::scientific
+            << std::setprecision(3) << totals.unstable_energy_growth
+            << " times the energy the data put in: an unstable run";
+    pcout << std::endl;
+    // the estimate of every step, or the steps it covers named
+    const bool partial_estimate =
+      totals.estimated_steps > 0 &&
+      (totals.first_estimated_step > 1 || totals.estimated_steps < s.n_steps);
+    if (partial_estimate)
+      pcout << "error estimate of steps " << totals.first_estimated_step
+            << " to " << s.step_number << " only, not of the whole run of "
+            << s.n_steps << " steps (the run resumed from the checkpoint of step "
+            << totals.first_estimated_step - 1
+            << "; the sums leave out the steps before it): ";
     if (totals.estimated_steps > 0)
       pcout << "error estimate (energy norm of the step, doc/theory.md 12): "
             << "largest eta_n = " << std::scientific << std::setprecision(3)

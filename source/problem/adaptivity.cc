@@ -125,10 +125,30 @@ namespace hemicontact
           n_cells, max_cells, refine_fraction, coarsen_fraction);
     else if (n_cells >= max_cells)
       refine_fraction = 0;
-    const MarkingThresholds thresholds = marking_thresholds(std::move(all),
-                                                            settings.strategy,
-                                                            refine_fraction,
-                                                            coarsen_fraction);
+    MarkingThresholds thresholds =
+      marking_thresholds(all, settings.strategy, refine_fraction, coarsen_fraction);
+    // fixed fraction under a cell budget: refine at most the cells that
+    // keep the count within it (each refined cell adds 2^dim - 1), the
+    // largest indicators first
+    if (settings.strategy == MarkingStrategy::fixed_fraction &&
+        settings.max_cells > 0)
+      {
+        const types::global_cell_index room =
+          n_cells < max_cells ?
+            (max_cells - n_cells) / (GeometryInfo<dim>::max_children_per_cell - 1) :
+            0;
+        const auto n_marked = static_cast<types::global_cell_index>(
+          std::count_if(all.begin(), all.end(), [&](const float indicator) {
+            return indicator > thresholds.refine;
+          }));
+        if (n_marked > room)
+          thresholds.refine =
+            marking_thresholds(all,
+                               MarkingStrategy::fixed_number,
+                               static_cast<double>(room) / n_cells,
+                               0.)
+              .refine;
+      }
     for (const auto &cell : tria->active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -188,6 +208,16 @@ namespace hemicontact
     const unsigned int functionals =
       project ? attach_coarsened_functionals(w, u) : 0;
     tria->execute_coarsening_and_refinement();
+    // fixed fraction keeps the budget of its marks; the 2:1 balance may
+    // refine beyond it: say so with the count
+    if (settings.strategy == MarkingStrategy::fixed_fraction &&
+        settings.max_cells > 0 &&
+        tria->n_global_active_cells() > settings.max_cells)
+      pcout << "  adaptation: " << tria->n_global_active_cells()
+            << " cells, above 'adaptivity/max cells' = " << settings.max_cells
+            << " by the cells the mesh's 2:1 balance refined with the marked "
+               "ones"
+            << std::endl;
 
     // rebuild everything that lives on the mesh
     setup_on_current_mesh();
@@ -209,9 +239,12 @@ namespace hemicontact
     // a projection can overshoot the wall (doc/theory.md 10.2)
     const auto [n_moved, largest_move] = move_state_onto_wall();
     if (n_moved > 0)
-      pcout << "  adaptation: the transferred state crossed the wall at "
-            << n_moved << " contact nodes (by up to " << largest_move
-            << "); moved back onto it" << std::endl;
+      pcout << "  adaptation: the transferred state crossed the wall "
+            << (memory.contact_memory().wear_active() ?
+                  "(g + the wear depth) " :
+                  "")
+            << "at " << n_moved << " contact nodes (by up to "
+            << largest_move << "); moved back onto it" << std::endl;
     old_velocity = velocity;
 
     std::tie(stats.kinetic_after_adaptation, stats.elastic_after_adaptation) =
@@ -224,6 +257,7 @@ namespace hemicontact
       stats.kinetic_before_adaptation - stats.elastic_before_adaptation;
     // a finer mesh may have a smaller stability limit
     check_time_step_stability();
+    check_memory_stability();
   }
 
   template Vector<float>

@@ -67,6 +67,7 @@ namespace hemicontact
     energy      = state.energy_balance();
     update_friction_bounds(step_number * time_step);
     check_time_step_stability();
+    check_memory_stability();
     check_convexity();
 
     // the preconditioner as the interrupted run left it (after the checks

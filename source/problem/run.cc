@@ -28,31 +28,37 @@ namespace hemicontact
 
     /**
      * Refuse (SolverFailure) a stored energy E_n above
-     * unstable_energy_growth times the energy put in, at time @p t, unless
-     * 'time/allow unstable time step' is set: then a warning, once
-     * (@p reported).
+     * unstable_energy_growth times @p allowance times the energy the data
+     * put in (EnergyBalance::growth()), at time @p t, unless 'time/allow
+     * unstable time step' is set: then a warning, once, and the largest
+     * growth in @p totals.
      */
     void
     check_energy_growth(const EnergyBalance &energy,
                         const double         t,
+                        const double         allowance,
                         const Parameters    &parameters,
                         MPI_Comm             comm,
-                        bool                &reported)
+                        RunTotals           &totals)
     {
-      if (!(energy.growth() > unstable_energy_growth) || reported)
+      if (!(energy.growth() > unstable_energy_growth * allowance))
+        return;
+      const bool reported = totals.unstable_energy_growth > 0;
+      totals.unstable_energy_growth =
+        std::max(totals.unstable_energy_growth, energy.growth());
+      if (reported)
         return;
       std::ostringstream message;
       message << std::setprecision(4)
               << "the stored energy E_n = " << energy.total_energy()
               << " at t = " << t << " is " << energy.growth()
-              << " times the energy put into the body (initial "
+              << " times the energy the data put into the body (initial "
                  "energy and work of the loads, "
-              << energy.supplied_energy()
+              << energy.data_energy()
               << "): the time scheme is unstable (doc/theory.md, "
-                 "section 8); reduce the time step.";
+                 "sections 8 and 11.13); reduce the time step.";
       if (!parameters.time.allow_unstable_time_step)
         throw SolverFailure(message.str());
-      reported = true;
       if (Utilities::MPI::this_mpi_process(comm) == 0)
         std::cerr << "hemicontact: warning: " << message.str() << std::endl;
     }
@@ -327,8 +333,7 @@ namespace hemicontact
     output.start_time_loop(step_number);
 
     RunTotals totals;
-    bool      restarted       = false; // by 'adaptivity/pre-refinement steps'
-    bool      growth_reported = false;
+    bool      restarted = false; // by 'adaptivity/pre-refinement steps'
     while (!finished())
       {
         StepStatistics stats;
@@ -339,9 +344,10 @@ namespace hemicontact
                       advance();
             check_energy_growth(energy,
                                 step_number * time_step,
+                                memory_energy_allowance,
                                 parameters,
                                 mpi_communicator,
-                                growth_reported);
+                                totals);
           }
         catch (const SolverFailure &failure)
           {

@@ -81,6 +81,7 @@ namespace hemicontact
     setup_on_current_mesh();
     initialize_state();
     check_time_step_stability();
+    check_memory_stability();
     check_convexity();
   }
 

@@ -4,6 +4,7 @@
  * 'adaptivity/target error' times the energy norm of the solution
  * (doc/adaptivity.md, "Solving to a tolerance").
  */
+#include <deal.II/base/geometry_info.h>
 #include <deal.II/base/utilities.h>
 
 #include <hemicontact/base/exceptions.h>
@@ -53,9 +54,12 @@ namespace hemicontact
           }
 
         // refine, unless the limits stop it: a mesh that does not grow
-        // cannot lower the estimate
+        // cannot lower the estimate; at 'max cells' when refining one more
+        // cell (2^dim - 1 new ones) would exceed it
         const bool at_max_cells =
-          settings.max_cells > 0 && cells >= settings.max_cells;
+          settings.max_cells > 0 &&
+          cells + GeometryInfo<dim>::max_children_per_cell - 1 >
+            settings.max_cells;
         if (!at_max_cells)
           {
             output.finish_solution_output(); // its job reads the mesh
@@ -78,7 +82,8 @@ namespace hemicontact
                     << " dofs, and the mesh cannot grow: "
                     << (at_max_cells ?
                           "'adaptivity/max cells' = " +
-                            std::to_string(settings.max_cells) + " is reached" :
+                            std::to_string(settings.max_cells) +
+                            " leaves no room to refine a cell" :
                           "no cell can be refined below 'adaptivity/max "
                           "level' = " +
                             std::to_string(settings.max_level))

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/model/contact_wall.h>
 #include <hemicontact/problem/contact_problem.h>
 
 #include <cmath>
@@ -68,6 +69,10 @@ namespace hemicontact
     if (!std::isfinite(g) || scheme.is_static())
       return {0, 0.};
     const double offset  = scheme.held_displacement_offset(time_step);
+    // the worn wall, g + omega (owned nodes only: the owned entries do)
+    const TrilinosWrappers::MPI::Vector *wear =
+      memory.contact_memory().wear_active() ? &memory.contact_memory().wear() :
+                                              nullptr;
     unsigned int n_moved = 0;
     double       largest = 0;
     for (const ContactNode<dim> &node : contact_nodes)
@@ -75,7 +80,8 @@ namespace hemicontact
         {
           const double excess =
             nodal_vector(node, displacement) * node.normal +
-            offset * nodal_vector(node, velocity) * node.normal - g;
+            offset * nodal_vector(node, velocity) * node.normal -
+            wall_position(g, node, wear);
           if (excess > 0)
             {
               for (unsigned int c = 0; c < dim; ++c)

@@ -89,11 +89,26 @@ namespace hemicontact
       return std::abs(defect()) / std::max(supplied_energy(), 1e-300);
     }
 
-    /** E_n relative to the energy supplied (about 1 or below when stable). */
+    /**
+     * The energy the data put into the body: |E_0| + |sum k <f_n, w_n>| +
+     * |transfer changes|, without the memory's work. The memory is a part
+     * of the model: a stable rule keeps E_n within a multiple of this
+     * (doc/theory.md 11.13), an unstable one does not, however much
+     * work it books.
+     */
+    double
+    data_energy() const
+    {
+      return std::abs(initial_energy) + std::abs(external_work) +
+             std::abs(transfer_change);
+    }
+
+    /** E_n relative to the energy the data put in (about 1 or below when
+     *  stable). */
     double
     growth() const
     {
-      return total_energy() / std::max(supplied_energy(), 1e-300);
+      return total_energy() / std::max(data_energy(), 1e-300);
     }
   };
 } // namespace hemicontact

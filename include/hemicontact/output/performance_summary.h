@@ -28,6 +28,8 @@ namespace hemicontact
     double       step_wall_seconds = 0; ///< advance() only, no output
     /** @name The error estimates of the steps ('output/error estimate') */
     unsigned int estimated_steps       = 0;
+    /** The first step with an estimate (0: none), e.g. after a resume. */
+    unsigned int first_estimated_step = 0;
     double       estimate_k_sum        = 0; ///< sum_n k_n eta_n^2
     double       largest_estimate      = 0; ///< max_n eta_n
     unsigned int largest_estimate_step = 0;
@@ -35,6 +37,13 @@ namespace hemicontact
      *  classes) */
     unsigned int time_estimated_steps = 0;
     double       estimate_time_k_sum  = 0;
+    /**
+     * The largest stored energy E_n of the run relative to the energy the
+     * data put in (EnergyBalance::growth()), when it exceeded the limit of
+     * a stable run and 'time/allow unstable time step' let it go on; 0
+     * otherwise.
+     */
+    double unstable_energy_growth = 0;
     /** The parts of the memory at the end of the time loop. */
     MemoryBreakdown memory;
 
@@ -55,6 +64,8 @@ namespace hemicontact
     {
       if (!stats.estimated)
         return;
+      if (estimated_steps == 0)
+        first_estimated_step = stats.step;
       ++estimated_steps;
       estimate_k_sum += k * stats.estimate * stats.estimate;
       if (stats.time_estimated)

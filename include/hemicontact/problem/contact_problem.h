@@ -401,8 +401,9 @@ namespace hemicontact
     require_admissible_initial_state() const;
     /**
      * After a mesh transfer: move the displacement the next step holds,
-     * u + StepScheme::held_displacement_offset(k) w, back onto the wall at
-     * every (unconstrained) contact node beyond it, along the normal.
+     * u + StepScheme::held_displacement_offset(k) w, back onto the wall
+     * (wall_position(): g + the wear depth) at every (unconstrained) contact
+     * node beyond it, along the normal.
      * Returns the number of nodes moved and the largest distance, summed and
      * maximised over the ranks.
      */
@@ -417,6 +418,15 @@ namespace hemicontact
      */
     void
     check_time_step_stability();
+    /**
+     * Refuse (InputError) a time step above the stability limit of the
+     * explicit memory rule (memory_stability_check.cc, doc/theory.md
+     * 11.13) for the stress's and the normal response's kernels, unless
+     * 'time/allow unstable time step' is set (then a warning); warn when a
+     * stress kernel's long-term modulus is negative (the model grows).
+     */
+    void
+    check_memory_stability();
     /**
      * The largest stable time step on the current mesh, estimated from the
      * largest eigenvalue of B against A + 2M/k, or infinity if @p k is
@@ -495,6 +505,13 @@ namespace hemicontact
     ProblemData<dim>             data;
     /** The memory term of the stress: its history and its step functional. */
     MemoryHistory<dim> memory;
+    /**
+     * How much more energy than the data put in a stable run may store
+     * with the stress's kernel: the square of the largest ratio of B's
+     * modulus to the long-term modulus (infinite when the model itself
+     * grows; 1 without memory). Set by check_memory_stability().
+     */
+    double memory_energy_allowance = 1;
 
     Discretization<dim> discretization;
     DoFHandler<dim>     dof_handler;
