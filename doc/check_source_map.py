@@ -96,8 +96,8 @@ def main():
     for path in sorted(on_disk - set(listed)):
         directory = os.path.dirname(path)
         row = row_of_directory(listed, directory)
-        where = ("in the row of line %d (the files of %s/) or in a new row "
-                 "next to it" % (row, directory)) if row else \
+        where = ("next to line %d, the first row that names a file of %s/"
+                 % (row, directory)) if row else \
             ("in a new row for %s/" % directory)
         errors.append(
             "%s:%d: %s is not in the source map: add `%s` with what it does "
