@@ -105,7 +105,7 @@ namespace hemicontact
     const NormalMemoryKernel &normal = memory.contact_memory().get_kernel();
     const bool stress_memory = stress.type() != RelaxationKernelType::none;
     const bool normal_memory = normal.type() != RelaxationKernelType::none;
-    memory_energy_allowance = 1;
+    memory_rule_unstable = false;
     if (!stress_memory && !normal_memory)
       return;
     TimerOutput::Scope t(timer, "stability check");
@@ -155,13 +155,7 @@ namespace hemicontact
                 const auto [mu, lambda] = stress(n * k);
                 integral += k * channel(mu, lambda);
               }
-          const double long_term = mode.elasticity + integral;
-          memory_energy_allowance =
-            long_term > 0 ?
-              std::max(memory_energy_allowance,
-                       std::pow(mode.elasticity / long_term, 2)) :
-              std::numeric_limits<double>::infinity();
-          if (long_term < 0 && growing_model.str().empty())
+          if (mode.elasticity + integral < 0 && growing_model.str().empty())
             growing_model
               << std::setprecision(4) << "the long-term modulus of "
               << where.substr(4) << ", " << mode.elasticity << " + "
@@ -262,6 +256,7 @@ namespace hemicontact
       std::cerr << "hemicontact: warning: " << growing_model.str() << std::endl;
     if (!(result.limit < k))
       return;
+    memory_rule_unstable = true;
     std::ostringstream message;
     message << std::setprecision(4) << "the time step k = " << k
             << " is above the stability limit of the memory rule for "

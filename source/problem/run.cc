@@ -28,33 +28,40 @@ namespace hemicontact
 
     /**
      * Refuse (SolverFailure) a stored energy E_n above
-     * unstable_energy_growth times @p allowance times the energy the data
-     * put in (EnergyBalance::growth()), at time @p t, unless 'time/allow
-     * unstable time step' is set: then a warning, once, and the largest
-     * growth in @p totals.
+     * unstable_energy_growth times the energy put in, at time @p t, unless
+     * 'time/allow unstable time step' is set: then a warning, once, and the
+     * largest growth in @p totals. The energy put in counts the memory's
+     * booked work (EnergyBalance::growth()), except when the memory rule
+     * runs beyond its stability limit (@p memory_rule_unstable), whose
+     * booked work is the energy it creates (EnergyBalance::data_growth(),
+     * doc/theory.md 11.13).
      */
     void
     check_energy_growth(const EnergyBalance &energy,
                         const double         t,
-                        const double         allowance,
+                        const bool           memory_rule_unstable,
                         const Parameters    &parameters,
                         MPI_Comm             comm,
                         RunTotals           &totals)
     {
-      if (!(energy.growth() > unstable_energy_growth * allowance))
+      const double growth =
+        memory_rule_unstable ? energy.data_growth() : energy.growth();
+      if (!(growth > unstable_energy_growth))
         return;
       const bool reported = totals.unstable_energy_growth > 0;
       totals.unstable_energy_growth =
-        std::max(totals.unstable_energy_growth, energy.growth());
+        std::max(totals.unstable_energy_growth, growth);
       if (reported)
         return;
       std::ostringstream message;
       message << std::setprecision(4)
               << "the stored energy E_n = " << energy.total_energy()
-              << " at t = " << t << " is " << energy.growth()
-              << " times the energy the data put into the body (initial "
-                 "energy and work of the loads, "
-              << energy.data_energy()
+              << " at t = " << t << " is " << growth
+              << " times the energy put into the body (initial energy and "
+                 "work of the loads"
+              << (memory_rule_unstable ? "" : ", and of the memory") << ", "
+              << (memory_rule_unstable ? energy.data_energy() :
+                                         energy.supplied_energy())
               << "): the time scheme is unstable (doc/theory.md, "
                  "sections 8 and 11.13); reduce the time step.";
       if (!parameters.time.allow_unstable_time_step)
@@ -344,7 +351,7 @@ namespace hemicontact
                       advance();
             check_energy_growth(energy,
                                 step_number * time_step,
-                                memory_energy_allowance,
+                                memory_rule_unstable,
                                 parameters,
                                 mpi_communicator,
                                 totals);

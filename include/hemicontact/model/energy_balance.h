@@ -89,12 +89,18 @@ namespace hemicontact
       return std::abs(defect()) / std::max(supplied_energy(), 1e-300);
     }
 
+    /** E_n relative to the energy supplied (about 1 or below when stable). */
+    double
+    growth() const
+    {
+      return total_energy() / std::max(supplied_energy(), 1e-300);
+    }
+
     /**
      * The energy the data put into the body: |E_0| + |sum k <f_n, w_n>| +
-     * |transfer changes|, without the memory's work. The memory is a part
-     * of the model: a stable rule keeps E_n within a multiple of this
-     * (doc/theory.md 11.13), an unstable one does not, however much
-     * work it books.
+     * |transfer changes|, without the memory's work, which an unstable
+     * memory rule inflates with the energy it creates (doc/theory.md
+     * 11.13).
      */
     double
     data_energy() const
@@ -103,10 +109,9 @@ namespace hemicontact
              std::abs(transfer_change);
     }
 
-    /** E_n relative to the energy the data put in (about 1 or below when
-     *  stable). */
+    /** E_n relative to data_energy(). */
     double
-    growth() const
+    data_growth() const
     {
       return total_energy() / std::max(data_energy(), 1e-300);
     }

@@ -506,12 +506,11 @@ namespace hemicontact
     /** The memory term of the stress: its history and its step functional. */
     MemoryHistory<dim> memory;
     /**
-     * How much more energy than the data put in a stable run may store
-     * with the stress's kernel: the square of the largest ratio of B's
-     * modulus to the long-term modulus (infinite when the model itself
-     * grows; 1 without memory). Set by check_memory_stability().
+     * Whether the time step is above the memory rule's stability limit
+     * (allowed by 'time/allow unstable time step'); set by
+     * check_memory_stability().
      */
-    double memory_energy_allowance = 1;
+    bool memory_rule_unstable = false;
 
     Discretization<dim> discretization;
     DoFHandler<dim>     dof_handler;
