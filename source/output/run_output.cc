@@ -6,6 +6,7 @@
 #include <hemicontact/laws/friction_law.h>
 #include <hemicontact/output/output_file.h>
 #include <hemicontact/output/run_output.h>
+#include <hemicontact/output/step_columns.h>
 #include <hemicontact/problem/contact_problem.h>
 
 #include <algorithm>
@@ -161,19 +162,7 @@ namespace hemicontact
     throw_if_any(io_error, mpi_communicator);
 
     if (steps_file.is_open() && write_header)
-      steps_file
-        << "step,time,n_cells,n_dofs,newton_iterations,linear_iterations,"
-           "n_separating,n_normal_stick,n_damped,n_stick,n_slip,residual,"
-           "kinetic_energy,elastic_energy,viscous_dissipation,"
-           "friction_dissipation,normal_damping_dissipation,external_work,"
-           "numerical_dissipation,energy_defect,relative_energy_defect,"
-           "line_search_reductions,wall_seconds,adapted,"
-           "kinetic_before_adaptation,elastic_before_adaptation,"
-           "kinetic_after_adaptation,elastic_after_adaptation,"
-           "energy_transfer_change,time_step_halvings,minimised_energy,"
-           "bound_iterations,n_at_breakpoint,n_at_wall,memory_work,"
-           "error_estimate,estimate_interior,estimate_jumps,"
-           "estimate_neumann,estimate_contact,estimate_time\n";
+      steps_file << step_columns_header();
     // probes.csv (the points are checked above)
     if (!probe_points.empty() &&
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
@@ -359,39 +348,11 @@ namespace hemicontact
     std::string error;
     if (steps_file.is_open())
       {
-        const EnergyBalance &e = problem.state().energy;
-        std::ostringstream   row;
-        row << std::setprecision(12) << s.step << "," << s.time << ","
-            << s.n_cells << "," << s.n_dofs << "," << s.newton_iterations << ","
-            << s.linear_iterations << "," << s.n_separating << ","
-            << s.n_normal_stick << "," << s.n_damped << "," << s.n_stick << ","
-            << s.n_slip << "," << s.residual << "," << e.kinetic << ","
-            << e.elastic << "," << e.viscous_dissipation << ","
-            << e.friction_dissipation << "," << e.damping_dissipation << ","
-            << e.external_work << "," << e.numerical_dissipation << ","
-            << e.defect() << "," << e.relative_defect() << ","
-            << s.line_search_reductions << "," << s.wall_seconds << ","
-            << (s.adapted ? 1 : 0) << "," << s.kinetic_before_adaptation << ","
-            << s.elastic_before_adaptation << "," << s.kinetic_after_adaptation
-            << "," << s.elastic_after_adaptation << "," << e.transfer_change
-            << "," << s.time_step_halvings << "," << e.minimised_energy << ","
-            << s.bound_iterations << "," << s.n_at_breakpoint << ","
-            << s.n_at_wall << "," << e.memory_work;
-        // the estimate's columns are empty where none was evaluated
-        if (s.estimated)
-          row << "," << s.estimate << "," << s.estimate_interior << ","
-              << s.estimate_jumps << "," << s.estimate_neumann << ","
-              << s.estimate_contact;
-        else
-          row << ",,,,,";
-        // the time indicator: velocity classes only
-        row << ",";
-        if (s.time_estimated)
-          row << s.estimate_time;
-        row << "\n";
+        const std::string row =
+          step_columns_row(s, problem.state().energy);
         error = append_complete(steps_file,
                                 parameters.output.directory + "/steps.csv",
-                                row.str());
+                                row);
         // the run has completed a step: an earlier run's files go
         if (error.empty() && earlier_output.pending())
           {
