@@ -6,11 +6,14 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages="libdeal.ii-dev numdiff openmpi-bin cmake make g++ perl jupyter-nbconvert python3-ipykernel python3-matplotlib python3-pandas python3-nbformat python3-meshio python3-h5py clang-format"
+# what building and running the program needs; the suite needs the rest
+build_packages="libdeal.ii-dev openmpi-bin cmake make g++"
+test_packages="numdiff perl jupyter-nbconvert python3-ipykernel python3-matplotlib python3-pandas python3-nbformat python3-meshio python3-h5py clang-format"
 
+# install_missing PACKAGES...: install those not installed yet
 install_missing() {
   local missing=""
-  for p in $packages; do
+  for p in "$@"; do
     dpkg -s "$p" > /dev/null 2>&1 || missing="$missing $p"
   done
   if [ -n "$missing" ]; then
@@ -22,9 +25,11 @@ install_missing() {
   fi
 }
 
+# build [TARGET]: everything, or only TARGET (the example needs only the
+# program, not the tutorial steps)
 build() {
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > /dev/null
-  cmake --build build -j2
+  cmake --build build -j2 ${1:+--target "$1"}
 }
 
 # OpenMPI refuses to run as root unless told otherwise (CI runs as root)
@@ -32,13 +37,13 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
 case "${1:-}" in
   example)
-    install_missing
-    build
+    install_missing $build_packages
+    build hemicontact
     ./build/hemicontact prm/block_2d.prm
     echo "output written to $(pwd)/output-block-2d (open solution.pvd in ParaView)"
     ;;
   test)
-    install_missing
+    install_missing $build_packages $test_packages
     build
     cd build
     ctest -j2 --output-on-failure < /dev/null
