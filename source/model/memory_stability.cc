@@ -88,9 +88,8 @@ namespace hemicontact
         // u_n (left point: the state's u), u_n = u_{n-1} + k w_n (implicit)
         const double q = decay(k, mode.relaxation_times[l]);
         for (unsigned int j = 0; j < n; ++j)
-          t(2 + l, j) =
-            q * ((j == 2 + l ? 1. : 0.) + k * (implicit ? t(1, j) :
-                                                          (j == 1 ? 1. : 0.)));
+          t(2 + l, j) = q * ((j == 2 + l ? 1. : 0.) +
+                             k * (implicit ? t(1, j) : (j == 1 ? 1. : 0.)));
       }
     return spectral_radius(t);
   }
@@ -113,7 +112,7 @@ namespace hemicontact
       }
     while (unstable - low > 1e-3 * low)
       {
-        const double middle = (low + unstable) / 2;
+        const double middle               = (low + unstable) / 2;
         (stable(middle) ? low : unstable) = middle;
       }
     return low;

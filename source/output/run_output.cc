@@ -348,9 +348,8 @@ namespace hemicontact
     std::string error;
     if (steps_file.is_open())
       {
-        const std::string row =
-          step_columns_row(s, problem.state().energy);
-        error = append_complete(steps_file,
+        const std::string row = step_columns_row(s, problem.state().energy);
+        error                 = append_complete(steps_file,
                                 parameters.output.directory + "/steps.csv",
                                 row);
         // the run has completed a step: an earlier run's files go
@@ -460,7 +459,8 @@ namespace hemicontact
     if (partial_estimate)
       pcout << "error estimate of steps " << totals.first_estimated_step
             << " to " << s.step_number << " only, not of the whole run of "
-            << s.n_steps << " steps (the run resumed from the checkpoint of step "
+            << s.n_steps
+            << " steps (the run resumed from the checkpoint of step "
             << totals.first_estimated_step - 1
             << "; the sums leave out the steps before it): ";
     if (totals.estimated_steps > 0)

@@ -15,24 +15,24 @@ namespace hemicontact
   step_columns()
   {
     // a column per line: name, then what it writes
-#define HC_COLUMN(name, expression)                                        \
-  StepColumn                                                               \
-  {                                                                        \
-    name, [](std::ostream &out, const S &s, const E &e) {                  \
-      (void)s;                                                             \
-      (void)e;                                                             \
-      out << expression;                                                   \
-    }                                                                      \
+#define HC_COLUMN(name, expression)                       \
+  StepColumn                                              \
+  {                                                       \
+    name, [](std::ostream &out, const S &s, const E &e) { \
+      (void)s;                                            \
+      (void)e;                                            \
+      out << expression;                                  \
+    }                                                     \
   }
     // the estimate's columns are empty where none was evaluated, the time
     // indicator's also in the static class
-#define HC_ESTIMATE(name, member)                                          \
-  StepColumn                                                               \
-  {                                                                        \
-    name, [](std::ostream &out, const S &s, const E &) {                   \
-      if (s.estimated)                                                     \
-        out << s.member;                                                   \
-    }                                                                      \
+#define HC_ESTIMATE(name, member)                        \
+  StepColumn                                             \
+  {                                                      \
+    name, [](std::ostream &out, const S &s, const E &) { \
+      if (s.estimated)                                   \
+        out << s.member;                                 \
+    }                                                    \
   }
     static const std::vector<StepColumn> columns{
       HC_COLUMN("step", s.step),
@@ -75,8 +75,7 @@ namespace hemicontact
       HC_ESTIMATE("estimate_jumps", estimate_jumps),
       HC_ESTIMATE("estimate_neumann", estimate_neumann),
       HC_ESTIMATE("estimate_contact", estimate_contact),
-      StepColumn{"estimate_time",
-                 [](std::ostream &out, const S &s, const E &) {
+      StepColumn{"estimate_time", [](std::ostream &out, const S &s, const E &) {
                    if (s.time_estimated)
                      out << s.estimate_time;
                  }}};

@@ -125,8 +125,10 @@ namespace hemicontact
           n_cells, max_cells, refine_fraction, coarsen_fraction);
     else if (n_cells >= max_cells)
       refine_fraction = 0;
-    MarkingThresholds thresholds =
-      marking_thresholds(all, settings.strategy, refine_fraction, coarsen_fraction);
+    MarkingThresholds thresholds = marking_thresholds(all,
+                                                      settings.strategy,
+                                                      refine_fraction,
+                                                      coarsen_fraction);
     // fixed fraction under a cell budget: refine at most the cells that
     // keep the count within it (each refined cell adds 2^dim - 1), the
     // largest indicators first
@@ -135,7 +137,8 @@ namespace hemicontact
       {
         const types::global_cell_index room =
           n_cells < max_cells ?
-            (max_cells - n_cells) / (GeometryInfo<dim>::max_children_per_cell - 1) :
+            (max_cells - n_cells) /
+              (GeometryInfo<dim>::max_children_per_cell - 1) :
             0;
         const auto n_marked = static_cast<types::global_cell_index>(
           std::count_if(all.begin(), all.end(), [&](const float indicator) {
@@ -243,8 +246,8 @@ namespace hemicontact
             << (memory.contact_memory().wear_active() ?
                   "(g + the wear depth) " :
                   "")
-            << "at " << n_moved << " contact nodes (by up to "
-            << largest_move << "); moved back onto it" << std::endl;
+            << "at " << n_moved << " contact nodes (by up to " << largest_move
+            << "); moved back onto it" << std::endl;
     old_velocity = velocity;
 
     std::tie(stats.kinetic_after_adaptation, stats.elastic_after_adaptation) =

@@ -68,7 +68,7 @@ namespace hemicontact
     const double g = law->penetration_limit();
     if (!std::isfinite(g) || scheme.is_static())
       return {0, 0.};
-    const double offset  = scheme.held_displacement_offset(time_step);
+    const double offset = scheme.held_displacement_offset(time_step);
     // the worn wall, g + omega (owned nodes only: the owned entries do)
     const TrilinosWrappers::MPI::Vector *wear =
       memory.contact_memory().wear_active() ? &memory.contact_memory().wear() :

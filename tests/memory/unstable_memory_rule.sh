@@ -11,7 +11,12 @@
 # 90 % the run must go on, and its stored energy decay (alternating
 # near the limit: each value below the one two steps before); with 'allow
 # unstable time step' the refused run goes on with a warning and the
-# summary line names the growth of the stored energy.
+# summary line names the growth of the stored energy. The normal memory
+# b(t) = b e^{-t} on the cantilever pressed into a foundation without a
+# law (no wall, no slope) is refused at b = 1e4 and k = 0.05, with a limit
+# that its own growth factor confirms (the static recursion's growth
+# q |1 - k b/s| gives the contact mode's stiffness s, and k b/s = 1 +
+# e^{k/tau} the limit), and runs at b = 1.
 set -euo pipefail
 exe=$1; work=$2; prm=$3
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
@@ -80,3 +85,28 @@ if name == "a" and "an unstable run" not in log:
     sys.exit("FAIL (a): the allowed run's summary does not name the energy's growth")
 PY
 done
+normal() { printf '  set kernel = none\nend\nsubsection normal memory\n  set kernel = prony\n  set amplitudes = %s\n  set relaxation times = 1' "$1"; }
+run normal_refused 0.05 "$(normal 1e4)"
+run normal_runs 0.05 "$(normal 1)"
+/usr/bin/python3 - <<'PY'
+import math, re, sys
+log = open("normal_refused.log").read()
+m = re.search(r"memory rule for 'normal memory', k <= ([0-9.e+-]+).*?grows by a factor "
+              r"([0-9.e+-]+) per step", log, re.S)
+if int(open("normal_refused.rc").read()) != 2 or m is None:
+    sys.exit("FAIL: the normal memory's unstable step is not refused:\n" + log)
+limit, growth = float(m.group(1)), float(m.group(2))
+k, b, tau = 0.05, 1e4, 1.0
+q = math.exp(-k / tau)
+s = k * b / (1 + growth / q)            # from growth = q (k b/s - 1)
+lo, hi = 0.0, k
+for _ in range(200):
+    mid = (lo + hi) / 2
+    lo, hi = (mid, hi) if mid * b / s <= 1 + math.exp(mid / tau) else (lo, mid)
+print(f"normal memory b = {b:g}, k = {k}: limit {limit:.4g}, growth {growth:.4g}; "
+      f"the recursion with the stiffness s = {s:.4g} its growth gives: limit {lo:.4g}")
+if abs(limit - lo) > 2e-3 * lo:
+    sys.exit("FAIL: the normal memory's limit and growth disagree")
+if int(open("normal_runs.rc").read()) != 0:
+    sys.exit("FAIL: b = 1 refused:\n" + open("normal_runs.log").read())
+PY

@@ -27,9 +27,9 @@ namespace hemicontact
     unsigned int linear_iterations = 0;
     double       step_wall_seconds = 0; ///< advance() only, no output
     /** @name The error estimates of the steps ('output/error estimate') */
-    unsigned int estimated_steps       = 0;
+    unsigned int estimated_steps = 0;
     /** The first step with an estimate (0: none), e.g. after a resume. */
-    unsigned int first_estimated_step = 0;
+    unsigned int first_estimated_step  = 0;
     double       estimate_k_sum        = 0; ///< sum_n k_n eta_n^2
     double       largest_estimate      = 0; ///< max_n eta_n
     unsigned int largest_estimate_step = 0;

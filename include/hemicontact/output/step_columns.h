@@ -17,7 +17,9 @@ namespace hemicontact
   struct StepColumn
   {
     std::string name;
-    void (*write)(std::ostream &, const StepStatistics &, const EnergyBalance &);
+    void (*write)(std::ostream &,
+                  const StepStatistics &,
+                  const EnergyBalance &);
   };
 
   /** The columns of steps.csv, in their order: the one list of them. */
