@@ -37,11 +37,14 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -1107,53 +1110,161 @@ namespace Step1
   }
 } // namespace Step1
 
+// @sect3{The command line}
+
+// A student runs the program with no arguments, or with one of the modes
+// below. Every argument is checked before anything is computed, and a bad
+// one stops the program with a one-paragraph message and the exit code 2
+// (1 is kept for a run that fails, e.g. a Newton iteration that does not
+// converge). The reason is practical: std::stoi() would accept "3x" as 3,
+// and a negative number read into an unsigned int becomes 4294967295
+// levels, a run that never ends.
+namespace CommandLine
+{
+  constexpr int exit_bad_arguments = 2;
+
+  // Each level of the convergence study halves h: four times the unknowns
+  // of the level before and, with the direct solver UMFPACK, about four
+  // times the memory and more than four times the time. Seven levels end
+  // at $h = 1/256$ with 132,098 unknowns: measured, 96 s and 0.63 GB on
+  // one core (doc/results.md, "Running it"). An eighth level would need
+  // about 2.5 GB and ten minutes, a ninth ten gigabytes: the program
+  // refuses them rather than let a typo exhaust the machine.
+  constexpr unsigned int max_levels = 7;
+
+  const char *const usage =
+    "usage: step-1                        the block, then 5 levels of the\n"
+    "                                     manufactured solution\n"
+    "       step-1 block                  the block only\n"
+    "       step-1 convergence [LEVELS]   LEVELS levels (1 to 7, default 5)\n"
+    "                                     of the manufactured solution\n"
+    "       step-1 --help                 this text\n"
+    "exit codes: 0 done, 1 the computation failed, 2 a bad argument";
+
+  // The error of a bad command line: its message names the argument.
+  struct BadArguments : public std::runtime_error
+  {
+    using std::runtime_error::runtime_error;
+  };
+
+  // A number of levels: decimal digits only (no sign, no blanks, nothing
+  // after the number), from 1 to max_levels. Reading the digits ourselves
+  // rejects "-1", "+2", "abc", "3x" and " 3" alike; at most three digits
+  // keep the conversion far from overflow.
+  unsigned int
+  parse_levels(const std::string &text)
+  {
+    const bool digits_only =
+      !text.empty() && text.size() <= 3 &&
+      std::all_of(text.begin(), text.end(), [](const char c) {
+        return c >= '0' && c <= '9';
+      });
+    const unsigned int levels = digits_only ? std::stoul(text) : 0;
+    if (!digits_only || levels < 1 || levels > max_levels)
+      throw BadArguments("the number of levels must be a whole number "
+                         "from 1 to " +
+                         std::to_string(max_levels) + ", not '" + text +
+                         "' (level 7 has 132,098 unknowns and takes 0.63 GB; "
+                         "each further level four times more)");
+    return levels;
+  }
+} // namespace CommandLine
+
 // @sect3{The main function}
 
 // First the block at four load values $t = 0.25, 0.5, 0.75, 1$, each one
 // static problem started from the previous solution; then the
 // manufactured solution on the meshes $h = 1/4, \dots, 1/64$, with the
-// errors and their observed orders in a ConvergenceTable.
+// errors and their observed orders in a ConvergenceTable. The modes
+// "block" and "convergence LEVELS" run one of the two.
 int
-main()
+main(int argc, char **argv)
 {
+  using namespace Step1;
+  bool         run_block = true, run_convergence = true;
+  unsigned int n_levels = 5;
   try
     {
-      using namespace Step1;
+      const std::vector<std::string> arguments(argv + 1, argv + argc);
+      const std::string mode = arguments.empty() ? "" : arguments[0];
+      const bool        help = mode == "--help" || mode == "-h";
+      if (help)
+        run_block = run_convergence = false;
+      else if (mode == "block")
+        run_convergence = false;
+      else if (mode == "convergence")
+        run_block = false;
+      else if (!arguments.empty())
+        throw CommandLine::BadArguments("unknown mode '" + mode +
+                                        "' (the modes are block and "
+                                        "convergence)");
+      // how many arguments the mode takes, itself included
+      const std::size_t n_allowed = mode.empty()              ? 0 :
+                                    (help || mode == "block") ? 1 :
+                                                                2;
+      if (arguments.size() > n_allowed)
+        throw CommandLine::BadArguments("too many arguments: '" +
+                                        arguments[n_allowed] + "' after '" +
+                                        arguments[n_allowed - 1] + "'");
+      if (help)
+        {
+          std::cout << CommandLine::usage << std::endl;
+          return 0;
+        }
+      if (mode == "convergence" && arguments.size() == 2)
+        n_levels = CommandLine::parse_levels(arguments[1]);
+    }
+  catch (const CommandLine::BadArguments &error)
+    {
+      std::cerr << "step-1: " << error.what() << ".\n"
+                << CommandLine::usage << std::endl;
+      return CommandLine::exit_bad_arguments;
+    }
 
-      std::cout << "The block, 3 global refinements:" << std::endl;
-      const BlockData         block;
-      StaticContactProblem<2> block_problem(block, 3);
-      std::cout << "  " << block_problem.n_dofs()
-                << " dofs, alpha_nu = " << block.law.alpha << std::endl;
-      for (unsigned int n = 1; n <= 4; ++n)
+  try
+    {
+      if (run_block)
         {
-          block_problem.run(0.25 * n);
-          std::cout << "  ";
-          block_problem.output_results(n);
+          std::cout << "The block, 3 global refinements:" << std::endl;
+          const BlockData         block;
+          StaticContactProblem<2> block_problem(block, 3);
+          std::cout << "  " << block_problem.n_dofs()
+                    << " dofs, alpha_nu = " << block.law.alpha << std::endl;
+          for (unsigned int n = 1; n <= 4; ++n)
+            {
+              block_problem.run(0.25 * n);
+              std::cout << "  ";
+              block_problem.output_results(n);
+            }
         }
 
-      std::cout << "\nThe manufactured solution:" << std::endl;
-      const ManufacturedData manufactured;
-      ConvergenceTable       table;
-      for (unsigned int refinements = 2; refinements <= 6; ++refinements)
+      if (run_convergence)
         {
-          StaticContactProblem<2> problem(manufactured, refinements);
-          problem.run(1);
-          const auto [E_H, E_V] = problem.compute_errors(manufactured);
-          table.add_value("1/h", 1u << refinements);
-          table.add_value("dofs", problem.n_dofs());
-          table.add_value("Newton", problem.newton_iterations);
-          table.add_value("E_H", E_H);
-          table.add_value("E_V", E_V);
+          std::cout << (run_block ? "\n" : "")
+                    << "The manufactured solution:" << std::endl;
+          const ManufacturedData manufactured;
+          ConvergenceTable       table;
+          for (unsigned int refinements = 2; refinements < 2 + n_levels;
+               ++refinements)
+            {
+              StaticContactProblem<2> problem(manufactured, refinements);
+              problem.run(1);
+              const auto [E_H, E_V] = problem.compute_errors(manufactured);
+              table.add_value("1/h", 1u << refinements);
+              table.add_value("dofs", problem.n_dofs());
+              table.add_value("Newton", problem.newton_iterations);
+              table.add_value("E_H", E_H);
+              table.add_value("E_V", E_V);
+            }
+          for (const std::string column : {"E_H", "E_V"})
+            {
+              table.set_scientific(column, true);
+              table.set_precision(column, 3);
+              table.evaluate_convergence_rates(
+                column, ConvergenceTable::reduction_rate_log2);
+            }
+          table.write_text(std::cout);
         }
-      for (const std::string column : {"E_H", "E_V"})
-        {
-          table.set_scientific(column, true);
-          table.set_precision(column, 3);
-          table.evaluate_convergence_rates(
-            column, ConvergenceTable::reduction_rate_log2);
-        }
-      table.write_text(std::cout);
     }
   catch (std::exception &exc)
     {
