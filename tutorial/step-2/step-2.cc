@@ -2,9 +2,12 @@
  *
  * hemicontact tutorial, step-2: the paper's step.
  *
- * Problem 4.4 of W. Han and W. Han, J. Comput. Appl. Math. 2019: a
- * Kelvin-Voigt body in dynamic contact with a foundation, a nonmonotone
- * (exponential) normal damped response and Tresca friction on Gamma_3,
+ * Problem 4.4 of D. Han and W. Han, "Numerical analysis of an
+ * evolutionary variational-hemivariational inequality with application to
+ * a dynamic contact problem", Journal of Computational and Applied
+ * Mathematics, 2019: a Kelvin-Voigt body in dynamic contact with a
+ * foundation, a nonmonotone (exponential) normal damped response and
+ * Tresca friction on Gamma_3,
  * backward Euler in the velocity w and the left-point rule for the
  * displacement u, linear elements, nodal quadrature on Gamma_3. Each time
  * step is the minimisation of a nonsmooth step energy, solved by a
