@@ -945,7 +945,8 @@ namespace Step1
   // branches, stop when no branch changed and the nonsmooth residual is
   // below the tolerance (relative to $|F_n|$), else solve the Newton
   // system on the current branches with a direct solver and take the
-  // step, halved while it does not decrease $J$.
+  // step, halved until it does not raise $J$ (the full step if no length
+  // lowers it; the rule is explained where it is coded).
   template <int dim>
   void
   StaticContactProblem<dim>::solve()
@@ -972,11 +973,24 @@ namespace Step1
         direct_solver.solve(trial);
         newton_constraints.distribute(trial);
 
-        // backtracking on J: the full step unless it raises the energy
+        // The line search on $J$, the same rule as in step-2: try $\theta
+        // = 1, \frac12, \frac14, \dots, 2^{-10}$ and take the first step
+        // $u + \theta d$ that does not raise $J$ beyond round-off (a
+        // relative $10^{-12}$, since $J$ is a sum of terms of either sign
+        // and its last digits are noise). A full Newton step can raise $J$
+        // because $j_\nu$ is not convex: the quadratic model of one branch
+        // is wrong beyond that branch's segment of the law. If no step
+        // length lowers $J$ (the direction is not one of descent, which
+        // happens only while the branches are still wrong), the full step
+        // is taken: a tiny step would leave the branches as they are and
+        // stall the iteration, while the full step moves to the branches
+        // the next update_active_set() corrects. The default run (the block
+        // and five levels) never reaches that fallback.
         Vector<double> direction(trial);
         direction -= solution;
-        const double J0 = energy(solution);
-        for (double theta = 1; theta >= 1. / 1024; theta /= 2)
+        const double J0    = energy(solution);
+        double       theta = 1;
+        for (; theta >= 1. / 1024; theta /= 2)
           {
             trial = solution;
             trial.add(theta, direction);
@@ -984,7 +998,9 @@ namespace Step1
             if (J <= J0 + 1e-12 * (std::abs(J0) + std::abs(J)))
               break;
           }
-        solution = trial;
+        if (theta < 1. / 1024)
+          theta = 1;
+        solution.add(theta, direction);
         ++newton_iterations;
       }
   }

@@ -923,8 +923,9 @@ namespace Step2
   // branches from the complementarity functions, stop when no branch
   // changed and the nonsmooth residual is below the tolerance (or far
   // below it), else a Newton step on the branches, damped by halving
-  // theta until J_n decreases (the full step whenever it does not raise
-  // J_n beyond round-off). Returns the number of Newton steps.
+  // theta from 1 to 2^{-10} until it does not raise J_n beyond round-off
+  // (the full step if no length does: step-1's rule). Returns the number
+  // of Newton steps.
   template <int dim>
   unsigned int
   KelvinVoigtContact<dim>::solve()
@@ -963,15 +964,19 @@ namespace Step2
           return theta * slope + 0.5 * theta * theta * curvature +
                  nodal_energy(candidate) - nodal_0;
         };
+        // The rule of step-1: the first of theta = 1, 1/2, ..., 2^{-10}
+        // that does not raise J_n beyond round-off, and the full step if
+        // none does (the direction is then not one of descent, which
+        // happens only while the branches are still wrong; the full step
+        // moves to branches the next update_branches() corrects, where a
+        // tiny step would stall). The block and the first three levels of
+        // the manufactured solution never reach that fallback.
         double theta = 1;
-        if (change(1.) > 1e-12 * scale)
-          {
-            for (theta = 0.5; theta >= 1e-3; theta /= 2)
-              if (change(theta) < 0)
-                break;
-            if (theta < 1e-3) // no decrease found: the full step
-              theta = 1;
-          }
+        for (; theta >= 1. / 1024; theta /= 2)
+          if (change(theta) <= 1e-12 * scale)
+            break;
+        if (theta < 1. / 1024)
+          theta = 1;
         velocity.add(theta, direction);
         residual.add(theta, K_d); // K0 is linear
       }
