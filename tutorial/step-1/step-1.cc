@@ -43,6 +43,8 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -57,13 +59,38 @@ namespace Step1
   // The normal compliance: the response $\xi_\nu$ of the foundation to a
   // penetration $r = u_\nu > 0$ is a continuous piecewise-linear function
   // given by breakpoints $(r_k, \xi_k)$, $r_0 = 0$, linear in between and
-  // constant after the last one. Its value at zero is the jump $a$:
-  // $\partial j_\nu(0) = [0, a]$. We split it as in doc/theory.md section
-  // 1, $\partial j_\nu(r) = \partial(a r_+)(r) + p(r)$, into the convex jump
-  // and the Lipschitz remainder $p(r) = \xi(r) - a$ for $r > 0$, $p = 0$
-  // for $r \le 0$. A law that rises and then falls is nonmonotone: $j_\nu$
-  // is not convex, but $j_\nu + \alpha_\nu r^2/2$ is, with $\alpha_\nu$ the
-  // steepest descent slope of $\xi$.
+  // constant after the last one. For $r < 0$ the body has left the
+  // foundation and there is no force; at $r = 0$ the law jumps from $0$ to
+  // $\xi_0 = a$, and the Clarke subdifferential fills the jump with the
+  // whole interval: $\partial j_\nu(0) = [0, a]$ (the introduction,
+  // "Nonsmooth and nonconvex", draws it). We split the law into the convex
+  // jump and a Lipschitz remainder,
+  // @f[
+  //   \partial j_\nu(r) = \partial(a r_+)(r) + p(r),\qquad
+  //   p(r) = \xi(r) - a \ (r > 0),\quad p(r) = 0 \ (r \le 0),
+  // @f]
+  // because the two parts are treated differently: the jump becomes a
+  // complementarity condition with a projection onto $[0, a]$ (a set
+  // valued, convex piece), the remainder a smooth force that Newton's
+  // method linearises. A law that rises and then falls is nonmonotone:
+  // $j_\nu$ is not convex, but $j_\nu + \alpha_\nu r^2/2$ is, with
+  // $\alpha_\nu$ the steepest descent slope of $\xi$ (the relaxed
+  // monotonicity of the introduction).
+  //
+  // The rest of the program sees a law only through these seven members,
+  // which is all a new law has to supply (the exercise of the results
+  // page):
+  // - jump(): $a$, the height of the jump at $r = 0$;
+  // - response(r): $\xi(r)$ for $r > 0$;
+  // - remainder(r) and remainder_derivative(r): $p(r)$ and $p'(r)$;
+  // - potential(r): $j_\nu(r) = \int_0^r \xi$, for the energy of the line
+  //   search;
+  // - alpha: $\alpha_\nu$, for the uniqueness condition;
+  // - steepest_rise: the largest $p'$, for the floor of the constants $c_i$
+  //   (setup_contact_nodes()).
+  //
+  // breakpoints() only serves the output of the law for the figures
+  // (write_law()).
   class PiecewiseLinearLaw
   {
   public:
@@ -134,6 +161,12 @@ namespace Step1
 
     double alpha = 0, steepest_rise = 0;
 
+    const std::vector<std::pair<double, double>> &
+    breakpoints() const
+    {
+      return points;
+    }
+
   private:
     // The segment $[r_k, r_{k+1})$ that holds $r$ (the last $k$ beyond the
     // last breakpoint), and its slope.
@@ -155,6 +188,31 @@ namespace Step1
 
     std::vector<std::pair<double, double>> points;
   };
+
+  // The law as the program uses it, written to a CSV file (r, xi, j) for
+  // the figures of the documentation (doc/plot_law.py, doc/plot_contact.py),
+  // so that a changed law is drawn as it is: $\xi$ and $j_\nu$ from $r =
+  // -0.05$ to twice the last breakpoint, at every breakpoint and 400 points
+  // between, with two rows at $r = 0$ for the vertical segment $[0, a]$ of
+  // the subdifferential. The column is_breakpoint marks the $r_k$.
+  void
+  write_law(const PiecewiseLinearLaw &law, const std::string &filename)
+  {
+    std::ofstream file(filename);
+    AssertThrow(file, ExcIO());
+    file << "r,xi,potential,is_breakpoint\n" << std::setprecision(10);
+    const double end = 2 * law.breakpoints().back().first;
+    file << -0.05 << ",0,0,0\n"
+         << "0,0,0,0\n";
+    std::map<double, bool> r_values; // r -> is a breakpoint
+    for (unsigned int k = 0; k <= 400; ++k)
+      r_values[end * k / 400.] = false;
+    for (const auto &point : law.breakpoints())
+      r_values[point.first] = true;
+    for (const auto &[r, is_breakpoint] : r_values)
+      file << r << ',' << (r > 0 ? law.response(r) : law.jump()) << ','
+           << law.potential(r) << ',' << is_breakpoint << '\n';
+  }
 
   // @sect3{The problem data}
 
@@ -270,11 +328,13 @@ namespace Step1
   // $u$ is $C^2$, so $f_0 = -\mathrm{Div}\,\sigma(u)$ is continuous.
   // It solves the problem with $f_2 = \sigma\nu$ and, on $\Gamma_3$,
   // $f_3 = \sigma\nu + \xi_\nu\nu + \xi_\tau$ with $\xi_\nu \in \partial
-  // j_\nu(u_\nu)$, $\xi_\tau \in \partial\varphi(u_\tau)$
-  // (doc/theory.md section 9.7): $\xi_\nu = a/2$ and $\xi_\tau = F_b/2$
-  // where the exact solution holds at zero (strictly inside the
-  // intervals). The points $\frac14, \frac12, \frac34$ where $f_3$ jumps
-  // are mesh vertices.
+  // j_\nu(u_\nu)$, $\xi_\tau \in \partial(F_b|\cdot|)(u_\tau)$: the
+  // extra traction $f_3$ is exactly what the laws would have to supply
+  // for $u$ to be in equilibrium. Where the exact solution holds at zero
+  // we take $\xi_\nu = a/2$ and $\xi_\tau = F_b/2$, strictly inside the
+  // intervals, so that no node sits at the switch between two branches
+  // (where the discrete branches could flip with round-off). The points
+  // $\frac14, \frac12, \frac34$ where $f_3$ jumps are mesh vertices.
   class ManufacturedData : public ProblemData<2>
   {
   public:
@@ -426,6 +486,13 @@ namespace Step1
       return dof_handler.n_dofs();
     }
 
+    // The constant $\lambda_1$ of the smallness condition (the
+    // introduction, "Uniqueness"): $J_h$ is strictly convex, and the
+    // discrete problem has exactly one solution, when $\alpha_\nu <
+    // \lambda_1$.
+    double
+    smallness_constant() const;
+
     unsigned int newton_iterations = 0;
 
   private:
@@ -530,8 +597,10 @@ namespace Step1
     load.reinit(dof_handler.n_dofs());
     newton_rhs.reinit(dof_handler.n_dofs());
 
-    // $K = B$ does not depend on the load: assemble it once (the load is
-    // assembled again in run()).
+    // The contact nodes need the diagonal of $K$ (their constants $c_i$),
+    // so $K$ is assembled here, before any load value; run() assembles it
+    // again together with the load of its $t$ (one function computes both,
+    // and $K$ comes out the same).
     assemble_system(clamped_constraints, stiffness_matrix, load);
     setup_contact_nodes();
   }
@@ -543,8 +612,14 @@ namespace Step1
   // like a right-hand side. Nodes on $\Gamma_1$ are not contact nodes
   // (they do not move). The constant $c_i$ of the complementarity
   // functions is the mean diagonal entry of $K$ at the node over $m_i$,
-  // and at least twice the law's steepest rise (doc/theory.md 10.3): it
-  // changes the path of the iteration, never its solution.
+  // and at least twice the law's steepest rise. Why a floor: on a free
+  // segment the multiplier $s$ falls by $p'$ as $u_\nu$ grows, so $q =
+  // s + c\,u_\nu$ grows along the law only if $c > p'$; below that an
+  // iterate could be held on the wrong branch. The diagonal of $K$ makes
+  // $c_i u_\nu$ and $s$ forces of the same size, so that neither term of
+  // $q$ drowns the other. $c_i$ changes the path of the iteration, never
+  // its solution (the complementarity functions vanish at the same
+  // points for every $c > 0$).
   template <int dim>
   void
   StaticContactProblem<dim>::setup_contact_nodes()
@@ -705,7 +780,8 @@ namespace Step1
   //   \lambda = G_{i,\tau}/m_i
   // @f]
   // (Tresca friction has no remainder), and the complementarity functions
-  // (doc/theory.md section 3, with $u$ for $w$) are
+  // (the introduction shows why they vanish exactly where the laws hold)
+  // are
   // @f[
   //   C_\nu = s - P_{[0,a]}(s + c\,u_\nu),\qquad
   //   C_\tau = \lambda - P_{|\cdot|\le F_b}(\lambda + c\,u_\tau).
@@ -818,11 +894,15 @@ namespace Step1
   // derivative $L_i$, with $g_i = F_i + L_i u_i - f_i$:
   // - penetrating: $f_i = m_i (a + p(u_\nu))\nu$, $L_i = m_i p'(u_\nu)
   //   \nu\otimes\nu$ (negative on a falling segment of the law);
-  // - slip: $f_i = m_i F_b d$, $d = q_\tau/|q_\tau|$, and the
-  //   condensed tangent of the friction disk $L_i = m_i F_b c /(|q_\tau| -
-  //   F_b)\,(I - \nu\otimes\nu - d\otimes d)$, which vanishes in 2D (the
-  //   denominator is kept above $|q_\tau|/100$ for nodes that barely
-  //   slip).
+  // - slip: $f_i = m_i F_b d + T_i u_\tau$, $d = q_\tau/|q_\tau|$, and
+  //   $L_i = T_i$, the condensed tangent of the friction disk $T_i = m_i
+  //   F_b c /(|q_\tau| - F_b)\,(I - \nu\otimes\nu - d\otimes d)$, which
+  //   vanishes in 2D (the denominator is kept above $|q_\tau|/100$ for
+  //   nodes that barely slip). The term $T_i u_\tau$: the Newton step of
+  //   $C_\tau = 0$ gives the new multiplier $\lambda = F_b d + T_i x_i /
+  //   m_i$, whose part across $d$ grows with the new slip $x_i$. Written as
+  //   $f_i + L_i(x_i - u_i)$, like the other forces, it needs $f_i = m_i
+  //   F_b d + T_i u_i$, and $T_i u_i = T_i u_\tau$ since $T_i\nu = 0$.
   //
   // The held conditions are linear constraints between the components of
   // a node, solved for its component of largest $|\nu_c|$; deal.II's
@@ -1017,6 +1097,68 @@ namespace Step1
     solve();
   }
 
+  // @sect4{StaticContactProblem::smallness_constant}
+
+  // The uniqueness condition of the introduction asks that
+  // @f[
+  //   \lambda_1 = \min_{v \ne 0}
+  //     \frac{v\cdot K v}{\sum_i m_i (v_i\cdot\nu_i)^2} > \alpha_\nu,
+  // @f]
+  // the smallest eigenvalue of $K x = \lambda N x$ with the normal boundary
+  // mass $N = \sum_i m_i \nu_i\otimes\nu_i$ (nodal quadrature of
+  // $\int_{\Gamma_3} v_\nu^2$). $N$ is singular (it sees only the normal
+  // components on $\Gamma_3$), so we compute the largest eigenvalue
+  // $1/\lambda_1$ of $K^{-1}N$ instead, by the power iteration
+  // $x \leftarrow K^{-1} N x$: each step is one solve with the UMFPACK
+  // factorisation of $K$, computed once. The Rayleigh quotient
+  // $x\cdot Kx / x\cdot Nx$ of the iterate approaches $\lambda_1$ from
+  // above, with an error of the square of the iterate's; we stop when it
+  // changes by less than $10^{-12}$ relative. The start is the normal
+  // field on $\Gamma_3$, which the lowest mode resembles. The full program
+  // estimates the same number (by a preconditioned eigensolver) and warns
+  // when $\alpha_\nu$ is not below it. Nothing here changes the solution.
+  template <int dim>
+  double
+  StaticContactProblem<dim>::smallness_constant() const
+  {
+    const auto apply_N = [&](const Vector<double> &v, Vector<double> &Nv) {
+      Nv = 0;
+      for (const ContactNode<dim> &node : contact_nodes)
+        {
+          double v_nu = 0;
+          for (unsigned int c = 0; c < dim; ++c)
+            v_nu += v(node.dofs[c]) * node.normal[c];
+          for (unsigned int c = 0; c < dim; ++c)
+            Nv(node.dofs[c]) = node.mass * v_nu * node.normal[c];
+        }
+    };
+
+    SparseDirectUMFPACK K_inverse;
+    K_inverse.initialize(stiffness_matrix);
+    Vector<double> x(dof_handler.n_dofs()), Nx(x), Kx(x);
+    for (const ContactNode<dim> &node : contact_nodes)
+      for (unsigned int c = 0; c < dim; ++c)
+        x(node.dofs[c]) = node.normal[c];
+
+    double lambda = std::numeric_limits<double>::max();
+    for (unsigned int iteration = 0; iteration < 1000; ++iteration)
+      {
+        apply_N(x, Nx);
+        K_inverse.vmult(x, Nx);
+        x /= x.l2_norm();
+        stiffness_matrix.vmult(Kx, x);
+        apply_N(x, Nx);
+        const double quotient = (x * Kx) / (x * Nx);
+        if (std::abs(quotient - lambda) <= 1e-12 * quotient)
+          return quotient;
+        lambda = quotient;
+      }
+    AssertThrow(false,
+                ExcMessage("The power iteration for the smallness constant "
+                           "did not converge in 1000 steps."));
+    return lambda;
+  }
+
   // @sect4{StaticContactProblem::output_results}
 
   // Three files per load value: the displacement for ParaView
@@ -1091,7 +1233,9 @@ namespace Step1
   // @sect4{StaticContactProblem::compute_errors}
 
   // $E_H = \|u - u_h\|_{L^2}$ and $E_V = \|\varepsilon(u - u_h)\|_{L^2}$
-  // (doc/theory.md section 9.7), with a 4-point Gauss rule per direction.
+  // with a 4-point Gauss rule per direction: two points more than the
+  // assembly, since the exact solution is a cubic and the quadrature error
+  // must stay below the discretisation error on the finest mesh.
   template <int dim>
   template <class Exact>
   std::pair<double, double>
@@ -1244,8 +1388,16 @@ main(int argc, char **argv)
           std::cout << "The block, 3 global refinements:" << std::endl;
           const BlockData         block;
           StaticContactProblem<2> block_problem(block, 3);
+          write_law(block.law, "law.csv");
+          // The uniqueness condition, checked before solving.
+          const double lambda_1 = block_problem.smallness_constant();
           std::cout << "  " << block_problem.n_dofs()
-                    << " dofs, alpha_nu = " << block.law.alpha << std::endl;
+                    << " dofs, alpha_nu = " << block.law.alpha
+                    << ", lambda_1 = " << lambda_1
+                    << (block.law.alpha < lambda_1 ?
+                          " (alpha_nu < lambda_1: one solution)" :
+                          " (alpha_nu >= lambda_1: maybe several solutions)")
+                    << std::endl;
           for (unsigned int n = 1; n <= 4; ++n)
             {
               block_problem.run(0.25 * n);
@@ -1269,6 +1421,8 @@ main(int argc, char **argv)
               table.add_value("1/h", 1u << refinements);
               table.add_value("dofs", problem.n_dofs());
               table.add_value("Newton", problem.newton_iterations);
+              table.add_value("lambda_1", problem.smallness_constant());
+              table.set_precision("lambda_1", 1);
               table.add_value("E_H", E_H);
               table.add_value("E_V", E_V);
             }
