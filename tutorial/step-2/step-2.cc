@@ -7,12 +7,12 @@
  * a dynamic contact problem", Journal of Computational and Applied
  * Mathematics, 2019: a Kelvin-Voigt body in dynamic contact with a
  * foundation, a nonmonotone (exponential) normal damped response and
- * Tresca friction on Gamma_3,
- * backward Euler in the velocity w and the left-point rule for the
- * displacement u, linear elements, nodal quadrature on Gamma_3. Each time
- * step is the minimisation of a nonsmooth step energy, solved by a
- * primal-dual active set (semismooth Newton) method. A manufactured
- * solution measures E_H and E_V against k and h.
+ * Tresca friction on $\Gamma_3$, backward Euler in the velocity $w$ and
+ * the left-point rule for the displacement $u$, linear elements, nodal
+ * quadrature on $\Gamma_3$. Each time step is the minimisation of a
+ * nonsmooth step energy, solved by a primal-dual active set (semismooth
+ * Newton) method, as step-1 solves its static problem. A manufactured
+ * solution measures $E_H$, $E_V$ and $E_u$ against $k$ and $h$.
  *
  * The introduction (doc/intro.md) states the model, the scheme and the
  * algorithm; the results (doc/results.md) show what this program prints.
@@ -65,8 +65,17 @@ namespace Step2
 
   // @sect3{The material}
   //
-  // Kelvin-Voigt: sigma = A eps(w) + B eps(u), with isotropic A (the
-  // viscosity) and B (the elasticity), each given by Lame constants.
+  // A Kelvin-Voigt material adds a viscous stress to the elastic one,
+  // @f[
+  //   \sigma = A\varepsilon(w) + B\varepsilon(u),\qquad w = \dot u,
+  // @f]
+  // with the viscosity $A$ and the elasticity $B$ both isotropic, each given
+  // by a pair of Lam\'e constants: $C\varepsilon = 2\mu\varepsilon +
+  // \lambda\,\mathrm{tr}(\varepsilon) I$. The viscous term is what makes the
+  // velocity the natural unknown of a time step: $A$ enters the step matrix
+  // $K_0$, while the elastic term, evaluated at the displacement $u_n$ that
+  // is already known, moves to the right-hand side. step-1 had $B$ alone
+  // (its ProblemData::stress()).
   struct LamePair
   {
     double mu;
@@ -79,8 +88,10 @@ namespace Step2
       return 2 * mu * eps + lambda * trace(eps) * unit_symmetric_tensor<dim>();
     }
 
-    // Div (C eps(v)) = mu Laplace(v) + (mu + lambda) grad div v, from the
-    // Hessians hessian[c][i][j] = d_i d_j v_c.
+    // $\mathrm{Div}(C\varepsilon(v)) = \mu\Delta v + (\mu + \lambda)\nabla\,
+    // \mathrm{div}\,v$, from the Hessians hessian[c][i][j] $= \partial_i
+    // \partial_j v_c$. Only the manufactured solution needs it, for its body
+    // force $f_0 = \rho\dot w - \mathrm{Div}\,\sigma$.
     template <int dim>
     Tensor<1, dim>
     stress_divergence(const Tensor<3, dim> &hessian) const
@@ -96,18 +107,32 @@ namespace Step2
   struct Material
   {
     double   density;
-    LamePair viscosity;  // A
-    LamePair elasticity; // B
+    LamePair viscosity;  // $A$
+    LamePair elasticity; // $B$
   };
 
   // @sect3{The contact laws}
   //
-  // The normal damped response -sigma_nu in dj_nu(w_nu) with the
-  // exponential law: dj_nu(r) = 0 for r < 0, [0, a] at r = 0 and
-  // (a - b) exp(-beta r) + b for r > 0. It is split into the convex jump
-  // d(a r_+) and the Lipschitz remainder p(r) = (a - b)(exp(-beta r) - 1)
-  // for r > 0 (zero for r <= 0), whose primitive is P. The potential is
-  // j_nu(r) = a r_+ + P(r).
+  // The normal damped response $-\sigma_\nu \in \partial j_\nu(w_\nu)$ of the
+  // paper, with its exponential law
+  // @f[
+  //   \partial j_\nu(r) = 0 \ (r < 0),\qquad [0, a] \ (r = 0),\qquad
+  //   (a - b) e^{-\beta r} + b \ (r > 0).
+  // @f]
+  // The response falls from $a$ to $b$ as the penetration rate grows, so
+  // $j_\nu$ is not convex; its relaxed monotonicity constant is the steepest
+  // descent slope, $\alpha_\nu = \beta(a - b)$ at $r = 0^+$ (step-1's
+  // introduction defines both). As in step-1 the law is split into the convex
+  // jump $\partial(a r_+)$, which becomes a complementarity condition, and the
+  // Lipschitz remainder
+  // @f[
+  //   p(r) = (a - b)(e^{-\beta r} - 1) \ (r > 0),\qquad p(r) = 0 \ (r \le 0),
+  // @f]
+  // a force that Newton's method linearises; with its primitive $P$ the
+  // potential is $j_\nu(r) = a r_+ + P(r)$. The members play the roles of
+  // step-1's: the remainder and its derivative for the Newton step, the
+  // potential for the line search, the response for the manufactured data
+  // (the jump is the field $a$).
   struct ExponentialLaw
   {
     double a, b, beta;
@@ -122,6 +147,11 @@ namespace Step2
     {
       return r > 0 ? -beta * (a - b) * std::exp(-beta * r) : 0.;
     }
+    // $j_\nu(r) = a r + P(r)$, $P(r) = (a - b)\bigl((1 - e^{-\beta r})/\beta
+    // - r\bigr)$ for $r > 0$. std::expm1 computes $e^{-\beta r} - 1$
+    // without the cancellation of $1 - e^{-\beta r}$ for small $\beta r$,
+    // where the line search compares energies that differ in their last
+    // digits.
     double
     potential(const double r) const
     {
@@ -129,7 +159,7 @@ namespace Step2
         return 0.;
       return a * r + (a - b) * (-std::expm1(-beta * r) / beta - r);
     }
-    // The response where w_nu > 0, xi_nu = a + p(r).
+    // The response where $w_\nu > 0$, $\xi_\nu = a + p(r)$.
     double
     response(const double r) const
     {
@@ -137,15 +167,24 @@ namespace Step2
     }
   };
 
-  // Tresca friction, -sigma_tau in d(F_b |w_tau|), is given by its bound
-  // F_b alone (a number in this program).
+  // Tresca friction, $-\sigma_\tau \in \partial(F_b|\cdot|)(w_\tau)$, is given
+  // by its bound $F_b$ alone (a number in this program): the shear stress
+  // stays in the disk $|\sigma_\tau| \le F_b$, and $-\sigma_\tau = F_b
+  // w_\tau/|w_\tau|$ where the body slips. It is convex, so it needs no
+  // remainder.
 
   // @sect3{The problem data}
   //
   // Everything that defines one problem: the rectangle and its boundary
-  // parts, the material, the laws, the final time, the loads (the
-  // tractions take the outward normal: a manufactured traction is sigma nu),
-  // the initial values and, where one is known, the exact solution.
+  // parts, the material, the laws, the final time, the loads, the initial
+  // values and, where one is known, the exact solution. The tractions take
+  // the outward normal, since a manufactured traction is $\sigma\nu$. step-1
+  // derives one class per problem from a virtual base; here the data are
+  // members of one struct, the loads std::function objects, and a problem is
+  // a function that fills the struct (block_problem(),
+  // manufactured_problem()). The two designs do the same thing; this one
+  // lets the manufactured problem build its loads from the exact solution by
+  // lambdas that capture it.
   template <int dim>
   struct ExactValues
   {
@@ -170,21 +209,24 @@ namespace Step2
 
     Field body_force = [](const Point<dim> &, double) {
       return Tensor<1, dim>();
-    };                         // f0
-    Traction surface_traction; // f2 on Gamma_2
-    Traction contact_traction     = [](const Point<dim> &,
+    };                         // $f_0$, zero unless a problem sets it
+    Traction surface_traction; // $f_2$ on $\Gamma_2$
+    // $f_3$ on $\Gamma_3$: zero, except for a manufactured solution
+    Traction contact_traction = [](const Point<dim> &,
                                    const Tensor<1, dim> &,
                                    double) { return Tensor<1, dim>(); };
-    Field    initial_displacement = body_force; // zero
-    Field    initial_velocity     = body_force; // zero
+    // $u_0$ and $w_0$: zero (a copy of the zero $f_0$) unless set
+    Field initial_displacement = body_force;
+    Field initial_velocity     = body_force;
     std::function<ExactValues<dim>(const Point<dim> &, double)> exact;
   };
 
-  // The block [0,4]x[0,1] of the full program's prm/block_2d.prm: clamped
-  // on the left (id 0), pressed and sheared on its top (id 3), in contact
-  // with the foundation at its bottom (id 2). Its boundary sees every
-  // branch of the laws during 0 <= t <= 1: separation, normal stick,
-  // damped penetration, tangential stick and slip.
+  // The block $[0,4]\times[0,1]$ of the full program's prm/block_2d.prm:
+  // clamped on the left (id 0), pressed and sheared on its top (id 3), in
+  // contact with the foundation at its bottom (id 2). Its boundary sees every
+  // branch of the laws during $0 \le t \le 1$: separation, normal stick,
+  // damped penetration, tangential stick and slip. Young's modulus and
+  // Poisson's ratio are converted to the Lam\'e constants of $B$.
   ProblemData<2>
   block_problem()
   {
@@ -202,7 +244,8 @@ namespace Step2
     data.normal_law     = {1., 0.5, 10.};
     data.friction_bound = 0.6;
     data.end_time       = 1;
-    // pressure rising to the right, then a lift; shear growing in time
+    // a pressure rising to the right and in time, then a lift (the sine
+    // changes sign at $t = 1/2$); a shear growing in time
     data.surface_traction =
       [](const Point<2> &p, const Tensor<1, 2> &, const double t) {
         const double P = 3, S = 2;
@@ -215,17 +258,24 @@ namespace Step2
 
   // @sect3{The manufactured solution}
   //
-  // The exact displacement of prm/verification/mms_2d_quad_exponential.prm,
-  //
-  //   u(x, t) = sin(t) phi_1(x) + t^2 phi_2(x),
-  //   phi_1 = (1 - y) A (pos(x - 0.4)^3, pos(0.3 - x)^3 - pos(x - 0.7)^3),
-  //   phi_2 = 0.2 y (1 - y) (sin(pi x), cos(pi x)),   A = 4,
-  //
-  // on [0,1]^2 (clamped on top, contact at the bottom, nu = -e_y): along
-  // the bottom w_tau = 0 (stick) for x < 0.4 and slips beyond; w_nu < 0
-  // (separating) for x < 0.3, w_nu = 0 (normal stick) on [0.3, 0.7] and
-  // w_nu > 0 (damped) for x > 0.7. Each phi_k = Y(y) X(x) is given with
-  // its gradient and Hessian (hessian[c][i][j] = d_i d_j phi_c), each time
+  // The exact displacement of the full program's
+  // prm/verification/mms_2d_quad_exponential.prm,
+  // @f[
+  //   u(x, t) = \sin(t)\,\phi_1(x) + t^2\,\phi_2(x),
+  // @f]
+  // @f[
+  //   \phi_1 = (1 - y)\,A\,\bigl((x - 0.4)_+^3,\ (0.3 - x)_+^3 - (x - 0.7)_+^3
+  //   \bigr),\qquad
+  //   \phi_2 = 0.2\,y(1 - y)\,(\sin\pi x,\ \cos\pi x),\qquad A = 4,
+  // @f]
+  // on $[0,1]^2$, clamped on top, in contact at the bottom ($\nu = -e_y$).
+  // Along the bottom $w_\tau = 0$ (stick) for $x < 0.4$ and the body slips
+  // beyond; $w_\nu < 0$ (separating) for $x < 0.3$, $w_\nu = 0$ (normal
+  // stick) on $[0.3, 0.7]$ and $w_\nu > 0$ (damped) for $x > 0.7$: the error
+  // measures every branch. The cubes $(\cdot)_+^3$ switch the branches on and
+  // off while keeping $u$ twice continuously differentiable, so that $f_0$
+  // is continuous. Each $\phi_k = Y(y) X(x)$ is given with its gradient and
+  // Hessian (hessian[c][i][j] $= \partial_i\partial_j \phi_{k,c}$), each time
   // factor with two derivatives.
   void
   shape(const unsigned int k,
@@ -268,11 +318,21 @@ namespace Step2
       }
   }
 
-  // The data follow from the equations (doc/theory.md section 4):
-  // f0 = rho w' - Div sigma, f2 = sigma nu on Gamma_2 and
-  // f3 = sigma nu + xi_nu nu + xi_tau on Gamma_3, with xi_nu in dj_nu(w_nu)
-  // and xi_tau in d(F_b|.|)(w_tau): the given multipliers 0.5 (in [0, a])
-  // and (F_b/2, 0) (in the disk) where w_nu = 0 and w_tau = 0.
+  // The data follow from the equations. With $w = \dot u$ and $\sigma =
+  // A\varepsilon(w) + B\varepsilon(u)$ of the exact solution,
+  // @f[
+  //   f_0 = \rho\dot w - \mathrm{Div}\,\sigma,\qquad
+  //   f_2 = \sigma\nu \text{ on } \Gamma_2,\qquad
+  //   f_3 = \sigma\nu + \xi_\nu\nu + \xi_\tau \text{ on } \Gamma_3,
+  // @f]
+  // $\xi_\nu \in \partial j_\nu(w_\nu)$, $\xi_\tau \in \partial(F_b|\cdot|)
+  // (w_\tau)$: $f_3$ is the force the laws would have to supply for $u$ to be
+  // in equilibrium. Where $w_\nu = 0$ and $w_\tau = 0$ we choose the
+  // multipliers $0.5$ (inside $[0, a]$) and $(F_b/2, 0)$ (inside the disk),
+  // so that the exact solution sits in the middle of its branch, not at a
+  // switch where round-off could flip the discrete branch. "Zero" means
+  // below $10^{-13}(1 + |w|)$: the exact $w_\nu$, computed from sines and
+  // cubes, vanishes only up to round-off.
   ProblemData<2>
   manufactured_problem()
   {
@@ -354,16 +414,21 @@ namespace Step2
 
   // @sect3{Contact nodes and their branches}
   //
-  // With nodal quadrature on Gamma_3 the contact conditions hold node by
-  // node. A node x_i of Gamma_3 carries its dofs, its weight
-  // m_i = int_{Gamma_3} phi_i, its normal, the constant c_i of the
-  // complementarity functions and the branches the active-set method
-  // assigns to it (doc/intro.md, "The algorithm"):
+  // With nodal quadrature on $\Gamma_3$ the contact conditions hold node by
+  // node, as in step-1. A node $x_i$ of $\Gamma_3$ carries its degrees of
+  // freedom, its weight $m_i = \int_{\Gamma_3}\varphi_i$, its normal
+  // $\nu_i$, the constant $c_i$ of the complementarity functions and the
+  // branches the active-set method assigns to it (doc/intro.md, "The
+  // algorithm"):
+  // - normal: separating ($q = s + c\,w_\nu < 0$: no force, $w_\nu$ free),
+  //   stick ($0 \le q \le a$: $w_\nu = 0$) or damped ($q > a$: the force
+  //   $a + p(w_\nu)$);
+  // - tangential: stick ($|\lambda + c\,w_\tau| \le F_b$: $w_\tau = 0$) or
+  //   slip ($\lambda = F_b q/|q|$, $q = \lambda + c\,w_\tau$).
   //
-  // - normal: separating (q = s + c w_nu < 0: no force, w_nu free), stick
-  //   (0 <= q <= a: w_nu = 0) or damped (q > a: force a + p(w_nu));
-  // - tangential: stick (|lambda + c w_tau| <= F_b: w_tau = 0) or slip
-  //   (lambda = F_b q/|q|, q = lambda + c w_tau).
+  // The names follow the velocity, as the law does: "separating" means that
+  // the node moves away from the foundation, $w_\nu < 0$, whatever its
+  // displacement.
   enum class NormalBranch
   {
     separating,
@@ -371,9 +436,13 @@ namespace Step2
     damped
   };
 
-  // The state at an iterate: w split into w_nu and w_tau, and the
+  // The state at an iterate: $w$ split into $w_\nu$ and $w_\tau$, and the
   // multipliers of the laws' convex parts from the nodal contact force
-  // G_i = -(K0 w - b)_i: s = G.nu/m_i - p(w_nu), lambda = G_tau/m_i.
+  // $G_i = -(K_0 w - b)_i$: $s = G_i\cdot\nu_i/m_i - p(w_\nu)$, $\lambda =
+  // G_{i,\tau}/m_i$. step-1 computes the same numbers in its NodeState; here
+  // they are stored in the node, since solve_linearized() and
+  // nonsmooth_residual() read them after update_branches() has set
+  // them.
   template <int dim>
   struct ContactNode
   {
@@ -388,12 +457,14 @@ namespace Step2
 
   // @sect3{The KelvinVoigtContact class}
   //
-  // The structure of deal.II's tutorial programs: make_grid(),
-  // setup_system(), assemble_system() (the constant matrices M, A, B and
-  // the contact nodes), assemble_rhs() (the load of one step), solve() (the
+  // The structure of deal.II's tutorial programs, and of step-1's
+  // StaticContactProblem: make_grid(), setup_system(), assemble_system() (the
+  // constant matrices $\rho M$, $A$, $B$, $K_0$ and the contact nodes),
+  // assemble_rhs() (the right-hand side of one step), solve() (the
   // active-set Newton method for one step), output_results() and run() (the
-  // time loop). The errors against an exact solution are accumulated along
-  // the way.
+  // time loop, which step-1 did not have). The errors against an exact
+  // solution are accumulated along the way, since the solution of every step
+  // enters $E_H$ and $E_V$.
   template <int dim>
   class KelvinVoigtContact
   {
@@ -405,8 +476,10 @@ namespace Step2
     void
     run();
 
-    // E_H = max_n |w(t_n) - w_n|_L2, E_V = (k sum_n |eps(w(t_n) - w_n)|^2)^1/2,
-    // E_u = max_n |eps(u(t_n) - u_n)|_L2 over n = 1..N.
+    // The errors over the steps $n = 1, \dots, N$:
+    // $E_H = \max_n \|w(t_n) - w_n\|_{L^2}$,
+    // $E_V = (k \sum_n \|\varepsilon(w(t_n) - w_n)\|_{L^2}^2)^{1/2}$,
+    // $E_u = \max_n \|\varepsilon(u(t_n) - u_n)\|_{L^2}$.
     double       E_H = 0, E_V = 0, E_u = 0;
     double       mesh_size = 0;
     unsigned int n_dofs = 0, n_steps = 0, newton_iterations = 0;
@@ -448,21 +521,26 @@ namespace Step2
     AffineConstraints<double> clamped_constraints;
 
     SparsityPattern      sparsity_pattern;
-    SparseMatrix<double> mass_matrix;    // rho M
-    SparseMatrix<double> elastic_matrix; // B
-    SparseMatrix<double> step_matrix;    // K0 = rho/k M + A
+    SparseMatrix<double> mass_matrix;    // $\rho M$
+    SparseMatrix<double> elastic_matrix; // $B$
+    SparseMatrix<double> step_matrix;    // $K_0 = \rho/k\,M + A$
     SparseMatrix<double> newton_matrix;
 
-    Vector<double> velocity;     // w_n
-    Vector<double> old_velocity; // w_{n-1}
-    Vector<double> displacement; // u_n = u_0 + k sum_{i<n} w_i
-    Vector<double> step_rhs;     // b = rho/k M w_{n-1} - B u_n + F_n
-    Vector<double> residual;     // K0 w - b
+    Vector<double> velocity;     // $w_n$
+    Vector<double> old_velocity; // $w_{n-1}$
+    Vector<double> displacement; // $u_n = u_0 + k\sum_{i<n} w_i$
+    Vector<double> step_rhs;     // $b = \rho/k\,M w_{n-1} - B u_n + F_n$
+    Vector<double> residual;     // $K_0 w - b$
 
     std::vector<ContactNode<dim>> contact_nodes;
 
-    // Newton converges when no branch changes and the nonsmooth residual is
-    // below tolerance |b| (plus a tiny absolute floor).
+    // Newton stops when no branch changes and the nonsmooth residual is below
+    // $10^{-12}|b|$, the full program's tolerance in the comparison test (so
+    // that the two agree to round-off over all steps), plus an absolute floor
+    // for a step whose $b$ vanishes (a body at rest and unloaded). 50
+    // iterations are far more than a step needs (three on average, see the
+    // results): more means that the branches cycle, and the program stops
+    // with a message instead of looping.
     static constexpr double       tolerance          = 1e-12;
     static constexpr double       absolute_tolerance = 1e-14;
     static constexpr unsigned int max_iterations     = 50;
@@ -485,7 +563,8 @@ namespace Step2
   // @sect4{KelvinVoigtContact::make_grid}
   //
   // A subdivided rectangle whose sides carry the boundary ids 0 (left),
-  // 1 (right), 2 (bottom) and 3 (top), refined globally.
+  // 1 (right), 2 (bottom) and 3 (top) (colorize = true), refined globally.
+  // The largest cell diameter is the $h$ of the convergence table.
   template <int dim>
   void
   KelvinVoigtContact<dim>::make_grid()
@@ -502,9 +581,11 @@ namespace Step2
 
   // @sect4{KelvinVoigtContact::setup_system}
   //
-  // Q1 vector fields, zero on Gamma_1: the clamped dofs are the only
-  // constraints of the matrices. The active set adds its own constraints
-  // in each Newton iteration (solve_linearized()).
+  // $Q_1$ vector fields, zero on $\Gamma_1$: the clamped degrees of freedom
+  // are the only constraints of the matrices. The active set adds its own
+  // constraints in each Newton iteration (solve_linearized()); they tie the
+  // components of one node together, entries the sparsity pattern holds
+  // already, since the components of a vertex couple in every cell.
   template <int dim>
   void
   KelvinVoigtContact<dim>::setup_system()
@@ -537,9 +618,18 @@ namespace Step2
 
   // @sect4{KelvinVoigtContact::assemble_system}
   //
-  // The matrices that do not change in time: rho M, A, B (two-point Gauss,
-  // exact for Q1 on rectangles) and K0 = rho/k M + A; then the contact
-  // nodes.
+  // The matrices that do not change in time: $\rho M$, $A$, $B$ (two-point
+  // Gauss, exact for $Q_1$ on rectangles) and the step matrix
+  // @f[
+  //   K_0 = \frac{\rho}{k} M + A.
+  // @f]
+  // Backward Euler in $w$ turns the inertia $\rho\dot w$ into $\rho(w_n -
+  // w_{n-1})/k$, whose $w_n$ part is $\rho/k\,M$; the viscous stress adds
+  // $A$. $B$ acts on $u_n$, which the left-point rule makes known before the
+  // step, so it stays on the right-hand side. The constant $\rho/k$ in $K_0$
+  // is also why a small enough $k$ makes each step uniquely solvable: it
+  // lifts the smallest eigenvalue of $K_0$ above $\alpha_\nu$. Then the
+  // contact nodes.
   template <int dim>
   void
   KelvinVoigtContact<dim>::assemble_system()
@@ -593,10 +683,14 @@ namespace Step2
                                                        step_matrix);
       }
 
-    // The contact nodes: the vertices of Gamma_3 that are not clamped, with
-    // m_i = int_{Gamma_3} phi_i, the sum of |F|/(vertices of F) over the
-    // faces F at the node (exact for Q1 on flat faces), the normal averaged
-    // with the same weights, and c_i = (mean diagonal of K0 at the node)/m_i.
+    // The contact nodes: the vertices of $\Gamma_3$ that are not clamped,
+    // with $m_i = \int_{\Gamma_3}\varphi_i$ as the sum of $|F|/(\text{vertices
+    // of } F)$ over the faces $F$ at the node (exact for $Q_1$ on flat faces,
+    // and the same number step-1 integrates with FEFaceValues), the normal
+    // averaged with the same weights, and $c_i = (\text{mean diagonal of }
+    // K_0 \text{ at the node})/m_i$, which makes $c_i w_\nu$ and $s$ tractions
+    // of the same size. The exponential law rises nowhere, so $c_i$ needs no
+    // floor (step-1's floor is twice the steepest rise).
     FEFaceValues<dim> fe_face(fe, QGauss<dim - 1>(1), update_normal_vectors);
     std::map<types::global_dof_index, ContactNode<dim>> nodes;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -629,10 +723,16 @@ namespace Step2
 
   // @sect4{KelvinVoigtContact::assemble_rhs}
   //
-  // The right-hand side of step n,
-  //   b = rho/k M w_{n-1} - B u_n + F_n,
-  // F_n.v = int_Omega f0(t_n).v + int_Gamma2 f2(t_n).v (+ int_Gamma3 f3.v),
-  // the loads by three-point Gauss rules.
+  // The right-hand side of step $n$,
+  // @f[
+  //   b = \frac{\rho}{k} M w_{n-1} - B u_n + F_n,\qquad
+  //   F_n\cdot v = \int_\Omega f_0(t_n)\cdot v + \int_{\Gamma_2} f_2(t_n)
+  //   \cdot v \ \Bigl(+ \int_{\Gamma_3} f_3(t_n)\cdot v\Bigr),
+  // @f]
+  // the loads by three-point Gauss rules (the data are not polynomials, and
+  // their quadrature error must stay below the discretisation error). The
+  // clamped entries of $b$ are set to zero, the value the constraints give
+  // them.
   template <int dim>
   void
   KelvinVoigtContact<dim>::assemble_rhs(const double time)
@@ -698,26 +798,33 @@ namespace Step2
 
   // @sect3{The active-set Newton method}
   //
-  // Step n minimises
-  //   J_n(w) = 1/2 w.K0 w - b.w + sum_i m_i [ j_nu(w_nu) + F_b |w_tau| ]
-  // (the nodal sum is the nodal quadrature of the Gamma_3 integrals). Its
-  // stationarity condition at node i is G_i = m_i xi_i, G_i = -(K0 w - b)_i
-  // the nodal contact force, xi_i in dj_nu(w_nu) nu + F_b d|.|(w_tau). The
-  // functions below evaluate the node states, choose the branches from the
-  // complementarity functions, linearise and solve, and damp the update by
-  // backtracking on J_n.
+  // Step $n$ minimises the step energy
+  // @f[
+  //   J_n(w) = \frac12 w\cdot K_0 w - b\cdot w
+  //            + \sum_i m_i \bigl[ j_\nu(w_{i,\nu}) + F_b |w_{i,\tau}| \bigr],
+  // @f]
+  // whose nodal sum is the nodal quadrature of the $\Gamma_3$ integrals. Its
+  // stationarity condition at node $i$ is $G_i = m_i\xi_i$, with the nodal
+  // contact force $G_i = -(K_0 w - b)_i$ and $\xi_i \in \partial j_\nu(w_\nu)
+  // \nu + \partial(F_b|\cdot|)(w_\tau)$: step-1's problem with $K_0$ for $K$,
+  // $b$ for $F_n$ and $w$ for $u$. The functions below evaluate the node
+  // states, choose the branches from the complementarity functions,
+  // linearise and solve, and damp the update by backtracking on $J_n$.
 
   // @sect4{KelvinVoigtContact::update_branches}
   //
   // The complementarity functions
-  //   C_nu  = s - P_[0,a](s + c w_nu),
-  //   C_tau = lambda - P_{|.| <= F_b}(lambda + c w_tau)
+  // @f[
+  //   C_\nu = s - P_{[0,a]}(s + c\,w_\nu),\qquad
+  //   C_\tau = \lambda - P_{|\cdot| \le F_b}(\lambda + c\,w_\tau)
+  // @f]
   // vanish exactly at the solution; their projections decide the branches
   // (see ContactNode). After the first iteration of a step a node does not
   // jump between separating and damped directly but passes through normal
-  // stick, the branch between them: groups of nodes at the edge of a
-  // lifting contact zone would otherwise alternate between the two. Returns
-  // the number of nodes whose branches changed.
+  // stick, the branch between them: groups of nodes at the edge of a lifting
+  // contact zone would otherwise alternate between the two, each iteration
+  // undoing the last. Returns the number of nodes whose branches
+  // changed.
   template <int dim>
   unsigned int
   KelvinVoigtContact<dim>::update_branches(const unsigned int iteration)
@@ -760,8 +867,9 @@ namespace Step2
 
   // @sect4{KelvinVoigtContact::nonsmooth_residual}
   //
-  // Equilibrium on the free dofs away from Gamma_3, and the complementarity
-  // functions (as nodal forces m_i C) at the contact nodes.
+  // Equilibrium on the free degrees of freedom away from $\Gamma_3$, and the
+  // complementarity functions, as nodal forces $m_i C$, at the contact nodes:
+  // every term is a force, so one norm measures them together.
   template <int dim>
   double
   KelvinVoigtContact<dim>::nonsmooth_residual() const
@@ -788,22 +896,31 @@ namespace Step2
   // @sect4{KelvinVoigtContact::solve_linearized}
   //
   // One Newton step on the current branches: minimise
-  //   1/2 x.(K0 + sum L_i) x - g.x
+  // @f[
+  //   \frac12 x\cdot\Bigl(K_0 + \sum_i L_i\Bigr) x - g\cdot x
+  // @f]
   // over the fields that satisfy the constraints of the stick branches, with
-  // the free branches' nodal forces linearised about the iterate w_k,
-  // G_i ~ f_i + L_i (x - w_k):
-  //
-  // - damped: f_i = m_i (a + p(w_nu)) nu, L_i = m_i p'(w_nu) nu (x) nu;
-  // - slip: f_i = m_i F_b d + T_i w_tau, L_i = T_i, with d = q/|q|,
-  //   q = lambda + c w_tau, the semismooth Newton tangent of the friction
-  //   disk T_i = m_i F_b c/(|q| - F_b) (I - nu (x) nu - d (x) d) (zero in 2D;
-  //   the floor on |q| - F_b bounds it for nodes that barely slip);
+  // the free branches' nodal forces linearised about the iterate $w_k$,
+  // $G_i \approx f_i + L_i(x - w_k)$:
+  // - damped: $f_i = m_i(a + p(w_\nu))\nu$, $L_i = m_i p'(w_\nu)\,\nu\otimes
+  //   \nu$ (negative: the exponential law falls);
+  // - slip: $f_i = m_i F_b d + T_i w_\tau$, $L_i = T_i$, with $d = q/|q|$,
+  //   $q = \lambda + c\,w_\tau$ and the semismooth Newton tangent of the
+  //   friction disk $T_i = m_i F_b c/(|q| - F_b)\,(I - \nu\otimes\nu -
+  //   d\otimes d)$, zero in 2D; the floor on $|q| - F_b$ bounds it for nodes
+  //   that barely slip. The term $T_i w_\tau$ is step-1's $T_i u_\tau$: the
+  //   Newton step of $C_\tau = 0$ gives the new multiplier $F_b d + T_i
+  //   x/m_i$, and written as $f_i + L_i(x - w_k)$ that needs $f_i = m_i F_b
+  //   d + T_i w_k = m_i F_b d + T_i w_\tau$ ($T_i\nu = 0$);
   // - separating: no force; stick branches: a constraint instead.
   //
-  // The constraints w.nu = 0 (normal stick) and w_tau = 0 (tangential stick)
-  // are rows of an AffineConstraints object (with the clamped dofs), and the
-  // system is condensed and solved by UMFPACK, as the active set of
-  // deal.II's step-41 is.
+  // The constraints $w\cdot\nu = 0$ (normal stick) and $w_\tau = 0$
+  // (tangential stick) are rows of an AffineConstraints object (with the
+  // clamped degrees of freedom). step-1 hands its constraints to
+  // distribute_local_to_global() while it assembles; here the matrix $K_0$
+  // is assembled once for all steps, so it is copied and condensed, and the
+  // system is solved by UMFPACK, as the active set of deal.II's step-41
+  // is.
   template <int dim>
   void
   KelvinVoigtContact<dim>::solve_linearized(Vector<double> &trial)
@@ -838,7 +955,7 @@ namespace Step2
             f += node.mass * F_b * d + T * node.w_tau;
           }
 
-        // K0 + L_i, and g_i = b_i + L_i w_k - f_i
+        // $K_0 + L_i$, and $g_i = b_i + L_i w_k - f_i$
         Tensor<1, dim> w_k;
         for (unsigned int c = 0; c < dim; ++c)
           w_k[c] = velocity(node.dofs[c]);
@@ -851,9 +968,10 @@ namespace Step2
                 newton_matrix.add(node.dofs[c], node.dofs[e], L[c][e]);
           }
 
-        // The stick constraints, written on the component p where |nu_p| is
-        // largest: w.nu = 0 is w_p = -sum_{c != p} nu_c/nu_p w_c, and
-        // w_tau = 0 (w parallel to nu) is w_c = nu_c/nu_p w_p for c != p.
+        // The stick constraints, written on the component $p$ where $|\nu_p|$
+        // is largest (dividing by it is safest): $w\cdot\nu = 0$ is $w_p =
+        // -\sum_{c \ne p} \nu_c/\nu_p\,w_c$, and $w_\tau = 0$ ($w$ parallel to
+        // $\nu$) is $w_c = \nu_c/\nu_p\,w_p$ for $c \ne p$.
         const bool normal_stick     = node.normal_branch == NormalBranch::stick;
         const bool tangential_stick = !node.slips;
         if (!normal_stick && !tangential_stick)
@@ -896,9 +1014,16 @@ namespace Step2
 
   // @sect4{The step energy for the line search}
   //
-  // J_n(w + theta d) - J_n(w)
-  //   = theta d.(K0 w - b) + theta^2/2 d.K0 d + nodal part,
-  // the nodal part m_i [ j_nu(w_nu) + F_b |w_tau| ] summed over Gamma_3.
+  // Along the Newton direction $d$,
+  // @f[
+  //   J_n(w + \theta d) - J_n(w) = \theta\,d\cdot(K_0 w - b)
+  //     + \frac{\theta^2}2\,d\cdot K_0 d + (\text{change of the nodal part}),
+  // @f]
+  // with the nodal part $\sum_i m_i [j_\nu(w_{i,\nu}) + F_b|w_{i,\tau}|]$
+  // computed here. The line search evaluates this change, not $J_n$ itself:
+  // $J_n$ is a sum of large terms of both signs, and its difference at two
+  // nearby points would lose its digits to cancellation, while the slope and
+  // the curvature of the quadratic part are computed once and exactly.
   template <int dim>
   double
   KelvinVoigtContact<dim>::nodal_energy(const Vector<double> &v) const
@@ -919,13 +1044,14 @@ namespace Step2
 
   // @sect4{KelvinVoigtContact::solve}
   //
-  // The active-set Newton method for one step, started from w_{n-1}:
-  // branches from the complementarity functions, stop when no branch
-  // changed and the nonsmooth residual is below the tolerance (or far
-  // below it), else a Newton step on the branches, damped by halving
-  // theta from 1 to 2^{-10} until it does not raise J_n beyond round-off
-  // (the full step if no length does: step-1's rule). Returns the number
-  // of Newton steps.
+  // The active-set Newton method for one step, started from $w_{n-1}$ (the
+  // previous step's solution is close, since $w$ changes by $O(k)$): the
+  // branches from the complementarity functions; stop when no branch changed
+  // and the nonsmooth residual is below the tolerance (or far below it,
+  // whatever the branches do); else a Newton step on the branches, damped by
+  // halving $\theta$ from 1 to $2^{-10}$ until it does not raise $J_n$ beyond
+  // round-off (the full step if no length does: step-1's rule). Returns the
+  // number of Newton steps.
   template <int dim>
   unsigned int
   KelvinVoigtContact<dim>::solve()
@@ -949,7 +1075,9 @@ namespace Step2
 
         solve_linearized(trial);
 
-        // the line search on J_n along d = trial - w
+        // the line search on $J_n$ along $d$ = trial $- w$; $K_0$ is linear, so
+        // the residual at $w + \theta d$ is updated from $K_0 d$ without a
+        // product
         direction = trial;
         direction -= velocity;
         step_matrix.vmult(K_d, direction);
@@ -964,13 +1092,13 @@ namespace Step2
           return theta * slope + 0.5 * theta * theta * curvature +
                  nodal_energy(candidate) - nodal_0;
         };
-        // The rule of step-1: the first of theta = 1, 1/2, ..., 2^{-10}
-        // that does not raise J_n beyond round-off, and the full step if
-        // none does (the direction is then not one of descent, which
-        // happens only while the branches are still wrong; the full step
-        // moves to branches the next update_branches() corrects, where a
-        // tiny step would stall). The block and the first three levels of
-        // the manufactured solution never reach that fallback.
+        // The rule of step-1: the first of $\theta = 1, \frac12, \dots,
+        // 2^{-10}$ that does not raise $J_n$ beyond round-off, and the full
+        // step if none does (the direction is then not one of descent, which
+        // happens only while the branches are still wrong; the full step moves
+        // to branches the next update_branches() corrects, where a tiny step
+        // would stall). The block and the first three levels of the
+        // manufactured solution never reach that fallback.
         double theta = 1;
         for (; theta >= 1. / 1024; theta /= 2)
           if (change(theta) <= 1e-12 * scale)
@@ -978,15 +1106,16 @@ namespace Step2
         if (theta < 1. / 1024)
           theta = 1;
         velocity.add(theta, direction);
-        residual.add(theta, K_d); // K0 is linear
+        residual.add(theta, K_d); // $K_0$ is linear
       }
   }
 
   // @sect4{KelvinVoigtContact::output_results}
   //
-  // A VTU file of w_n and u_n for ParaView, and the nodal values in full
-  // double precision (x, y, w, u per vertex, "%.17g"), the file the
-  // comparison with the full program reads.
+  // A VTU file of $w_n$ and $u_n$ for ParaView, and the nodal values in full
+  // double precision (x, y, w, u per vertex, "%.17g"): the file the
+  // comparison with the full program reads, at a precision that lets it
+  // check agreement to $10^{-10}$.
   template <int dim>
   void
   KelvinVoigtContact<dim>::output_results(const unsigned int step) const
@@ -1036,8 +1165,11 @@ namespace Step2
 
   // @sect4{KelvinVoigtContact::accumulate_errors}
   //
-  // |w(t_n) - w_n|_L2, |eps(w(t_n) - w_n)|_L2 and |eps(u(t_n) - u_n)|_L2 by
-  // a three-point Gauss rule, into the maxima E_H, E_u and the sum of E_V.
+  // $\|w(t_n) - w_n\|_{L^2}$, $\|\varepsilon(w(t_n) - w_n)\|_{L^2}$ and
+  // $\|\varepsilon(u(t_n) - u_n)\|_{L^2}$ by a three-point Gauss rule, into
+  // the maxima $E_H$, $E_u$ and the sum of $E_V$. The exact solution is not a
+  // polynomial: one point more than the assembly keeps the quadrature error
+  // below the error measured.
   template <int dim>
   void
   KelvinVoigtContact<dim>::accumulate_errors(const double time)
@@ -1078,9 +1210,12 @@ namespace Step2
 
   // @sect4{KelvinVoigtContact::run}
   //
-  // The time loop of Problem 4.4: w_0 and u_0 interpolated, then for
-  // n = 1..N the left-point rule u_n = u_{n-1} + k w_{n-1}, the right-hand
-  // side with w_{n-1} and u_n, and the step problem for w_n.
+  // The time loop of Problem 4.4: $w_0$ and $u_0$ interpolated, then for $n =
+  // 1, \dots, N$ the left-point rule $u_n = u_{n-1} + k\,w_{n-1}$, the
+  // right-hand side with $w_{n-1}$ and $u_n$, and the step problem for $w_n$.
+  // The left-point rule is the paper's choice: it makes $u_n$ known before
+  // step $n$, so that each step is a problem in $w_n$ alone, with the same
+  // matrix $K_0$ at every step.
   template <int dim>
   void
   KelvinVoigtContact<dim>::run()
@@ -1089,7 +1224,8 @@ namespace Step2
     setup_system();
     assemble_system();
 
-    // nodal interpolation of u_0 and w_0
+    // nodal interpolation of $u_0$ and $w_0$ (their values at the vertices
+    // are the $Q_1$ coefficients)
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
         {
@@ -1116,7 +1252,7 @@ namespace Step2
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
         const double time = step * time_step;
-        displacement.add(time_step, velocity); // u_n = u_{n-1} + k w_{n-1}
+        displacement.add(time_step, velocity); // $u_n = u_{n-1} + k w_{n-1}$
         old_velocity = velocity;
         assemble_rhs(time);
         const unsigned int iterations = solve();
