@@ -493,6 +493,7 @@ namespace Step1
     double
     smallness_constant() const;
 
+    // The Newton iterations of the last run(), for the convergence table.
     unsigned int newton_iterations = 0;
 
   private:
@@ -509,6 +510,9 @@ namespace Step1
     void
     solve();
 
+    // The pieces of solve(): the state of a node at the current iterate,
+    // the branches, the nonsmooth residual, the Newton system and the
+    // energy of the line search.
     struct NodeState;
     NodeState
     node_state(const ContactNode<dim> &node,
@@ -529,16 +533,23 @@ namespace Step1
     FESystem<dim>      fe;
     DoFHandler<dim>    dof_handler;
 
+    // Two sets of constraints: the clamped boundary alone, with which $K$
+    // and $F_n$ are assembled, and the clamped boundary plus the held
+    // conditions of the current branches, rebuilt in every Newton
+    // iteration (as step-41 rebuilds its active set).
     AffineConstraints<double> clamped_constraints;
     AffineConstraints<double> newton_constraints;
 
+    // $K$ and the matrix of one Newton step share one sparsity pattern:
+    // the contact terms couple only the components of one node, which the
+    // pattern of $K$ already holds.
     SparsityPattern      sparsity_pattern;
     SparseMatrix<double> stiffness_matrix;
     SparseMatrix<double> newton_matrix;
 
-    Vector<double> solution;
-    Vector<double> load;
-    Vector<double> newton_rhs;
+    Vector<double> solution;   // $u$, kept from one load value to the next
+    Vector<double> load;       // $F_n$
+    Vector<double> newton_rhs; // $g$ of the Newton step, condensed
 
     std::vector<ContactNode<dim>> contact_nodes;
   };
@@ -563,6 +574,9 @@ namespace Step1
   void
   StaticContactProblem<dim>::make_grid(const unsigned int n_refinements)
   {
+    // The coarse mesh comes from the data (one cell per unit length), so
+    // that every refinement halves $h$ and the points where the
+    // manufactured solution switches branches stay mesh vertices.
     data.make_coarse_grid(triangulation);
     triangulation.refine_global(n_refinements);
   }
@@ -652,6 +666,11 @@ namespace Step1
                 }
           }
 
+    // Every vertex of $\Gamma_3$ is met once per face it belongs to: the
+    // flags keep the first meeting. A vertex that is also on $\Gamma_1$
+    // (the corner of the clamped side) is held at zero by the clamped
+    // constraints and must not get contact conditions too: a degree of
+    // freedom can carry only one constraint.
     contact_nodes.clear();
     std::vector<bool> seen(dof_handler.n_dofs(), false);
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -716,6 +735,14 @@ namespace Step1
     Vector<double>                       cell_rhs(n);
     std::vector<types::global_dof_index> dofs(n);
 
+    // The constraints are applied while assembling
+    // (distribute_local_to_global()), so the matrix and the vector come out
+    // condensed: for the clamped constraints that is $K$ and $F_n$ with the
+    // clamped rows decoupled, for those of a Newton step the reduced
+    // system of that step. The load uses one Gauss point more than the
+    // matrix: the data are not polynomials (the manufactured ones are
+    // piecewise cubic and jump on $\Gamma_3$), and their quadrature error
+    // must stay below the discretisation error on the finest mesh.
     matrix = 0;
     rhs    = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -809,6 +836,9 @@ namespace Step1
         u[c]        = solution(node.dofs[c]);
         traction[c] = -residual(node.dofs[c]) / node.mass;
       }
+    // The residual at a contact node is the force the laws do not yet
+    // supply; divided by the weight $m_i$ it is a traction, comparable with
+    // the law's response $\xi$ and the friction bound $F_b$.
     NodeState m;
     m.u_nu   = u * node.normal;
     m.u_tau  = u - m.u_nu * node.normal;
@@ -864,6 +894,10 @@ namespace Step1
   StaticContactProblem<dim>::nonsmooth_residual(
     const Vector<double> &residual) const
   {
+    // At a contact node the residual is not expected to vanish (it is the
+    // contact force); there the complementarity functions take its place.
+    // The clamped rows of the residual are zero already (the condensed
+    // $K$ times a $u$ that vanishes there, minus a zero load).
     Vector<double> free_part(residual);
     double         contact_part = 0;
     for (const ContactNode<dim> &node : contact_nodes)
@@ -1031,6 +1065,13 @@ namespace Step1
   void
   StaticContactProblem<dim>::solve()
   {
+    // The tolerance is relative to the load: the residual is a force, and
+    // $10^{-11}|F_n|$ lies well above the round-off of evaluating it while
+    // being tight enough for the comparison with the full program at
+    // $10^{-10}$. Once the residual is a hundred times below it, the
+    // iteration stops even if a branch still changes: a node whose
+    // $q$ lies within round-off of a switch may flip back and forth
+    // without changing the solution.
     const double   tolerance = 1e-11 * load.l2_norm();
     Vector<double> residual(dof_handler.n_dofs());
     newton_iterations = 0;
@@ -1187,6 +1228,10 @@ namespace Step1
     std::ofstream vtu(std::string("solution-") + suffix + ".vtu");
     data_out.write_vtu(vtu);
 
+    // The contact quantities come from the residual at the solution, as in
+    // solve(): the column minus_sigma_nu is $s + p(u_\nu)$, the whole
+    // normal traction, and sigma_tau the first component of the
+    // multiplier $\lambda$ (the tangent of the bottom is $e_x$).
     Vector<double> residual(dof_handler.n_dofs());
     stiffness_matrix.vmult(residual, solution);
     residual -= load;
