@@ -436,6 +436,13 @@ namespace Step2
     damped
   };
 
+  // The tangential branches, as in step-1.
+  enum class TangentialBranch
+  {
+    stick,
+    slip
+  };
+
   // The state at an iterate: $w$ split into $w_\nu$ and $w_\tau$, and the
   // multipliers of the laws' convex parts from the nodal contact force
   // $G_i = -(K_0 w - b)_i$: $s = G_i\cdot\nu_i/m_i - p(w_\nu)$, $\lambda =
@@ -449,10 +456,10 @@ namespace Step2
     std::array<types::global_dof_index, dim> dofs;
     Tensor<1, dim>                           normal;
     double                                   mass = 0, c = 1;
-    NormalBranch   normal_branch = NormalBranch::separating;
-    bool           slips         = false;
-    double         w_nu = 0, s = 0;
-    Tensor<1, dim> w_tau, lambda;
+    NormalBranch     normal_branch     = NormalBranch::separating;
+    TangentialBranch tangential_branch = TangentialBranch::stick;
+    double           w_nu = 0, s = 0;
+    Tensor<1, dim>   w_tau, lambda;
   };
 
   // @sect3{The KelvinVoigtContact class}
@@ -854,13 +861,16 @@ namespace Step2
              (node.normal_branch == NormalBranch::damped &&
               normal == NormalBranch::separating)))
           normal = NormalBranch::stick;
-        const bool slips =
-          (node.lambda + node.c * node.w_tau).norm() > data.friction_bound;
+        const TangentialBranch tangential =
+          (node.lambda + node.c * node.w_tau).norm() > data.friction_bound ?
+            TangentialBranch::slip :
+            TangentialBranch::stick;
 
-        if (normal != node.normal_branch || slips != node.slips)
+        if (normal != node.normal_branch ||
+            tangential != node.tangential_branch)
           ++n_changed;
-        node.normal_branch = normal;
-        node.slips         = slips;
+        node.normal_branch     = normal;
+        node.tangential_branch = tangential;
       }
     return n_changed;
   }
@@ -943,7 +953,7 @@ namespace Step2
             L += node.mass * data.normal_law.remainder_derivative(node.w_nu) *
                  outer_product(nu, nu);
           }
-        if (node.slips)
+        if (node.tangential_branch == TangentialBranch::slip)
           {
             const Tensor<1, dim> q = node.lambda + node.c * node.w_tau;
             const Tensor<1, dim> d = q / q.norm();
@@ -972,8 +982,9 @@ namespace Step2
         // is largest (dividing by it is safest): $w\cdot\nu = 0$ is $w_p =
         // -\sum_{c \ne p} \nu_c/\nu_p\,w_c$, and $w_\tau = 0$ ($w$ parallel to
         // $\nu$) is $w_c = \nu_c/\nu_p\,w_p$ for $c \ne p$.
-        const bool normal_stick     = node.normal_branch == NormalBranch::stick;
-        const bool tangential_stick = !node.slips;
+        const bool normal_stick = node.normal_branch == NormalBranch::stick;
+        const bool tangential_stick =
+          node.tangential_branch == TangentialBranch::stick;
         if (!normal_stick && !tangential_stick)
           continue;
         unsigned int p = 0;
@@ -1266,7 +1277,7 @@ namespace Step2
             for (const ContactNode<dim> &node : contact_nodes)
               {
                 ++count[static_cast<int>(node.normal_branch)];
-                ++count[node.slips ? 4 : 3];
+                ++count[3 + static_cast<int>(node.tangential_branch)];
               }
             std::printf("step %3u  t = %.4f  Newton %u  separating %u  "
                         "normal stick %u  damped %u  stick %u  slip %u\n",
