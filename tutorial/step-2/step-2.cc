@@ -175,16 +175,19 @@ namespace Step2
 
   // @sect3{The problem data}
   //
-  // Everything that defines one problem: the rectangle and its boundary
-  // parts, the material, the laws, the final time, the loads, the initial
-  // values and, where one is known, the exact solution. The tractions take
-  // the outward normal, since a manufactured traction is $\sigma\nu$. step-1
-  // derives one class per problem from a virtual base; here the data are
-  // members of one struct, the loads std::function objects, and a problem is
-  // a function that fills the struct (block_problem(),
-  // manufactured_problem()). The two designs do the same thing; this one
-  // lets the manufactured problem build its loads from the exact solution by
-  // lambdas that capture it.
+  // Everything that defines one problem, with the interface of step-1's
+  // ProblemData and time added: the material, the laws and the final time
+  // as constants; the coarse mesh, the body force $f_0(x, t)$ and the
+  // traction at a boundary point (its id says whether that is $f_2$ on
+  // $\Gamma_2$ or an extra $f_3$ on $\Gamma_3$) as virtual functions; new
+  // are the initial values $u_0$, $w_0$ and, where one is known, the exact
+  // solution with the derivatives the errors and the manufactured loads
+  // need. The tractions take the outward normal, since a manufactured
+  // traction is $\sigma\nu$. The boundary is split by boundary id, as in
+  // step-1: $\Gamma_1$ (clamped) and $\Gamma_3$ (contact) have one id
+  // each, every other boundary is $\Gamma_2$. Unlike step-1 the two ids
+  // are members, since the block and the manufactured solution clamp
+  // different sides.
   template <int dim>
   struct ExactValues
   {
@@ -193,68 +196,130 @@ namespace Step2
   };
 
   template <int dim>
-  struct ProblemData
+  class ProblemData
   {
-    using Field    = std::function<Tensor<1, dim>(const Point<dim> &, double)>;
-    using Traction = std::function<
-      Tensor<1, dim>(const Point<dim> &, const Tensor<1, dim> &, double)>;
+  public:
+    ProblemData(const Material          &material,
+                const ExponentialLaw    &normal_law,
+                const double             F_b,
+                const double             end_time,
+                const types::boundary_id clamped_boundary,
+                const types::boundary_id contact_boundary)
+      : material(material)
+      , normal_law(normal_law)
+      , friction_bound(F_b)
+      , end_time(end_time)
+      , clamped_boundary(clamped_boundary)
+      , contact_boundary(contact_boundary)
+    {}
 
-    Point<dim>                   lower_left, upper_right;
-    std::vector<unsigned int>    subdivisions;
-    std::set<types::boundary_id> clamped_ids, traction_ids, contact_ids;
-    Material                     material;
-    ExponentialLaw               normal_law;
-    double                       friction_bound;
-    double                       end_time;
+    virtual ~ProblemData() = default;
 
-    Field body_force = [](const Point<dim> &, double) {
+    virtual void
+    make_coarse_grid(Triangulation<dim> &triangulation) const = 0;
+
+    // $f_0(x, t)$: zero unless a problem has one.
+    virtual Tensor<1, dim>
+    body_force(const Point<dim> &, const double) const
+    {
       return Tensor<1, dim>();
-    };                         // $f_0$, zero unless a problem sets it
-    Traction surface_traction; // $f_2$ on $\Gamma_2$
-    // $f_3$ on $\Gamma_3$: zero, except for a manufactured solution
-    Traction contact_traction = [](const Point<dim> &,
-                                   const Tensor<1, dim> &,
-                                   double) { return Tensor<1, dim>(); };
-    // $u_0$ and $w_0$: zero (a copy of the zero $f_0$) unless set
-    Field initial_displacement = body_force;
-    Field initial_velocity     = body_force;
-    std::function<ExactValues<dim>(const Point<dim> &, double)> exact;
+    }
+
+    // The prescribed traction at $x$ on the boundary with id @p id and
+    // outward normal @p normal: $f_2$, or $f_3$ on $\Gamma_3$.
+    virtual Tensor<1, dim>
+    traction(const Point<dim>        &x,
+             const Tensor<1, dim>    &normal,
+             const types::boundary_id id,
+             const double             t) const = 0;
+
+    // $u_0$ and $w_0$: the body at rest unless a problem says otherwise.
+    virtual Tensor<1, dim>
+    initial_displacement(const Point<dim> &) const
+    {
+      return Tensor<1, dim>();
+    }
+
+    virtual Tensor<1, dim>
+    initial_velocity(const Point<dim> &) const
+    {
+      return Tensor<1, dim>();
+    }
+
+    // The exact solution and its derivatives, for the errors; only a
+    // manufactured solution has one.
+    virtual bool
+    has_exact_solution() const
+    {
+      return false;
+    }
+
+    virtual ExactValues<dim>
+    exact(const Point<dim> &, const double) const
+    {
+      AssertThrow(false, ExcMessage("This problem has no exact solution."));
+      return ExactValues<dim>();
+    }
+
+    const Material           material;
+    const ExponentialLaw     normal_law;
+    const double             friction_bound;
+    const double             end_time;
+    const types::boundary_id clamped_boundary, contact_boundary;
   };
 
+  // @sect4{The block}
+  //
   // The block $[0,4]\times[0,1]$ of the full program's prm/block_2d.prm:
   // clamped on the left (id 0), pressed and sheared on its top (id 3), in
-  // contact with the foundation at its bottom (id 2). Its boundary sees every
-  // branch of the laws during $0 \le t \le 1$: separation, normal stick,
-  // damped penetration, tangential stick and slip. Young's modulus and
-  // Poisson's ratio are converted to the Lam\'e constants of $B$.
-  ProblemData<2>
-  block_problem()
+  // contact with the foundation at its bottom (id 2), free on the right.
+  // Its boundary sees every branch of the laws during $0 \le t \le 1$:
+  // separation, normal stick, damped penetration, tangential stick and
+  // slip. Young's modulus $E = 100$ and Poisson's ratio $0.3$ are converted
+  // to the Lam\'e constants of $B$; $A$ has $\mu = \lambda = 1$, the law
+  // $a = 1$, $b = 0.5$, $\beta = 10$.
+  class BlockData : public ProblemData<2>
   {
-    ProblemData<2> data;
-    data.lower_left   = Point<2>(0, 0);
-    data.upper_right  = Point<2>(4, 1);
-    data.subdivisions = {4, 1};
-    data.clamped_ids  = {0};
-    data.traction_ids = {3};
-    data.contact_ids  = {2};
-    const double E = 100, nu = 0.3; // Young's modulus, Poisson's ratio
-    data.material       = {1.,
-                           {1., 1.},
-                           {E / (2 * (1 + nu)), E * nu / ((1 + nu) * (1 - 2 * nu))}};
-    data.normal_law     = {1., 0.5, 10.};
-    data.friction_bound = 0.6;
-    data.end_time       = 1;
-    // a pressure rising to the right and in time, then a lift (the sine
-    // changes sign at $t = 1/2$); a shear growing in time
-    data.surface_traction =
-      [](const Point<2> &p, const Tensor<1, 2> &, const double t) {
-        const double P = 3, S = 2;
-        return Tensor<1, 2>(
-          {S * std::sin(numbers::PI * t) * p[0] / 4,
-           -P * std::sin(2 * numbers::PI * t) * (0.25 + p[0] / 4)});
-      };
-    return data;
-  }
+  public:
+    BlockData()
+      : ProblemData<2>({1.,
+                        {1., 1.},
+                        {E / (2 * (1 + nu)),
+                         E * nu / ((1 + nu) * (1 - 2 * nu))}},
+                       {1., 0.5, 10.},
+                       /*F_b=*/0.6,
+                       /*end_time=*/1,
+                       /*clamped_boundary=*/0,
+                       /*contact_boundary=*/2)
+    {}
+
+    void
+    make_coarse_grid(Triangulation<2> &triangulation) const override
+    {
+      GridGenerator::subdivided_hyper_rectangle(
+        triangulation, {4, 1}, Point<2>(0, 0), Point<2>(4, 1), true);
+    }
+
+    // On the top a pressure rising to the right and in time, then a lift
+    // (the sine changes sign at $t = 1/2$), and a shear growing in time;
+    // nothing elsewhere.
+    Tensor<1, 2>
+    traction(const Point<2> &p,
+             const Tensor<1, 2> &,
+             const types::boundary_id id,
+             const double             t) const override
+    {
+      if (id != 3)
+        return Tensor<1, 2>();
+      const double P = 3, S = 2;
+      return Tensor<1, 2>(
+        {S * std::sin(numbers::PI * t) * p[0] / 4,
+         -P * std::sin(2 * numbers::PI * t) * (0.25 + p[0] / 4)});
+    }
+
+  private:
+    static constexpr double E = 100, nu = 0.3; // Young's modulus, Poisson's
+  };
 
   // @sect3{The manufactured solution}
   //
@@ -333,23 +398,37 @@ namespace Step2
   // switch where round-off could flip the discrete branch. "Zero" means
   // below $10^{-13}(1 + |w|)$: the exact $w_\nu$, computed from sines and
   // cubes, vanishes only up to round-off.
-  ProblemData<2>
-  manufactured_problem()
+  class ManufacturedData : public ProblemData<2>
   {
-    ProblemData<2> data;
-    data.lower_left     = Point<2>(0, 0);
-    data.upper_right    = Point<2>(1, 1);
-    data.subdivisions   = {1, 1};
-    data.clamped_ids    = {3};
-    data.traction_ids   = {0, 1};
-    data.contact_ids    = {2};
-    data.material       = {1., {1., 1.}, {2., 1.}};
-    data.normal_law     = {1., 0.5, 2.};
-    data.friction_bound = 0.5;
-    data.end_time       = 1;
+  public:
+    ManufacturedData()
+      : ProblemData<2>({1., {1., 1.}, {2., 1.}},
+                       {1., 0.5, 2.},
+                       /*F_b=*/0.5,
+                       /*end_time=*/1,
+                       /*clamped_boundary=*/3,
+                       /*contact_boundary=*/2)
+    {}
 
-    const Material material = data.material;
-    data.exact              = [material](const Point<2> &p, const double t) {
+    void
+    make_coarse_grid(Triangulation<2> &triangulation) const override
+    {
+      GridGenerator::subdivided_hyper_rectangle(
+        triangulation, {1, 1}, Point<2>(0, 0), Point<2>(1, 1), true);
+    }
+
+    bool
+    has_exact_solution() const override
+    {
+      return true;
+    }
+
+    // $u = \sin(t)\phi_1 + t^2\phi_2$ and its derivatives: each shape
+    // times its time factor, summed; $\mathrm{Div}\,\sigma$ from the
+    // Hessians.
+    ExactValues<2>
+    exact(const Point<2> &p, const double t) const override
+    {
       const double   time[2][3] = {{std::sin(t), std::cos(t), -std::sin(t)},
                                    {t * t, 2 * t, 2.}};
       ExactValues<2> e;
@@ -371,46 +450,60 @@ namespace Step2
       e.div_sigma = material.viscosity.stress_divergence(hessian_w) +
                     material.elasticity.stress_divergence(hessian_u);
       return e;
-    };
-    const auto exact  = data.exact;
-    const auto stress = [material](const ExactValues<2> &e) {
-      return material.viscosity.stress(symmetrize(e.grad_w)) +
-             material.elasticity.stress(symmetrize(e.grad_u));
-    };
-    data.body_force = [=](const Point<2> &p, const double t) {
+    }
+
+    Tensor<1, 2>
+    body_force(const Point<2> &p, const double t) const override
+    {
       const ExactValues<2> e = exact(p, t);
       return material.density * e.w_dot - e.div_sigma;
-    };
-    data.surface_traction =
-      [=](const Point<2> &p, const Tensor<1, 2> &normal, const double t) {
-        return stress(exact(p, t)) * normal;
-      };
-    const ExponentialLaw law = data.normal_law;
-    const double         F_b = data.friction_bound;
-    data.contact_traction =
-      [=](const Point<2> &p, const Tensor<1, 2> &normal, const double t) {
-        const ExactValues<2> e     = exact(p, t);
-        const double         w_nu  = e.w * normal;
-        const Tensor<1, 2>   w_tau = e.w - w_nu * normal;
-        const double         zero  = 1e-13 * (1 + e.w.norm());
-        const double         xi_nu = std::abs(w_nu) <= zero ? 0.5 :
-                                     w_nu < 0               ? 0. :
-                                                              law.response(w_nu);
-        Tensor<1, 2>         xi_tau({F_b / 2, 0.});
-        if (w_tau.norm() <= zero)
-          xi_tau -= (xi_tau * normal) * normal;
-        else
-          xi_tau = F_b * w_tau / w_tau.norm();
-        return stress(e) * normal + xi_nu * normal + xi_tau;
-      };
-    data.initial_displacement = [=](const Point<2> &p, double) {
+    }
+
+    Tensor<1, 2>
+    traction(const Point<2>          &p,
+             const Tensor<1, 2>      &normal,
+             const types::boundary_id id,
+             const double             t) const override
+    {
+      const ExactValues<2> e = exact(p, t);
+      if (id != contact_boundary)
+        return stress(e) * normal;
+      const double       w_nu  = e.w * normal;
+      const Tensor<1, 2> w_tau = e.w - w_nu * normal;
+      const double       zero  = 1e-13 * (1 + e.w.norm());
+      const double       xi_nu = std::abs(w_nu) <= zero ? 0.5 :
+                                 w_nu < 0               ? 0. :
+                                            normal_law.response(w_nu);
+      const double       F_b   = friction_bound;
+      Tensor<1, 2>       xi_tau({F_b / 2, 0.});
+      if (w_tau.norm() <= zero)
+        xi_tau -= (xi_tau * normal) * normal;
+      else
+        xi_tau = F_b * w_tau / w_tau.norm();
+      return stress(e) * normal + xi_nu * normal + xi_tau;
+    }
+
+    Tensor<1, 2>
+    initial_displacement(const Point<2> &p) const override
+    {
       return exact(p, 0).u;
-    };
-    data.initial_velocity = [=](const Point<2> &p, double) {
+    }
+
+    Tensor<1, 2>
+    initial_velocity(const Point<2> &p) const override
+    {
       return exact(p, 0).w;
-    };
-    return data;
-  }
+    }
+
+  private:
+    // $\sigma = A\varepsilon(w) + B\varepsilon(u)$ of the exact solution.
+    SymmetricTensor<2, 2>
+    stress(const ExactValues<2> &e) const
+    {
+      return material.viscosity.stress(symmetrize(e.grad_w)) +
+             material.elasticity.stress(symmetrize(e.grad_u));
+    }
+  };
 
   // @sect3{Contact nodes and their branches}
   //
@@ -576,11 +669,7 @@ namespace Step2
   void
   KelvinVoigtContact<dim>::make_grid()
   {
-    GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                              data.subdivisions,
-                                              data.lower_left,
-                                              data.upper_right,
-                                              true);
+    data.make_coarse_grid(triangulation);
     triangulation.refine_global(refinements);
     for (const auto &cell : triangulation.active_cell_iterators())
       mesh_size = std::max(mesh_size, cell->diameter());
@@ -601,12 +690,10 @@ namespace Step2
     n_dofs = dof_handler.n_dofs();
 
     clamped_constraints.clear();
-    for (const types::boundary_id id : data.clamped_ids)
-      VectorTools::interpolate_boundary_values(dof_handler,
-                                               id,
-                                               Functions::ZeroFunction<dim>(
-                                                 dim),
-                                               clamped_constraints);
+    VectorTools::interpolate_boundary_values(dof_handler,
+                                             data.clamped_boundary,
+                                             Functions::ZeroFunction<dim>(dim),
+                                             clamped_constraints);
     clamped_constraints.close();
 
     DynamicSparsityPattern dsp(n_dofs);
@@ -702,7 +789,7 @@ namespace Step2
     std::map<types::global_dof_index, ContactNode<dim>> nodes;
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() && data.contact_ids.count(face->boundary_id()))
+        if (face->at_boundary() && face->boundary_id() == data.contact_boundary)
           {
             fe_face.reinit(cell, face);
             const double share = face->measure() / face->n_vertices();
@@ -771,21 +858,20 @@ namespace Step2
             for (unsigned int i = 0; i < n; ++i)
               cell_rhs(i) += f0 * fe_values[v].value(i, q) * fe_values.JxW(q);
           }
+        // every boundary but $\Gamma_1$: the data's traction() knows $f_2$
+        // and $f_3$ apart by the boundary id, as step-1's does
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary() &&
-              (data.traction_ids.count(face->boundary_id()) ||
-               data.contact_ids.count(face->boundary_id())))
+              face->boundary_id() != data.clamped_boundary)
             {
-              const bool on_traction =
-                data.traction_ids.count(face->boundary_id()) > 0;
               fe_face.reinit(cell, face);
               for (const unsigned int q : fe_face.quadrature_point_indices())
                 {
-                  const Point<dim>     &x      = fe_face.quadrature_point(q);
-                  const Tensor<1, dim> &normal = fe_face.normal_vector(q);
-                  const Tensor<1, dim>  f =
-                    on_traction ? data.surface_traction(x, normal, time) :
-                                   data.contact_traction(x, normal, time);
+                  const Tensor<1, dim> f =
+                    data.traction(fe_face.quadrature_point(q),
+                                  fe_face.normal_vector(q),
+                                  face->boundary_id(),
+                                  time);
                   for (unsigned int i = 0; i < n; ++i)
                     cell_rhs(i) += f * fe_face[v].value(i, q) * fe_face.JxW(q);
                 }
@@ -1240,9 +1326,8 @@ namespace Step2
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
         {
-          const Tensor<1, dim> u_0 =
-            data.initial_displacement(cell->vertex(v), 0);
-          const Tensor<1, dim> w_0 = data.initial_velocity(cell->vertex(v), 0);
+          const Tensor<1, dim> u_0 = data.initial_displacement(cell->vertex(v));
+          const Tensor<1, dim> w_0 = data.initial_velocity(cell->vertex(v));
           for (unsigned int c = 0; c < dim; ++c)
             {
               displacement(cell->vertex_dof_index(v, c)) = u_0[c];
@@ -1269,7 +1354,7 @@ namespace Step2
         const unsigned int iterations = solve();
         newton_iterations += iterations;
 
-        if (data.exact)
+        if (data.has_exact_solution())
           accumulate_errors(time);
         if (write)
           {
@@ -1420,7 +1505,7 @@ main(int argc, char **argv)
     {
       if (run_block)
         {
-          const ProblemData<2>  block = block_problem();
+          const BlockData       block;
           KelvinVoigtContact<2> problem(block, 3, 0.04, directory);
           std::cout << "The block of prm/block_2d.prm, 32 x 8 cells, k = 0.04"
                     << std::endl;
@@ -1430,8 +1515,8 @@ main(int argc, char **argv)
         }
       if (run_convergence)
         {
-          const ProblemData<2> exact = manufactured_problem();
-          ConvergenceTable     table;
+          const ManufacturedData exact;
+          ConvergenceTable       table;
           for (unsigned int level = 0; level < n_levels; ++level)
             {
               KelvinVoigtContact<2> problem(exact,
