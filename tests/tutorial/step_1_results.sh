@@ -3,7 +3,8 @@
 # tutorial/step-1 prints exactly the output shown in its results section
 # (the text block after "What the program prints" in
 # tutorial/step-1/doc/results.md): the branches of the block at each load
-# value and the convergence table of the manufactured solution.
+# value and the convergence table of the manufactured solution; and the
+# values of lambda_1 that the introduction and the results quote in prose.
 set -euo pipefail
 step=$1; src=$2; work=$3
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
@@ -18,4 +19,18 @@ if ! diff -u expected.txt printed.txt; then
   echo "FAIL: step-1 prints something else than tutorial/step-1/doc/results.md shows"
   exit 1
 fi
-echo "step-1 prints the $(wc -l < printed.txt) lines of its results section"
+# The prose quotes the smallness constant lambda_1: the block's value (in
+# the introduction and the results) and the square's on the coarsest and
+# finest mesh (the results) must be those printed.
+block_lambda=$(sed -n 's/.*lambda_1 = \([0-9.]*\) .*/\1/p' printed.txt)
+coarse_lambda=$(awk '$1 == 4 {print $4}' printed.txt)
+fine_lambda=$(awk '$1 == 64 {print $4}' printed.txt)
+for quote in "prints it: $block_lambda >|intro.md" \
+             "finds λ₁ = $block_lambda on|results.md" \
+             "from $coarse_lambda at|results.md" \
+             "to $fine_lambda at h = 1/64|results.md"; do
+  page=$src/tutorial/step-1/doc/${quote#*|}
+  tr '\n' ' ' < "$page" | grep -qF -- "${quote%%|*}" ||
+    { echo "FAIL: '${quote%%|*}' is not in $page"; exit 1; }
+done
+echo "step-1 prints the $(wc -l < printed.txt) lines of its results section; lambda_1 = $block_lambda (block), $coarse_lambda to $fine_lambda (square) as the pages quote"

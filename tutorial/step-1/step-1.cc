@@ -37,11 +37,16 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -54,13 +59,38 @@ namespace Step1
   // The normal compliance: the response $\xi_\nu$ of the foundation to a
   // penetration $r = u_\nu > 0$ is a continuous piecewise-linear function
   // given by breakpoints $(r_k, \xi_k)$, $r_0 = 0$, linear in between and
-  // constant after the last one. Its value at zero is the jump $a$:
-  // $\partial j_\nu(0) = [0, a]$. We split it as in doc/theory.md section
-  // 1, $\partial j_\nu(r) = \partial(a r_+)(r) + p(r)$, into the convex jump
-  // and the Lipschitz remainder $p(r) = \xi(r) - a$ for $r > 0$, $p = 0$
-  // for $r \le 0$. A law that rises and then falls is nonmonotone: $j_\nu$
-  // is not convex, but $j_\nu + \alpha_\nu r^2/2$ is, with $\alpha_\nu$ the
-  // steepest descent slope of $\xi$.
+  // constant after the last one. For $r < 0$ the body has left the
+  // foundation and there is no force; at $r = 0$ the law jumps from $0$ to
+  // $\xi_0 = a$, and the Clarke subdifferential fills the jump with the
+  // whole interval: $\partial j_\nu(0) = [0, a]$ (the introduction,
+  // "Nonsmooth and nonconvex", draws it). We split the law into the convex
+  // jump and a Lipschitz remainder,
+  // @f[
+  //   \partial j_\nu(r) = \partial(a r_+)(r) + p(r),\qquad
+  //   p(r) = \xi(r) - a \ (r > 0),\quad p(r) = 0 \ (r \le 0),
+  // @f]
+  // because the two parts are treated differently: the jump becomes a
+  // complementarity condition with a projection onto $[0, a]$ (a set
+  // valued, convex piece), the remainder a smooth force that Newton's
+  // method linearises. A law that rises and then falls is nonmonotone:
+  // $j_\nu$ is not convex, but $j_\nu + \alpha_\nu r^2/2$ is, with
+  // $\alpha_\nu$ the steepest descent slope of $\xi$ (the relaxed
+  // monotonicity of the introduction).
+  //
+  // The rest of the program sees a law only through these seven members,
+  // which is all a new law has to supply (the exercise of the results
+  // page):
+  // - jump(): $a$, the height of the jump at $r = 0$;
+  // - response(r): $\xi(r)$ for $r > 0$;
+  // - remainder(r) and remainder_derivative(r): $p(r)$ and $p'(r)$;
+  // - potential(r): $j_\nu(r) = \int_0^r \xi$, for the energy of the line
+  //   search;
+  // - alpha: $\alpha_\nu$, for the uniqueness condition;
+  // - steepest_rise: the largest $p'$, for the floor of the constants $c_i$
+  //   (setup_contact_nodes()).
+  //
+  // breakpoints() only serves the output of the law for the figures
+  // (write_law()).
   class PiecewiseLinearLaw
   {
   public:
@@ -131,6 +161,12 @@ namespace Step1
 
     double alpha = 0, steepest_rise = 0;
 
+    const std::vector<std::pair<double, double>> &
+    breakpoints() const
+    {
+      return points;
+    }
+
   private:
     // The segment $[r_k, r_{k+1})$ that holds $r$ (the last $k$ beyond the
     // last breakpoint), and its slope.
@@ -152,6 +188,31 @@ namespace Step1
 
     std::vector<std::pair<double, double>> points;
   };
+
+  // The law as the program uses it, written to a CSV file (r, xi, j) for
+  // the figures of the documentation (doc/plot_law.py, doc/plot_contact.py),
+  // so that a changed law is drawn as it is: $\xi$ and $j_\nu$ from $r =
+  // -0.05$ to twice the last breakpoint, at every breakpoint and 400 points
+  // between, with two rows at $r = 0$ for the vertical segment $[0, a]$ of
+  // the subdifferential. The column is_breakpoint marks the $r_k$.
+  void
+  write_law(const PiecewiseLinearLaw &law, const std::string &filename)
+  {
+    std::ofstream file(filename);
+    AssertThrow(file, ExcIO());
+    file << "r,xi,potential,is_breakpoint\n" << std::setprecision(10);
+    const double end = 2 * law.breakpoints().back().first;
+    file << -0.05 << ",0,0,0\n"
+         << "0,0,0,0\n";
+    std::map<double, bool> r_values; // r -> is a breakpoint
+    for (unsigned int k = 0; k <= 400; ++k)
+      r_values[end * k / 400.] = false;
+    for (const auto &point : law.breakpoints())
+      r_values[point.first] = true;
+    for (const auto &[r, is_breakpoint] : r_values)
+      file << r << ',' << (r > 0 ? law.response(r) : law.jump()) << ','
+           << law.potential(r) << ',' << is_breakpoint << '\n';
+  }
 
   // @sect3{The problem data}
 
@@ -267,11 +328,13 @@ namespace Step1
   // $u$ is $C^2$, so $f_0 = -\mathrm{Div}\,\sigma(u)$ is continuous.
   // It solves the problem with $f_2 = \sigma\nu$ and, on $\Gamma_3$,
   // $f_3 = \sigma\nu + \xi_\nu\nu + \xi_\tau$ with $\xi_\nu \in \partial
-  // j_\nu(u_\nu)$, $\xi_\tau \in \partial\varphi(u_\tau)$
-  // (doc/theory.md section 9.7): $\xi_\nu = a/2$ and $\xi_\tau = F_b/2$
-  // where the exact solution holds at zero (strictly inside the
-  // intervals). The points $\frac14, \frac12, \frac34$ where $f_3$ jumps
-  // are mesh vertices.
+  // j_\nu(u_\nu)$, $\xi_\tau \in \partial(F_b|\cdot|)(u_\tau)$: the
+  // extra traction $f_3$ is exactly what the laws would have to supply
+  // for $u$ to be in equilibrium. Where the exact solution holds at zero
+  // we take $\xi_\nu = a/2$ and $\xi_\tau = F_b/2$, strictly inside the
+  // intervals, so that no node sits at the switch between two branches
+  // (where the discrete branches could flip with round-off). The points
+  // $\frac14, \frac12, \frac34$ where $f_3$ jumps are mesh vertices.
   class ManufacturedData : public ProblemData<2>
   {
   public:
@@ -423,6 +486,14 @@ namespace Step1
       return dof_handler.n_dofs();
     }
 
+    // The constant $\lambda_1$ of the smallness condition (the
+    // introduction, "Uniqueness"): $J_h$ is strictly convex, and the
+    // discrete problem has exactly one solution, when $\alpha_\nu <
+    // \lambda_1$.
+    double
+    smallness_constant() const;
+
+    // The Newton iterations of the last run(), for the convergence table.
     unsigned int newton_iterations = 0;
 
   private:
@@ -439,6 +510,9 @@ namespace Step1
     void
     solve();
 
+    // The pieces of solve(): the state of a node at the current iterate,
+    // the branches, the nonsmooth residual, the Newton system and the
+    // energy of the line search.
     struct NodeState;
     NodeState
     node_state(const ContactNode<dim> &node,
@@ -459,16 +533,23 @@ namespace Step1
     FESystem<dim>      fe;
     DoFHandler<dim>    dof_handler;
 
+    // Two sets of constraints: the clamped boundary alone, with which $K$
+    // and $F_n$ are assembled, and the clamped boundary plus the held
+    // conditions of the current branches, rebuilt in every Newton
+    // iteration (as step-41 rebuilds its active set).
     AffineConstraints<double> clamped_constraints;
     AffineConstraints<double> newton_constraints;
 
+    // $K$ and the matrix of one Newton step share one sparsity pattern:
+    // the contact terms couple only the components of one node, which the
+    // pattern of $K$ already holds.
     SparsityPattern      sparsity_pattern;
     SparseMatrix<double> stiffness_matrix;
     SparseMatrix<double> newton_matrix;
 
-    Vector<double> solution;
-    Vector<double> load;
-    Vector<double> newton_rhs;
+    Vector<double> solution;   // $u$, kept from one load value to the next
+    Vector<double> load;       // $F_n$
+    Vector<double> newton_rhs; // $g$ of the Newton step, condensed
 
     std::vector<ContactNode<dim>> contact_nodes;
   };
@@ -493,6 +574,9 @@ namespace Step1
   void
   StaticContactProblem<dim>::make_grid(const unsigned int n_refinements)
   {
+    // The coarse mesh comes from the data (one cell per unit length), so
+    // that every refinement halves $h$ and the points where the
+    // manufactured solution switches branches stay mesh vertices.
     data.make_coarse_grid(triangulation);
     triangulation.refine_global(n_refinements);
   }
@@ -527,8 +611,10 @@ namespace Step1
     load.reinit(dof_handler.n_dofs());
     newton_rhs.reinit(dof_handler.n_dofs());
 
-    // $K = B$ does not depend on the load: assemble it once (the load is
-    // assembled again in run()).
+    // The contact nodes need the diagonal of $K$ (their constants $c_i$),
+    // so $K$ is assembled here, before any load value; run() assembles it
+    // again together with the load of its $t$ (one function computes both,
+    // and $K$ comes out the same).
     assemble_system(clamped_constraints, stiffness_matrix, load);
     setup_contact_nodes();
   }
@@ -540,8 +626,14 @@ namespace Step1
   // like a right-hand side. Nodes on $\Gamma_1$ are not contact nodes
   // (they do not move). The constant $c_i$ of the complementarity
   // functions is the mean diagonal entry of $K$ at the node over $m_i$,
-  // and at least twice the law's steepest rise (doc/theory.md 10.3): it
-  // changes the path of the iteration, never its solution.
+  // and at least twice the law's steepest rise. Why a floor: on a free
+  // segment the multiplier $s$ falls by $p'$ as $u_\nu$ grows, so $q =
+  // s + c\,u_\nu$ grows along the law only if $c > p'$; below that an
+  // iterate could be held on the wrong branch. The diagonal of $K$ makes
+  // $c_i u_\nu$ and $s$ forces of the same size, so that neither term of
+  // $q$ drowns the other. $c_i$ changes the path of the iteration, never
+  // its solution (the complementarity functions vanish at the same
+  // points for every $c > 0$).
   template <int dim>
   void
   StaticContactProblem<dim>::setup_contact_nodes()
@@ -574,6 +666,11 @@ namespace Step1
                 }
           }
 
+    // Every vertex of $\Gamma_3$ is met once per face it belongs to: the
+    // flags keep the first meeting. A vertex that is also on $\Gamma_1$
+    // (the corner of the clamped side) is held at zero by the clamped
+    // constraints and must not get contact conditions too: a degree of
+    // freedom can carry only one constraint.
     contact_nodes.clear();
     std::vector<bool> seen(dof_handler.n_dofs(), false);
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -638,6 +735,14 @@ namespace Step1
     Vector<double>                       cell_rhs(n);
     std::vector<types::global_dof_index> dofs(n);
 
+    // The constraints are applied while assembling
+    // (distribute_local_to_global()), so the matrix and the vector come out
+    // condensed: for the clamped constraints that is $K$ and $F_n$ with the
+    // clamped rows decoupled, for those of a Newton step the reduced
+    // system of that step. The load uses one Gauss point more than the
+    // matrix: the data are not polynomials (the manufactured ones are
+    // piecewise cubic and jump on $\Gamma_3$), and their quadrature error
+    // must stay below the discretisation error on the finest mesh.
     matrix = 0;
     rhs    = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -702,7 +807,8 @@ namespace Step1
   //   \lambda = G_{i,\tau}/m_i
   // @f]
   // (Tresca friction has no remainder), and the complementarity functions
-  // (doc/theory.md section 3, with $u$ for $w$) are
+  // (the introduction shows why they vanish exactly where the laws hold)
+  // are
   // @f[
   //   C_\nu = s - P_{[0,a]}(s + c\,u_\nu),\qquad
   //   C_\tau = \lambda - P_{|\cdot|\le F_b}(\lambda + c\,u_\tau).
@@ -730,6 +836,9 @@ namespace Step1
         u[c]        = solution(node.dofs[c]);
         traction[c] = -residual(node.dofs[c]) / node.mass;
       }
+    // The residual at a contact node is the force the laws do not yet
+    // supply; divided by the weight $m_i$ it is a traction, comparable with
+    // the law's response $\xi$ and the friction bound $F_b$.
     NodeState m;
     m.u_nu   = u * node.normal;
     m.u_tau  = u - m.u_nu * node.normal;
@@ -785,6 +894,10 @@ namespace Step1
   StaticContactProblem<dim>::nonsmooth_residual(
     const Vector<double> &residual) const
   {
+    // At a contact node the residual is not expected to vanish (it is the
+    // contact force); there the complementarity functions take its place.
+    // The clamped rows of the residual are zero already (the condensed
+    // $K$ times a $u$ that vanishes there, minus a zero load).
     Vector<double> free_part(residual);
     double         contact_part = 0;
     for (const ContactNode<dim> &node : contact_nodes)
@@ -815,11 +928,15 @@ namespace Step1
   // derivative $L_i$, with $g_i = F_i + L_i u_i - f_i$:
   // - penetrating: $f_i = m_i (a + p(u_\nu))\nu$, $L_i = m_i p'(u_\nu)
   //   \nu\otimes\nu$ (negative on a falling segment of the law);
-  // - slip: $f_i = m_i F_b d$, $d = q_\tau/|q_\tau|$, and the
-  //   condensed tangent of the friction disk $L_i = m_i F_b c /(|q_\tau| -
-  //   F_b)\,(I - \nu\otimes\nu - d\otimes d)$, which vanishes in 2D (the
-  //   denominator is kept above $|q_\tau|/100$ for nodes that barely
-  //   slip).
+  // - slip: $f_i = m_i F_b d + T_i u_\tau$, $d = q_\tau/|q_\tau|$, and
+  //   $L_i = T_i$, the condensed tangent of the friction disk $T_i = m_i
+  //   F_b c /(|q_\tau| - F_b)\,(I - \nu\otimes\nu - d\otimes d)$, which
+  //   vanishes in 2D (the denominator is kept above $|q_\tau|/100$ for
+  //   nodes that barely slip). The term $T_i u_\tau$: the Newton step of
+  //   $C_\tau = 0$ gives the new multiplier $\lambda = F_b d + T_i x_i /
+  //   m_i$, whose part across $d$ grows with the new slip $x_i$. Written as
+  //   $f_i + L_i(x_i - u_i)$, like the other forces, it needs $f_i = m_i
+  //   F_b d + T_i u_i$, and $T_i u_i = T_i u_\tau$ since $T_i\nu = 0$.
   //
   // The held conditions are linear constraints between the components of
   // a node, solved for its component of largest $|\nu_c|$; deal.II's
@@ -942,11 +1059,19 @@ namespace Step1
   // branches, stop when no branch changed and the nonsmooth residual is
   // below the tolerance (relative to $|F_n|$), else solve the Newton
   // system on the current branches with a direct solver and take the
-  // step, halved while it does not decrease $J$.
+  // step, halved until it does not raise $J$ (the full step if no length
+  // lowers it; the rule is explained where it is coded).
   template <int dim>
   void
   StaticContactProblem<dim>::solve()
   {
+    // The tolerance is relative to the load: the residual is a force, and
+    // $10^{-11}|F_n|$ lies well above the round-off of evaluating it while
+    // being tight enough for the comparison with the full program at
+    // $10^{-10}$. Once the residual is a hundred times below it, the
+    // iteration stops even if a branch still changes: a node whose
+    // $q$ lies within round-off of a switch may flip back and forth
+    // without changing the solution.
     const double   tolerance = 1e-11 * load.l2_norm();
     Vector<double> residual(dof_handler.n_dofs());
     newton_iterations = 0;
@@ -969,11 +1094,24 @@ namespace Step1
         direct_solver.solve(trial);
         newton_constraints.distribute(trial);
 
-        // backtracking on J: the full step unless it raises the energy
+        // The line search on $J$, the same rule as in step-2: try $\theta
+        // = 1, \frac12, \frac14, \dots, 2^{-10}$ and take the first step
+        // $u + \theta d$ that does not raise $J$ beyond round-off (a
+        // relative $10^{-12}$, since $J$ is a sum of terms of either sign
+        // and its last digits are noise). A full Newton step can raise $J$
+        // because $j_\nu$ is not convex: the quadratic model of one branch
+        // is wrong beyond that branch's segment of the law. If no step
+        // length lowers $J$ (the direction is not one of descent, which
+        // happens only while the branches are still wrong), the full step
+        // is taken: a tiny step would leave the branches as they are and
+        // stall the iteration, while the full step moves to the branches
+        // the next update_active_set() corrects. The default run (the block
+        // and five levels) never reaches that fallback.
         Vector<double> direction(trial);
         direction -= solution;
-        const double J0 = energy(solution);
-        for (double theta = 1; theta >= 1. / 1024; theta /= 2)
+        const double J0    = energy(solution);
+        double       theta = 1;
+        for (; theta >= 1. / 1024; theta /= 2)
           {
             trial = solution;
             trial.add(theta, direction);
@@ -981,7 +1119,9 @@ namespace Step1
             if (J <= J0 + 1e-12 * (std::abs(J0) + std::abs(J)))
               break;
           }
-        solution = trial;
+        if (theta < 1. / 1024)
+          theta = 1;
+        solution.add(theta, direction);
         ++newton_iterations;
       }
   }
@@ -996,6 +1136,68 @@ namespace Step1
     time = t;
     assemble_system(clamped_constraints, stiffness_matrix, load);
     solve();
+  }
+
+  // @sect4{StaticContactProblem::smallness_constant}
+
+  // The uniqueness condition of the introduction asks that
+  // @f[
+  //   \lambda_1 = \min_{v \ne 0}
+  //     \frac{v\cdot K v}{\sum_i m_i (v_i\cdot\nu_i)^2} > \alpha_\nu,
+  // @f]
+  // the smallest eigenvalue of $K x = \lambda N x$ with the normal boundary
+  // mass $N = \sum_i m_i \nu_i\otimes\nu_i$ (nodal quadrature of
+  // $\int_{\Gamma_3} v_\nu^2$). $N$ is singular (it sees only the normal
+  // components on $\Gamma_3$), so we compute the largest eigenvalue
+  // $1/\lambda_1$ of $K^{-1}N$ instead, by the power iteration
+  // $x \leftarrow K^{-1} N x$: each step is one solve with the UMFPACK
+  // factorisation of $K$, computed once. The Rayleigh quotient
+  // $x\cdot Kx / x\cdot Nx$ of the iterate approaches $\lambda_1$ from
+  // above, with an error of the square of the iterate's; we stop when it
+  // changes by less than $10^{-12}$ relative. The start is the normal
+  // field on $\Gamma_3$, which the lowest mode resembles. The full program
+  // estimates the same number (by a preconditioned eigensolver) and warns
+  // when $\alpha_\nu$ is not below it. Nothing here changes the solution.
+  template <int dim>
+  double
+  StaticContactProblem<dim>::smallness_constant() const
+  {
+    const auto apply_N = [&](const Vector<double> &v, Vector<double> &Nv) {
+      Nv = 0;
+      for (const ContactNode<dim> &node : contact_nodes)
+        {
+          double v_nu = 0;
+          for (unsigned int c = 0; c < dim; ++c)
+            v_nu += v(node.dofs[c]) * node.normal[c];
+          for (unsigned int c = 0; c < dim; ++c)
+            Nv(node.dofs[c]) = node.mass * v_nu * node.normal[c];
+        }
+    };
+
+    SparseDirectUMFPACK K_inverse;
+    K_inverse.initialize(stiffness_matrix);
+    Vector<double> x(dof_handler.n_dofs()), Nx(x), Kx(x);
+    for (const ContactNode<dim> &node : contact_nodes)
+      for (unsigned int c = 0; c < dim; ++c)
+        x(node.dofs[c]) = node.normal[c];
+
+    double lambda = std::numeric_limits<double>::max();
+    for (unsigned int iteration = 0; iteration < 1000; ++iteration)
+      {
+        apply_N(x, Nx);
+        K_inverse.vmult(x, Nx);
+        x /= x.l2_norm();
+        stiffness_matrix.vmult(Kx, x);
+        apply_N(x, Nx);
+        const double quotient = (x * Kx) / (x * Nx);
+        if (std::abs(quotient - lambda) <= 1e-12 * quotient)
+          return quotient;
+        lambda = quotient;
+      }
+    AssertThrow(false,
+                ExcMessage("The power iteration for the smallness constant "
+                           "did not converge in 1000 steps."));
+    return lambda;
   }
 
   // @sect4{StaticContactProblem::output_results}
@@ -1026,6 +1228,10 @@ namespace Step1
     std::ofstream vtu(std::string("solution-") + suffix + ".vtu");
     data_out.write_vtu(vtu);
 
+    // The contact quantities come from the residual at the solution, as in
+    // solve(): the column minus_sigma_nu is $s + p(u_\nu)$, the whole
+    // normal traction, and sigma_tau the first component of the
+    // multiplier $\lambda$ (the tangent of the bottom is $e_x$).
     Vector<double> residual(dof_handler.n_dofs());
     stiffness_matrix.vmult(residual, solution);
     residual -= load;
@@ -1072,7 +1278,9 @@ namespace Step1
   // @sect4{StaticContactProblem::compute_errors}
 
   // $E_H = \|u - u_h\|_{L^2}$ and $E_V = \|\varepsilon(u - u_h)\|_{L^2}$
-  // (doc/theory.md section 9.7), with a 4-point Gauss rule per direction.
+  // with a 4-point Gauss rule per direction: two points more than the
+  // assembly, since the exact solution is a cubic and the quadrature error
+  // must stay below the discretisation error on the finest mesh.
   template <int dim>
   template <class Exact>
   std::pair<double, double>
@@ -1107,53 +1315,171 @@ namespace Step1
   }
 } // namespace Step1
 
+// @sect3{The command line}
+
+// A student runs the program with no arguments, or with one of the modes
+// below. Every argument is checked before anything is computed, and a bad
+// one stops the program with a one-paragraph message and the exit code 2
+// (1 is kept for a run that fails, e.g. a Newton iteration that does not
+// converge). The reason is practical: std::stoi() would accept "3x" as 3,
+// and a negative number read into an unsigned int becomes 4294967295
+// levels, a run that never ends.
+namespace CommandLine
+{
+  constexpr int exit_bad_arguments = 2;
+
+  // Each level of the convergence study halves h: four times the unknowns
+  // of the level before and, with the direct solver UMFPACK, about four
+  // times the memory and more than four times the time. Seven levels end
+  // at $h = 1/256$ with 132,098 unknowns: measured, 96 s and 0.63 GB on
+  // one core (doc/results.md, "Running it"). An eighth level would need
+  // about 2.5 GB and ten minutes, a ninth ten gigabytes: the program
+  // refuses them rather than let a typo exhaust the machine.
+  constexpr unsigned int max_levels = 7;
+
+  const char *const usage =
+    "usage: step-1                        the block, then 5 levels of the\n"
+    "                                     manufactured solution\n"
+    "       step-1 block                  the block only\n"
+    "       step-1 convergence [LEVELS]   LEVELS levels (1 to 7, default 5)\n"
+    "                                     of the manufactured solution\n"
+    "       step-1 --help                 this text\n"
+    "exit codes: 0 done, 1 the computation failed, 2 a bad argument";
+
+  // The error of a bad command line: its message names the argument.
+  struct BadArguments : public std::runtime_error
+  {
+    using std::runtime_error::runtime_error;
+  };
+
+  // A number of levels: decimal digits only (no sign, no blanks, nothing
+  // after the number), from 1 to max_levels. Reading the digits ourselves
+  // rejects "-1", "+2", "abc", "3x" and " 3" alike; at most three digits
+  // keep the conversion far from overflow.
+  unsigned int
+  parse_levels(const std::string &text)
+  {
+    const bool digits_only =
+      !text.empty() && text.size() <= 3 &&
+      std::all_of(text.begin(), text.end(), [](const char c) {
+        return c >= '0' && c <= '9';
+      });
+    const unsigned int levels = digits_only ? std::stoul(text) : 0;
+    if (!digits_only || levels < 1 || levels > max_levels)
+      throw BadArguments("the number of levels must be a whole number "
+                         "from 1 to " +
+                         std::to_string(max_levels) + ", not '" + text +
+                         "' (level 7 has 132,098 unknowns and takes 0.63 GB; "
+                         "each further level four times more)");
+    return levels;
+  }
+} // namespace CommandLine
+
 // @sect3{The main function}
 
 // First the block at four load values $t = 0.25, 0.5, 0.75, 1$, each one
 // static problem started from the previous solution; then the
 // manufactured solution on the meshes $h = 1/4, \dots, 1/64$, with the
-// errors and their observed orders in a ConvergenceTable.
+// errors and their observed orders in a ConvergenceTable. The modes
+// "block" and "convergence LEVELS" run one of the two.
 int
-main()
+main(int argc, char **argv)
 {
+  using namespace Step1;
+  bool         run_block = true, run_convergence = true;
+  unsigned int n_levels = 5;
   try
     {
-      using namespace Step1;
+      const std::vector<std::string> arguments(argv + 1, argv + argc);
+      const std::string mode = arguments.empty() ? "" : arguments[0];
+      const bool        help = mode == "--help" || mode == "-h";
+      if (help)
+        run_block = run_convergence = false;
+      else if (mode == "block")
+        run_convergence = false;
+      else if (mode == "convergence")
+        run_block = false;
+      else if (!arguments.empty())
+        throw CommandLine::BadArguments("unknown mode '" + mode +
+                                        "' (the modes are block and "
+                                        "convergence)");
+      // how many arguments the mode takes, itself included
+      const std::size_t n_allowed = mode.empty()              ? 0 :
+                                    (help || mode == "block") ? 1 :
+                                                                2;
+      if (arguments.size() > n_allowed)
+        throw CommandLine::BadArguments("too many arguments: '" +
+                                        arguments[n_allowed] + "' after '" +
+                                        arguments[n_allowed - 1] + "'");
+      if (help)
+        {
+          std::cout << CommandLine::usage << std::endl;
+          return 0;
+        }
+      if (mode == "convergence" && arguments.size() == 2)
+        n_levels = CommandLine::parse_levels(arguments[1]);
+    }
+  catch (const CommandLine::BadArguments &error)
+    {
+      std::cerr << "step-1: " << error.what() << ".\n"
+                << CommandLine::usage << std::endl;
+      return CommandLine::exit_bad_arguments;
+    }
 
-      std::cout << "The block, 3 global refinements:" << std::endl;
-      const BlockData         block;
-      StaticContactProblem<2> block_problem(block, 3);
-      std::cout << "  " << block_problem.n_dofs()
-                << " dofs, alpha_nu = " << block.law.alpha << std::endl;
-      for (unsigned int n = 1; n <= 4; ++n)
+  try
+    {
+      if (run_block)
         {
-          block_problem.run(0.25 * n);
-          std::cout << "  ";
-          block_problem.output_results(n);
+          std::cout << "The block, 3 global refinements:" << std::endl;
+          const BlockData         block;
+          StaticContactProblem<2> block_problem(block, 3);
+          write_law(block.law, "law.csv");
+          // The uniqueness condition, checked before solving.
+          const double lambda_1 = block_problem.smallness_constant();
+          std::cout << "  " << block_problem.n_dofs()
+                    << " dofs, alpha_nu = " << block.law.alpha
+                    << ", lambda_1 = " << lambda_1
+                    << (block.law.alpha < lambda_1 ?
+                          " (alpha_nu < lambda_1: one solution)" :
+                          " (alpha_nu >= lambda_1: maybe several solutions)")
+                    << std::endl;
+          for (unsigned int n = 1; n <= 4; ++n)
+            {
+              block_problem.run(0.25 * n);
+              std::cout << "  ";
+              block_problem.output_results(n);
+            }
         }
 
-      std::cout << "\nThe manufactured solution:" << std::endl;
-      const ManufacturedData manufactured;
-      ConvergenceTable       table;
-      for (unsigned int refinements = 2; refinements <= 6; ++refinements)
+      if (run_convergence)
         {
-          StaticContactProblem<2> problem(manufactured, refinements);
-          problem.run(1);
-          const auto [E_H, E_V] = problem.compute_errors(manufactured);
-          table.add_value("1/h", 1u << refinements);
-          table.add_value("dofs", problem.n_dofs());
-          table.add_value("Newton", problem.newton_iterations);
-          table.add_value("E_H", E_H);
-          table.add_value("E_V", E_V);
+          std::cout << (run_block ? "\n" : "")
+                    << "The manufactured solution:" << std::endl;
+          const ManufacturedData manufactured;
+          ConvergenceTable       table;
+          for (unsigned int refinements = 2; refinements < 2 + n_levels;
+               ++refinements)
+            {
+              StaticContactProblem<2> problem(manufactured, refinements);
+              problem.run(1);
+              const auto [E_H, E_V] = problem.compute_errors(manufactured);
+              table.add_value("1/h", 1u << refinements);
+              table.add_value("dofs", problem.n_dofs());
+              table.add_value("Newton", problem.newton_iterations);
+              table.add_value("lambda_1", problem.smallness_constant());
+              table.set_precision("lambda_1", 1);
+              table.add_value("E_H", E_H);
+              table.add_value("E_V", E_V);
+            }
+          for (const std::string column : {"E_H", "E_V"})
+            {
+              table.set_scientific(column, true);
+              table.set_precision(column, 3);
+              table.evaluate_convergence_rates(
+                column, ConvergenceTable::reduction_rate_log2);
+            }
+          table.write_text(std::cout);
         }
-      for (const std::string column : {"E_H", "E_V"})
-        {
-          table.set_scientific(column, true);
-          table.set_precision(column, 3);
-          table.evaluate_convergence_rates(
-            column, ConvergenceTable::reduction_rate_log2);
-        }
-      table.write_text(std::cout);
     }
   catch (std::exception &exc)
     {

@@ -1,7 +1,9 @@
+#!/usr/bin/python3
 """plot_convergence.py TABLE PNG: the errors E_H, E_V, E_u of the table
 that 'step-2 convergence L' prints (saved to TABLE) against h, log-log,
 with a slope-1 line; written to PNG (doc/convergence.png is made by
-  ./step-2 convergence 4 > table.txt && python3 doc/plot_convergence.py table.txt doc/convergence.png)."""
+  ./step-2 convergence 4 > table.txt && doc/plot_convergence.py table.txt doc/convergence.png).
+Needs matplotlib (Debian: python3-matplotlib)."""
 import sys
 
 import matplotlib
