@@ -41,26 +41,32 @@ namespace hemicontact
   class Checkpointer;
 
   /**
-   * The dynamic contact problem of Han & Han (2019), Problem 4.4: a
-   * Kelvin-Voigt body, a normal damped response law and a friction law on
-   * Gamma_3, backward Euler in the velocity and the left-point rule for the
-   * displacement, P1/Q1 elements, nodal quadrature on Gamma_3.
+   * The contact problem of every class (doc/theory.md sections 1-9): the
+   * dynamic one of Han & Han (2019), Problem 4.4 -- a Kelvin-Voigt body, a
+   * normal damped response law and a friction law on Gamma_3, backward
+   * Euler in the velocity, the left-point rule for the displacement, P1/Q1
+   * elements, nodal quadrature on Gamma_3 -- and the quasistatic and static
+   * classes and the implicit rule, whose step matrix, right-hand side and
+   * update StepScheme holds. A MemoryHistory adds the relaxation memory of
+   * the stress, the normal memory, the accumulated slip and wear (section
+   * 11).
    *
    * Each time step minimises the step energy J_n by a semismooth Newton /
-   * primal-dual active-set method (doc/theory.md section 3). The
-   * quasistatic class and the implicit rule (doc/theory.md section 9) change
-   * the step matrix, the right-hand side and the update of the
-   * displacement; StepScheme holds what differs.
+   * primal-dual active-set method (doc/theory.md section 3).
    *
    * The member functions are spread over source/problem/: setup.cc (mesh,
    * dofs, constraints, contact nodes, initial state), resume.cc (the same
    * from a checkpoint), assembly.cc (matrices and loads), step.cc (one
    * step, by ActiveSetNewton on a ContactStep), diagnostics.cc (energies,
-   * convexity), stability.cc (the time step limit), adaptivity.cc and
-   * residual_indicator.cc (indicators, the new mesh), state_projection.cc
-   * (the state moved to it by projection) and run.cc (run() and the time
-   * loop). The run's output and checkpoints are a RunOutput and a
-   * Checkpointer (source/output/).
+   * convexity), stability.cc and memory_stability_check.cc (the time-step
+   * limits of the left-point rule and of the memory rule),
+   * wall_admissibility.cc (the initial state and the transferred state
+   * against the wall), adaptivity.cc (indicators, the new mesh),
+   * residual_indicator.cc (estimate_error() and the residual indicator),
+   * time_indicator.cc (the time part of the estimate), state_projection.cc
+   * (the state moved by projection), target_error.cc (a load value solved
+   * to a tolerance) and run.cc (run() and the time loop). The run's output
+   * and checkpoints are a RunOutput and a Checkpointer (source/output/).
    */
   template <int dim>
   class ContactProblem
