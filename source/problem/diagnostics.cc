@@ -3,6 +3,7 @@
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/model/contact_step.h>
 #include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/solver/constrained_operator.h>
 #include <hemicontact/solver/generalized_eigenvalue.h>
 
 #include <algorithm>
@@ -268,19 +269,10 @@ namespace hemicontact
       out.compress(VectorOperation::insert);
       base_constraints.set_zero(out);
     };
-    const auto apply_k = [&](const TrilinosWrappers::MPI::Vector &in,
-                             TrilinosWrappers::MPI::Vector       &out) {
-      step_matrix.vmult(out, in);
-      base_constraints.set_zero(out);
-    };
+    const auto apply_k = constrained(step_matrix, base_constraints);
     // preconditioned by one cycle of the AMG of K0, which the steps reuse
-    const TrilinosWrappers::PreconditionAMG &amg =
-      preconditioner.step_amg(step_matrix);
-    const auto precondition = [&](const TrilinosWrappers::MPI::Vector &in,
-                                  TrilinosWrappers::MPI::Vector       &out) {
-      amg.vmult(out, in);
-      base_constraints.set_zero(out);
-    };
+    const auto precondition =
+      constrained(preconditioner.step_amg(step_matrix), base_constraints);
     // start from the normal field on Gamma_3 (plus a tangential field when
     // friction counts)
     TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);

@@ -3,6 +3,7 @@
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/model/memory_stability.h>
 #include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/solver/constrained_operator.h>
 #include <hemicontact/solver/generalized_eigenvalue.h>
 
 #include <cmath>
@@ -195,18 +196,9 @@ namespace hemicontact
           out.compress(VectorOperation::insert);
           base_constraints.set_zero(out);
         };
-        const auto apply_k = [&](const TrilinosWrappers::MPI::Vector &in,
-                                 TrilinosWrappers::MPI::Vector       &out) {
-          step_matrix.vmult(out, in);
-          base_constraints.set_zero(out);
-        };
-        const TrilinosWrappers::PreconditionAMG &amg =
-          preconditioner.step_amg(step_matrix);
-        const auto precondition = [&](const TrilinosWrappers::MPI::Vector &in,
-                                      TrilinosWrappers::MPI::Vector &out) {
-          amg.vmult(out, in);
-          base_constraints.set_zero(out);
-        };
+        const auto apply_k = constrained(step_matrix, base_constraints);
+        const auto precondition =
+          constrained(preconditioner.step_amg(step_matrix), base_constraints);
         TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);
         for (const ContactNode<dim> &node : contact_nodes)
           if (node.locally_owned)

@@ -3,6 +3,7 @@
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/model/time_step_stability.h>
 #include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/solver/constrained_operator.h>
 #include <hemicontact/solver/generalized_eigenvalue.h>
 
 #include <cmath>
@@ -48,13 +49,8 @@ namespace hemicontact
         }
       base_constraints.set_zero(out);
     };
-    const TrilinosWrappers::PreconditionAMG &amg =
-      preconditioner.step_amg(step_matrix);
-    const auto precondition = [&](const TrilinosWrappers::MPI::Vector &in,
-                                  TrilinosWrappers::MPI::Vector       &out) {
-      amg.vmult(out, in);
-      base_constraints.set_zero(out);
-    };
+    const auto precondition =
+      constrained(preconditioner.step_amg(step_matrix), base_constraints);
     TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);
     for (const auto i : locally_owned_dofs)
       x[i] = std::sin(12.9898 * static_cast<double>(i) + 78.233);
