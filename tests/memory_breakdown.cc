@@ -4,8 +4,8 @@
 // sparsity graph, counted once, the viscous matrix is not held, and while
 // the constrained AMG is in use (never dropped here) the AMG of K0 holds
 // nothing.
+#include <hemicontact/base/memory_breakdown.h>
 #include <hemicontact/input/parameters.h>
-#include <hemicontact/output/memory_breakdown.h>
 #include <hemicontact/output/performance_summary.h>
 #include <hemicontact/problem/contact_problem.h>
 

@@ -10,6 +10,7 @@
 #include <hemicontact/laws/contact_laws.h>
 #include <hemicontact/model/step_scheme.h>
 #include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/simulation/simulation.h>
 #include <hemicontact/verification/convergence_study.h>
 
 #include <cstdlib>
@@ -104,9 +105,19 @@ namespace hemicontact
         }
       ContactLaws laws = create_contact_laws(prm);
       if (parameters.dimension == 2)
-        ContactProblem<2>(parameters, std::move(laws), MPI_COMM_WORLD).run();
+        {
+          ContactProblem<2> problem(parameters,
+                                    std::move(laws),
+                                    MPI_COMM_WORLD);
+          Simulation<2>(problem).run();
+        }
       else
-        ContactProblem<3>(parameters, std::move(laws), MPI_COMM_WORLD).run();
+        {
+          ContactProblem<3> problem(parameters,
+                                    std::move(laws),
+                                    MPI_COMM_WORLD);
+          Simulation<3>(problem).run();
+        }
       return 0;
     }
   } // namespace

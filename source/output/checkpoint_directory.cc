@@ -96,12 +96,21 @@ namespace hemicontact
         {
           return "cannot read " + name + ": " + e.what();
         }
-      if (state.energy.size() != n_energy_values || state.n_ranks == 0 ||
-          !(state.time_step > 0) || state.step_number > state.n_steps ||
-          state.constrained_amg > 2)
+      if (state.format_version != CheckpointState::current_format_version)
+        return name + " is of checkpoint format version " +
+               std::to_string(state.format_version) +
+               ", which this program does not read (it writes and reads "
+               "version " +
+               std::to_string(CheckpointState::current_format_version) +
+               "); start a new run without --resume";
+      bool energy_terms = state.energy.size() == saved_energy_terms().size();
+      for (std::size_t i = 0; energy_terms && i < state.energy.size(); ++i)
+        energy_terms = state.energy[i].first == saved_energy_terms()[i].first;
+      if (!energy_terms || state.n_ranks == 0 || !(state.time_step > 0) ||
+          state.step_number > state.n_steps || state.constrained_amg > 2)
         return name + " holds an invalid state (" +
-               std::to_string(state.energy.size()) + " energy values of " +
-               std::to_string(n_energy_values) + ", step " +
+               std::to_string(state.energy.size()) + " energy terms of " +
+               std::to_string(saved_energy_terms().size()) + ", step " +
                std::to_string(state.step_number) + " of " +
                std::to_string(state.n_steps) + ")";
       return "";
@@ -212,21 +221,6 @@ namespace hemicontact
                    expected.substr(file.size() + 1) + "')";
         }
       return "";
-    }
-
-    std::vector<double>
-    to_vector(const EnergyBalance &e)
-    {
-      return {e.kinetic,
-              e.elastic,
-              e.initial_energy,
-              e.viscous_dissipation,
-              e.friction_dissipation,
-              e.damping_dissipation,
-              e.external_work,
-              e.numerical_dissipation,
-              e.transfer_change,
-              e.memory_work};
     }
 
     std::vector<unsigned int>

@@ -14,6 +14,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
+#include <set>
 #include <sstream>
 
 namespace hemicontact
@@ -22,58 +24,49 @@ namespace hemicontact
 
   namespace
   {
-    /**
-     * The branches of the owned nodes of @p nodes as a field: the normal
-     * branch at a node's first dof, the tangential at its second.
-     */
+    /** Whether the field @p f is stored in a checkpoint. */
     template <int dim>
-    void
-    branches_to_field(const std::vector<ContactNode<dim>> &nodes,
-                      TrilinosWrappers::MPI::Vector       &field)
+    bool
+    is_saved(const StateField<dim> &f)
     {
-      for (const ContactNode<dim> &node : nodes)
-        if (node.locally_owned)
-          {
-            field[node.dofs[0]] = static_cast<double>(node.normal_branch);
-            field[node.dofs[1]] = static_cast<double>(node.tangential_branch);
-          }
-      field.compress(VectorOperation::insert);
+      return f.saved;
+    }
+
+    /** The saved fields of @p fields by name. */
+    template <int dim>
+    std::map<std::string, const StateField<dim> *>
+    saved_fields(const std::vector<StateField<dim>> &fields)
+    {
+      std::map<std::string, const StateField<dim> *> saved;
+      for (const StateField<dim> &f : fields)
+        if (f.saved)
+          saved[f.name] = &f;
+      return saved;
+    }
+
+    /** The vectors of the fields @p names of @p saved, in that order. */
+    template <int dim>
+    std::vector<TrilinosWrappers::MPI::Vector *>
+    fields_named(const std::map<std::string, const StateField<dim> *> &saved,
+                 const std::vector<std::string>                       &names)
+    {
+      std::vector<TrilinosWrappers::MPI::Vector *> vectors;
+      for (const std::string &name : names)
+        vectors.push_back(saved.at(name)->vector);
+      return vectors;
     }
 
     /**
-     * @p nodes with, at the owned ones, the branches whose constrained
-     * directions the constrained AMG of @p preconditioner was built for
-     * (its operators' nodes are the owned nodes in this order); unchanged
-     * if it has none.
+     * The file of a simplex-mesh checkpoint @p name holding this rank's
+     * entries of the fields of @p space.
      */
-    template <int dim>
-    std::vector<ContactNode<dim>>
-    constrained_amg_branches(const std::vector<ContactNode<dim>> &nodes,
-                             const StepPreconditioner<dim> &preconditioner)
+    std::string
+    rank_file_name(const std::string &name,
+                   const std::string &space,
+                   MPI_Comm           comm)
     {
-      std::vector<ContactNode<dim>>      result(nodes);
-      const std::vector<Tensor<2, dim>> &directions =
-        preconditioner.constrained_directions();
-      if (directions.empty())
-        return result;
-      unsigned int i = 0;
-      for (ContactNode<dim> &node : result)
-        if (node.locally_owned)
-          {
-            AssertIndexRange(i, directions.size());
-            // sum e e over nodal::constrained_directions(): nu nu for normal
-            // stick, the tangent plane's projector for tangential stick
-            const double normal_part =
-              node.normal * (directions[i] * node.normal);
-            node.normal_branch     = normal_part > 0.5 ? NormalBranch::stick :
-                                                         NormalBranch::separating;
-            node.tangential_branch = trace(directions[i]) - normal_part > 0.5 ?
-                                       TangentialBranch::stick :
-                                       TangentialBranch::slip;
-            ++i;
-          }
-      AssertDimension(i, directions.size());
-      return result;
+      return name + ".fields." + space + "." +
+             std::to_string(Utilities::MPI::this_mpi_process(comm));
     }
 
     /** Set by SIGTERM or SIGINT; the time loop checks it after every step. */
@@ -98,19 +91,12 @@ namespace hemicontact
   EnergyBalance
   CheckpointState::energy_balance() const
   {
-    const std::vector<double> &v = energy;
-    EnergyBalance              e;
-    AssertDimension(v.size(), n_energy_values); // read_state() checks it
-    e.kinetic               = v[0];
-    e.elastic               = v[1];
-    e.initial_energy        = v[2];
-    e.viscous_dissipation   = v[3];
-    e.friction_dissipation  = v[4];
-    e.damping_dissipation   = v[5];
-    e.external_work         = v[6];
-    e.numerical_dissipation = v[7];
-    e.transfer_change       = v[8];
-    e.memory_work           = v[9];
+    // read_state() checked that the names are those of the list
+    EnergyBalance e;
+    for (const auto &[name, value] : energy)
+      for (const auto &[term, member] : saved_energy_terms())
+        if (term == name)
+          e.*member = value;
     return e;
   }
 
@@ -194,52 +180,49 @@ namespace hemicontact
       }
     throw_if_any(error, mpi_communicator);
 
-    // the fields: w_n, u_n, the branches, w_{n-1}, the branches the
-    // constrained AMG was built for and the contact traction (p_nu of a
-    // friction bound in the next step): attached to the p4est mesh, or, on a
-    // simplex mesh (rebuilt from the parameters on resume), one file per
-    // rank in dof order
-    TrilinosWrappers::MPI::Vector branches(s.locally_owned_dofs,
-                                           mpi_communicator);
-    TrilinosWrappers::MPI::Vector amg_branches(branches);
-    branches_to_field(s.contact_nodes, branches);
-    branches_to_field(constrained_amg_branches(s.contact_nodes,
-                                               s.preconditioner),
-                      amg_branches);
-    std::vector<const TrilinosWrappers::MPI::Vector *> owned_fields{
-      &s.velocity,
-      &s.displacement,
-      &branches,
-      &s.old_velocity,
-      &amg_branches,
-      &s.contact_traction};
-    // and the vectors of the memory's history (doc/theory.md, section 11)
-    for (const TrilinosWrappers::MPI::Vector *v : s.memory.saved_fields())
-      owned_fields.push_back(v);
+    // the saved fields of the state by space (state_fields.cc): attached
+    // to the p4est mesh, one SolutionTransfer per space in the order the
+    // .state lists them, or, on a simplex mesh (rebuilt from the
+    // parameters on resume), one file per space and rank in dof order
+    const std::vector<StateField<dim>> all_fields = problem.fields();
+    const auto                         saved      = saved_fields(all_fields);
+    const auto by_space = field_names_by_space(all_fields, is_saved<dim>);
     if (s.discretization.is_simplex())
-      throw_if_any(write_rank_fields(
-                     aside / (name + ".fields." +
-                              std::to_string(Utilities::MPI::this_mpi_process(
-                                mpi_communicator))),
-                     s.locally_owned_dofs,
-                     owned_fields),
-                   mpi_communicator);
+      {
+        std::string why;
+        for (const auto &[space, names] : by_space)
+          if (why.empty())
+            {
+              const std::vector<TrilinosWrappers::MPI::Vector *> v =
+                fields_named(saved, names);
+              why = write_rank_fields(aside / rank_file_name(name,
+                                                             space,
+                                                             mpi_communicator),
+                                      *saved.at(names[0])->space->owned,
+                                      {v.begin(), v.end()});
+            }
+        throw_if_any(why, mpi_communicator);
+      }
     else
       {
-        std::vector<TrilinosWrappers::MPI::Vector> ghosted(owned_fields.size());
-        std::vector<const TrilinosWrappers::MPI::Vector *> fields;
-        for (unsigned int i = 0; i < ghosted.size(); ++i)
+        using Transfer = parallel::distributed::
+          SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>;
+        std::vector<std::unique_ptr<Transfer>>     transfers;
+        std::vector<TrilinosWrappers::MPI::Vector> ghosted(saved.size());
+        unsigned int                               n = 0;
+        for (const auto &[space, names] : by_space)
           {
-            ghosted[i].reinit(s.locally_owned_dofs,
-                              s.locally_relevant_dofs,
-                              mpi_communicator);
-            ghosted[i] = *owned_fields[i];
-            fields.push_back(&ghosted[i]);
+            const FieldSpace<dim> &fs = *saved.at(names[0])->space;
+            std::vector<const TrilinosWrappers::MPI::Vector *> fields;
+            for (const std::string &field : names)
+              {
+                ghosted[n].reinit(*fs.owned, *fs.relevant, mpi_communicator);
+                ghosted[n] = *saved.at(field)->vector;
+                fields.push_back(&ghosted[n++]);
+              }
+            transfers.push_back(std::make_unique<Transfer>(*fs.dof_handler));
+            transfers.back()->prepare_for_serialization(fields);
           }
-        parallel::distributed::SolutionTransfer<dim,
-                                                TrilinosWrappers::MPI::Vector>
-          transfer(s.dof_handler);
-        transfer.prepare_for_serialization(fields);
         dynamic_cast<const parallel::distributed::Triangulation<dim> &>(
           *s.discretization.triangulation)
           .save((aside / (name + ".mesh")).string());
@@ -255,7 +238,9 @@ namespace hemicontact
         state.step_number = step_number;
         state.time_step   = s.time_step;
         state.n_steps     = s.n_steps;
-        state.energy      = to_vector(s.energy);
+        for (const auto &[term, member] : saved_energy_terms())
+          state.energy.emplace_back(term, s.energy.*member);
+        state.fields = by_space;
         for (const SeriesRecord &record : series)
           state.pvd_records.push_back(record.stored());
         state.problem_definition = parameters.problem_definition;
@@ -296,25 +281,31 @@ namespace hemicontact
     const typename ContactProblem<dim>::State s              = problem.state();
     const Discretization<dim>                &discretization = s.discretization;
     const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
-    // the six fields of write() (w_n, u_n, the branches, w_{n-1}, the AMG's
-    // branches, the contact traction) on every cell (p4est's data file) or
-    // at every dof with its index (the rank files of a simplex mesh), the
-    // cells themselves, and the state with the series and the parameters;
-    // the memory's vectors besides
-    const std::uintmax_t n_fields = 6 + s.memory.saved_fields().size();
-    std::uintmax_t       bytes    = 16 * 1024;
+    // the saved fields of the state (on every cell: p4est's data file; or
+    // at every dof with its index: the rank files of a simplex mesh), the
+    // cells themselves, and the state with the series and the parameters
+    std::uintmax_t bytes = 16 * 1024;
     for (const SeriesRecord &record : series)
       bytes += record.stored().second.size() + 32;
     for (const std::string &entry : parameters.problem_definition)
       bytes += entry.size() + 16;
-    if (discretization.is_simplex())
-      bytes += std::uintmax_t(s.dof_handler.n_dofs()) * (1 + n_fields) *
-                 sizeof(double) +
-               Utilities::MPI::n_mpi_processes(mpi_communicator) * 8;
-    else
-      bytes +=
-        std::uintmax_t(discretization.triangulation->n_global_active_cells()) *
-        (n_fields * discretization.fe->n_dofs_per_cell() * sizeof(double) + 64);
+    const std::uintmax_t n_cells =
+      discretization.triangulation->n_global_active_cells();
+    const std::vector<StateField<dim>> all_fields = problem.fields();
+    const auto                         saved      = saved_fields(all_fields);
+    for (const auto &[space, names] :
+         field_names_by_space(all_fields, is_saved<dim>))
+      {
+        const DoFHandler<dim> &dofs = *saved.at(names[0])->space->dof_handler;
+        bytes += discretization.is_simplex() ?
+                   std::uintmax_t(dofs.n_dofs()) * (1 + names.size()) *
+                       sizeof(double) +
+                     Utilities::MPI::n_mpi_processes(mpi_communicator) * 8 :
+                   n_cells * names.size() * dofs.get_fe().n_dofs_per_cell() *
+                     sizeof(double);
+      }
+    if (!discretization.is_simplex())
+      bytes += n_cells * 64;
     std::string error;
     if (root)
       {
@@ -499,37 +490,70 @@ namespace hemicontact
 
   template <int dim>
   void
-  Checkpointer<dim>::load_fields(
-    const DoFHandler<dim>                              &dof_handler,
-    const IndexSet                                     &owned,
-    const std::vector<TrilinosWrappers::MPI::Vector *> &fields)
+  Checkpointer<dim>::load_fields(const std::vector<StateField<dim>> &fields)
   {
-    const fs::path dir = fs::path(parameters.output.directory) / "checkpoint";
-    if (dof_handler.get_fe().reference_cell().is_simplex())
+    const fs::path dir   = fs::path(parameters.output.directory) / "checkpoint";
+    const auto     saved = saved_fields(fields);
+    // the fields by name: those of the checkpoint against the run's
+    std::set<std::string> stored;
+    for (const auto &[space, names] : state.fields)
+      stored.insert(names.begin(), names.end());
+    std::string unknown, missing;
+    for (const std::string &name : stored)
+      if (!saved.count(name))
+        unknown += (unknown.empty() ? "'" : ", '") + name + "'";
+    for (const auto &[name, field] : saved)
+      if (!stored.count(name))
+        missing += (missing.empty() ? "'" : ", '") + name + "'";
+    require(unknown.empty() && missing.empty(),
+            "checkpoint: '" + (dir / (name + ".state")).string() +
+              "' does not hold the fields of this run's state" +
+              (unknown.empty() ?
+                 "" :
+                 ": it holds " + unknown + ", which this run does not have") +
+              (missing.empty() ? "" :
+                                 std::string(unknown.empty() ? ":" : ";") +
+                                   " it lacks " + missing) +
+              ". A resume continues the same problem with the same program; "
+              "start a new run without --resume.");
+    for (const auto &[space, names] : state.fields)
       {
-        const std::string why =
-          read_rank_fields(dir /
-                             (name + ".fields." +
-                              std::to_string(Utilities::MPI::this_mpi_process(
-                                mpi_communicator))),
-                           owned,
-                           fields);
-        for (TrilinosWrappers::MPI::Vector *v : fields)
-          v->compress(VectorOperation::insert);
-        require(Utilities::MPI::min(why.empty() ? 1 : 0, mpi_communicator) == 1,
-                "checkpoint: " +
-                  (why.empty() ? std::string("the fields of another rank do "
-                                             "not fit this run's mesh") :
-                                 why) +
-                  "; resume with the parameters of the interrupted run.");
-      }
-    else
-      {
-        parallel::distributed::SolutionTransfer<dim,
-                                                TrilinosWrappers::MPI::Vector>
-                                                     transfer(dof_handler);
-        std::vector<TrilinosWrappers::MPI::Vector *> targets(fields);
-        transfer.deserialize(targets);
+        // every field of a space lives on the same space in this run
+        const FieldSpace<dim> &fs = *saved.at(names[0])->space;
+        for (const std::string &field : names)
+          require(saved.at(field)->space == &fs,
+                  "checkpoint: '" + (dir / (name + ".state")).string() +
+                    "' holds the field '" + field + "' on the space '" + space +
+                    "', this run on '" + saved.at(field)->space->name +
+                    "'; start a new run without --resume.");
+        std::vector<TrilinosWrappers::MPI::Vector *> targets =
+          fields_named(saved, names);
+        if (fs.dof_handler->get_fe().reference_cell().is_simplex())
+          {
+            const std::string why =
+              read_rank_fields(dir /
+                                 rank_file_name(name, space, mpi_communicator),
+                               *fs.owned,
+                               targets);
+            for (TrilinosWrappers::MPI::Vector *v : targets)
+              v->compress(VectorOperation::insert);
+            require(Utilities::MPI::min(why.empty() ? 1 : 0,
+                                        mpi_communicator) == 1,
+                    "checkpoint: " +
+                      (why.empty() ?
+                         std::string("the fields of another rank do "
+                                     "not fit this run's mesh") :
+                         why) +
+                      "; resume with the parameters of the interrupted run.");
+          }
+        else
+          {
+            // in the order write() attached them
+            parallel::distributed::
+              SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
+                transfer(*fs.dof_handler);
+            transfer.deserialize(targets);
+          }
       }
   }
 

@@ -1,7 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
-#include <hemicontact/output/memory_breakdown.h>
+#include <hemicontact/base/memory_breakdown.h>
 #include <hemicontact/output/performance_summary.h>
 #include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/solver/linear_solver.h>
@@ -47,6 +47,13 @@ namespace hemicontact
     // w_n, w_{n-1}, u_n, F_n, b, the contact traction
     breakdown.add("vectors",
                   6. * s.locally_owned_dofs.n_elements() * sizeof(double));
+    // the fields added to the state, on spaces of their own
+    double added = 0;
+    for (const StateField<dim> &f : problem.fields())
+      if (f.space->dof_handler != &s.dof_handler)
+        added += f.vector->memory_consumption();
+    if (added > 0)
+      breakdown.add("added fields of the state", added);
     breakdown.add("mesh, dofs and constraints",
                   s.discretization.triangulation->memory_consumption() +
                     s.dof_handler.memory_consumption() +

@@ -74,10 +74,13 @@ namespace hemicontact
     if (nodal_writer)
       {
         const typename ContactProblem<dim>::State state = problem.state();
-        std::vector<typename NodalHdf5Writer<dim>::Field> fields{
-          {"velocity", &state.velocity},
-          {"displacement", &state.displacement},
-          {"contact_traction", &state.contact_traction}};
+        // the written fields of the state on w and u's space
+        // (state_fields.cc), then the memory's nodal values
+        const std::vector<StateField<dim>> state_fields = problem.fields();
+        std::vector<typename NodalHdf5Writer<dim>::Field> fields;
+        for (const StateField<dim> &f : state_fields)
+          if (f.written && f.space->dof_handler == &state.dof_handler)
+            fields.push_back({f.name, f.vector});
         // N_i nu_i, the memory's part of the traction (doc/theory.md 11.9)
         if (state.memory.contact_memory().normal_active())
           fields.push_back(
@@ -115,9 +118,7 @@ namespace hemicontact
     snapshot.displacement.reinit(snapshot.velocity);
     snapshot.velocity     = state.velocity;
     snapshot.displacement = state.displacement;
-    TrilinosWrappers::MPI::Vector traction(snapshot.velocity),
-      branch(snapshot.velocity);
-    traction = state.contact_traction;
+    TrilinosWrappers::MPI::Vector branch(snapshot.velocity);
 
     TrilinosWrappers::MPI::Vector branch_owned(state.locally_owned_dofs,
                                                mpi_communicator);
@@ -137,21 +138,36 @@ namespace hemicontact
     snapshot.data_out      = std::make_unique<DataOut<dim>>();
     DataOut<dim> &data_out = *snapshot.data_out;
     data_out.attach_dof_handler(dof_handler);
-    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      vector_field(dim,
-                   DataComponentInterpretation::component_is_part_of_vector);
-    data_out.add_data_vector(snapshot.velocity,
-                             std::vector<std::string>(dim, "velocity"),
-                             DataOut<dim>::type_dof_data,
-                             vector_field);
-    data_out.add_data_vector(snapshot.displacement,
-                             std::vector<std::string>(dim, "displacement"),
-                             DataOut<dim>::type_dof_data,
-                             vector_field);
-    data_out.add_data_vector(traction,
-                             std::vector<std::string>(dim, "contact_traction"),
-                             DataOut<dim>::type_dof_data,
-                             vector_field);
+    // the written fields of the state (state_fields.cc), each on its space
+    // (DataOut copies them)
+    for (const StateField<dim> &f : problem.fields())
+      if (f.written)
+        {
+          const FieldSpace<dim>        &space = *f.space;
+          TrilinosWrappers::MPI::Vector field(*space.owned,
+                                              *space.relevant,
+                                              mpi_communicator);
+          field                = *f.vector;
+          const unsigned int n = space.dof_handler->get_fe().n_components();
+          const bool vec = n == dim && f.layout != FieldLayout::scalar_nodal;
+          const std::vector<std::string> names(n, f.name);
+          const std::vector<
+            DataComponentInterpretation::DataComponentInterpretation>
+            interpretation(
+              n,
+              vec ? DataComponentInterpretation::component_is_part_of_vector :
+                    DataComponentInterpretation::component_is_scalar);
+          if (space.dof_handler == &dof_handler)
+            data_out.add_data_vector(field,
+                                     names,
+                                     DataOut<dim>::type_dof_data,
+                                     interpretation);
+          else
+            data_out.add_data_vector(*space.dof_handler,
+                                     field,
+                                     names,
+                                     interpretation);
+        }
     std::vector<std::string> branch_names = {"normal_branch",
                                              "tangential_branch"};
     if (dim == 3)

@@ -6,6 +6,7 @@
 
 #include <hemicontact/mesh/marking.h>
 #include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/state/field_transfer.h>
 
 #include <cmath>
 #include <limits>
@@ -165,20 +166,17 @@ namespace hemicontact
             cell->set_coarsen_flag();
         }
 
-    // transfer w_n, u_n and the contact traction (everything a step needs:
-    // w_{n-1} of the next step is w_n, the traction gives p_nu of its
-    // friction bound, branches are recomputed in its first Newton
-    // iteration);
-    // 'projection' moves u_{n+1} = u_n + k w_n instead of u_n and keeps the
-    // functionals of coarsened cells (state_projection.cc)
+    // move the state's transferred fields (state_fields.cc: w_n, u_n, the
+    // contact traction, the memory's history, the added fields) by
+    // interpolation; w_{n-1} of the next step is w_n, the branches are
+    // recomputed in its first Newton iteration. 'projection' moves
+    // u_{n+1} = u_n + k w_n instead of u_n and keeps the functionals of
+    // coarsened cells (state_projection.cc)
     const bool project = settings.state_transfer == StateTransfer::projection;
-    TrilinosWrappers::MPI::Vector w(locally_owned_dofs,
-                                    locally_relevant_dofs,
-                                    mpi_communicator);
-    TrilinosWrappers::MPI::Vector u(w), traction(w);
-    w        = velocity;
-    u        = displacement;
-    traction = contact_traction;
+    const std::vector<double>      history_values = memory.saved_values();
+    FieldTransfer<dim>             transfer(fields());
+    TrilinosWrappers::MPI::Vector &w = transfer.old_field("velocity");
+    TrilinosWrappers::MPI::Vector &u = transfer.old_field("displacement");
     if (project)
       {
         // the displacement held after the step (StepScheme): u_n + k w_n
@@ -187,27 +185,8 @@ namespace hemicontact
         u_next.add(scheme.held_displacement_offset(time_step), velocity);
         u = u_next;
       }
-    // the memory's history (the Prony vectors or the stored states, and
-    // the contact node values) moves by the same interpolation
-    // (doc/theory.md, section 11.8)
-    const std::vector<double> history_values = memory.saved_values();
-    std::vector<TrilinosWrappers::MPI::Vector> history;
-    for (const TrilinosWrappers::MPI::Vector *x : memory.saved_fields())
-      {
-        history.emplace_back(locally_owned_dofs,
-                             locally_relevant_dofs,
-                             mpi_communicator);
-        history.back() = *x;
-      }
-    std::vector<const TrilinosWrappers::MPI::Vector *> old_fields{&w,
-                                                                  &u,
-                                                                  &traction};
-    for (const TrilinosWrappers::MPI::Vector &x : history)
-      old_fields.push_back(&x);
-    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
-      transfer(dof_handler);
     tria->prepare_coarsening_and_refinement();
-    transfer.prepare_for_coarsening_and_refinement(old_fields);
+    transfer.prepare();
     const unsigned int functionals =
       project ? attach_coarsened_functionals(w, u) : 0;
     tria->execute_coarsening_and_refinement();
@@ -222,20 +201,16 @@ namespace hemicontact
                "ones"
             << std::endl;
 
-    // rebuild everything that lives on the mesh
+    // rebuild everything that lives on the mesh, then the state on it
     setup_on_current_mesh();
-    std::vector<TrilinosWrappers::MPI::Vector *> new_fields{&velocity,
-                                                            &displacement,
-                                                            &contact_traction};
-    for (TrilinosWrappers::MPI::Vector *x : memory.restore(history_values))
-      new_fields.push_back(x);
+    const std::vector<StateField<dim>> new_fields =
+      state_fields(memory.restore(history_values));
     transfer.interpolate(new_fields);
     // (before the hanging-node values are distributed: a kept cell next to
     // a coarsened one still holds the old field there)
     if (project)
       project_transferred_state(functionals, velocity, displacement);
-    base_constraints.distribute(velocity);
-    base_constraints.distribute(displacement);
+    distribute_constraints(new_fields);
     if (project)
       displacement.add(-scheme.held_displacement_offset(time_step),
                        velocity); // u_n = u_{n+1} - k w_n (left point)

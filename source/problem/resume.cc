@@ -1,67 +1,27 @@
 #include <deal.II/base/mpi.h>
 
-#include <hemicontact/output/checkpointer.h>
 #include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/solver/projected_operator.h>
 
-#include <cmath>
-
 namespace hemicontact
 {
-  namespace
-  {
-    /** The branches of every node of @p nodes from branches_to_field(). */
-    template <int dim>
-    void
-    branches_from_field(const TrilinosWrappers::MPI::Vector &field,
-                        const IndexSet                      &owned,
-                        const IndexSet                      &relevant,
-                        std::vector<ContactNode<dim>>       &nodes)
-    {
-      TrilinosWrappers::MPI::Vector ghosted(owned,
-                                            relevant,
-                                            field.get_mpi_communicator());
-      ghosted = field;
-      for (ContactNode<dim> &node : nodes)
-        {
-          node.normal_branch =
-            static_cast<NormalBranch>(std::lround(ghosted[node.dofs[0]]));
-          node.tangential_branch =
-            static_cast<TangentialBranch>(std::lround(ghosted[node.dofs[1]]));
-        }
-    }
-  } // namespace
-
   template <int dim>
   void
-  ContactProblem<dim>::resume(Checkpointer<dim> &checkpointer)
+  ContactProblem<dim>::resume(StateSource<dim> &source)
   {
     TimerOutput::Scope     t(timer, "setup");
-    const CheckpointState &state = checkpointer.read(n_steps, time_step);
+    const CheckpointState &state = source.read(n_steps, time_step);
     last_step_length             = state.last_step_length;
 
-    checkpointer.load_mesh(discretization);
+    source.load_mesh(discretization);
     discretization.check_boundary_ids(parameters.boundary);
     setup_on_current_mesh();
-    TrilinosWrappers::MPI::Vector branches(locally_owned_dofs,
-                                           mpi_communicator);
-    TrilinosWrappers::MPI::Vector amg_branches(locally_owned_dofs,
-                                               mpi_communicator);
-    std::vector<TrilinosWrappers::MPI::Vector *> fields{&velocity,
-                                                        &displacement,
-                                                        &branches,
-                                                        &old_velocity,
-                                                        &amg_branches,
-                                                        &contact_traction};
-    // the memory's history, its vectors after those (doc/theory.md 11)
-    for (TrilinosWrappers::MPI::Vector *v :
-         memory.restore(state.memory_history))
-      fields.push_back(v);
-    checkpointer.load_fields(dof_handler, locally_owned_dofs, fields);
-    branches_from_field(branches,
-                        locally_owned_dofs,
-                        locally_relevant_dofs,
-                        contact_nodes);
+    // the state's fields by name, the memory's history sized as recorded
+    // (doc/theory.md 11)
+    branch_field.reinit(locally_owned_dofs, mpi_communicator);
+    amg_branch_field.reinit(locally_owned_dofs, mpi_communicator);
+    source.load_fields(state_fields(memory.restore(state.memory_history)));
+    branches_from_field(branch_field, contact_nodes);
 
     step_number = state.step_number;
     energy      = state.energy_balance();
@@ -73,10 +33,7 @@ namespace hemicontact
     // the preconditioner as the interrupted run left it (after the checks
     // above, which build AMGs of their own, as at the run's start)
     std::vector<ContactNode<dim>> amg_nodes(contact_nodes);
-    branches_from_field(amg_branches,
-                        locally_owned_dofs,
-                        locally_relevant_dofs,
-                        amg_nodes);
+    branches_from_field(amg_branch_field, amg_nodes);
     ProjectedOperator<dim> op(step_matrix, locally_owned_dofs);
     for (const ContactNode<dim> &node : amg_nodes)
       if (node.locally_owned)
@@ -86,7 +43,7 @@ namespace hemicontact
   }
 
   template void
-  ContactProblem<2>::resume(Checkpointer<2> &);
+  ContactProblem<2>::resume(StateSource<2> &);
   template void
-  ContactProblem<3>::resume(Checkpointer<3> &);
+  ContactProblem<3>::resume(StateSource<3> &);
 } // namespace hemicontact

@@ -32,9 +32,7 @@ namespace hemicontact
                                       MPI_Comm          comm)
     : mpi_communicator(comm)
     , parameters(parameters)
-    , pcout(std::cout,
-            Utilities::MPI::this_mpi_process(comm) == 0 &&
-              parameters.output.terminal != TerminalOutput::quiet)
+    , pcout(std::cout, terminal_output_on(parameters, comm))
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , material(
         StepScheme(parameters.problem).class_material(parameters.material))
@@ -90,6 +88,12 @@ namespace hemicontact
   ContactProblem<dim>::setup_on_current_mesh()
   {
     setup_dofs();
+    displacement_space = {"displacement",
+                          &dof_handler,
+                          &locally_owned_dofs,
+                          &locally_relevant_dofs,
+                          &base_constraints};
+    added_fields.reinit(*discretization.triangulation, mpi_communicator);
     assemble_constant_matrices(scheme.step_matrix(time_step));
     setup_contact_nodes();
     preconditioner.reinit(dof_handler, *discretization.mapping);
@@ -346,6 +350,7 @@ namespace hemicontact
   ContactProblem<dim>::initialize_state()
   {
     data.set_time(0);
+    added_fields.initialize(*discretization.mapping);
     const auto interpolate_checked = [&](const Function<dim>           &f,
                                          TrilinosWrappers::MPI::Vector &v,
                                          const std::string             &name) {

@@ -417,9 +417,12 @@ namespace hemicontact
                 problem, *reference, s.time, relevant, comm) :
               step_errors(problem, exact, s.time, relevant, *cache, comm),
             problem.get_time_step());
-          if (problem.adapt_mesh_if_due(s))
-            DoFTools::extract_locally_relevant_dofs(problem.get_dof_handler(),
-                                                    relevant);
+          if (problem.adaptation_due())
+            {
+              problem.adapt_mesh(s);
+              DoFTools::extract_locally_relevant_dofs(problem.get_dof_handler(),
+                                                      relevant);
+            }
         }
       const double step_wall_seconds = steps_wall.wall_time();
       LevelResult  result            = sums.result();

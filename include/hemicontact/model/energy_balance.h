@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace hemicontact
 {
@@ -116,4 +119,27 @@ namespace hemicontact
       return total_energy() / std::max(data_energy(), 1e-300);
     }
   };
+
+  /**
+   * The terms of an EnergyBalance that a checkpoint stores, by name: the
+   * one list that writing and reading a checkpoint loop over (J_n is the
+   * step's own and is not stored).
+   */
+  inline const std::vector<std::pair<std::string, double EnergyBalance::*>> &
+  saved_energy_terms()
+  {
+    using E = EnergyBalance;
+    static const std::vector<std::pair<std::string, double E::*>> terms{
+      {"kinetic", &E::kinetic},
+      {"elastic", &E::elastic},
+      {"initial_energy", &E::initial_energy},
+      {"viscous_dissipation", &E::viscous_dissipation},
+      {"friction_dissipation", &E::friction_dissipation},
+      {"damping_dissipation", &E::damping_dissipation},
+      {"external_work", &E::external_work},
+      {"numerical_dissipation", &E::numerical_dissipation},
+      {"transfer_change", &E::transfer_change},
+      {"memory_work", &E::memory_work}};
+    return terms;
+  }
 } // namespace hemicontact

@@ -23,9 +23,6 @@ namespace hemicontact
   {
     namespace fs = std::filesystem;
 
-    /** The number of values of EnergyBalance in a checkpoint. */
-    inline constexpr std::size_t n_energy_values = 10;
-
     /**
      * @p state as a text archive followed by the line "crc32 N" of that
      * text (so that a change of any entry is seen).
@@ -42,8 +39,8 @@ namespace hemicontact
     read_state(const fs::path &file, CheckpointState &state);
 
     /**
-     * The fields of a simplex-mesh checkpoint on one rank: the owned
-     * entries of w_n, u_n and the branches, each with its global dof index
+     * The fields of one space of a simplex-mesh checkpoint on one rank: the
+     * owned entries of @p fields, each with its global dof index
      * (the mesh itself is rebuilt from the parameters, partitioned the same
      * way on the same number of ranks). Returns the reason of a failure.
      */
@@ -78,10 +75,6 @@ namespace hemicontact
     checkpoint_damage(const fs::path    &dir,
                       const unsigned int step,
                       CheckpointState   &state);
-
-    /** The n_energy_values values of @p e in the order a .state holds them. */
-    std::vector<double>
-    to_vector(const EnergyBalance &e);
 
     /** Steps of the complete checkpoints in @p dir (their .state exists). */
     std::vector<unsigned int>

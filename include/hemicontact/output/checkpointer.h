@@ -9,6 +9,7 @@
 #include <hemicontact/mesh/discretization.h>
 #include <hemicontact/model/energy_balance.h>
 #include <hemicontact/output/series_record.h>
+#include <hemicontact/state/state_source.h>
 
 #include <string>
 #include <utility>
@@ -23,47 +24,6 @@ namespace hemicontact
   template <int dim>
   class RunOutput;
 
-  /** Everything of a run that is not a finite element field (the .state
-   *  file of a checkpoint). */
-  struct CheckpointState
-  {
-    unsigned int        step_number = 0;
-    double              time_step   = 0;
-    unsigned int        n_steps     = 0;
-    std::vector<double> energy;
-    /** The solution series, each as SeriesRecord::stored(). */
-    std::vector<std::pair<double, std::string>> pvd_records;
-    /** Parameters::problem_definition of the run that wrote it. */
-    std::vector<std::string> problem_definition;
-    /** "name size crc32" of every other file of the checkpoint. */
-    std::vector<std::string> file_signatures;
-    /** The number of MPI ranks that wrote it. */
-    unsigned int n_ranks = 0;
-    /** The length of the last converged step (the extrapolated guess). */
-    double last_step_length = 0;
-    /** The run that wrote it (a resumed run keeps its run's id). */
-    std::string run_id;
-    /** "name size crc32" of the mesh file the run read ("" if none). */
-    std::string mesh_signature;
-    /** The preconditioner's ConstrainedAmgStatus. */
-    unsigned int constrained_amg = 0;
-    /** MemoryHistory::saved_values() (its vectors are fields). */
-    std::vector<double> memory_history;
-
-    /** The energy balance it records. */
-    EnergyBalance
-    energy_balance() const;
-
-    template <class Archive>
-    void
-    serialize(Archive &ar, const unsigned int)
-    {
-      ar &step_number &time_step &n_steps &energy &pvd_records
-        &problem_definition &file_signatures &n_ranks &last_step_length &run_id
-          &mesh_signature &constrained_amg &memory_history;
-    }
-  };
-
   /**
    * The checkpoints of a run in OUTPUT/checkpoint (doc/robustness.md):
    * when one is due (every 'checkpoint/interval' steps, every 'wall
@@ -72,7 +32,7 @@ namespace hemicontact
    * usable one for a resume. Member functions are collective.
    */
   template <int dim>
-  class Checkpointer
+  class Checkpointer : public StateSource<dim>
   {
   public:
     /** Checkpoints by @p parameters; @p timer is the run's. */
@@ -113,21 +73,20 @@ namespace hemicontact
      * problem definition, the mesh file); its state.
      */
     const CheckpointState &
-    read(unsigned int n_steps, double time_step);
+    read(unsigned int n_steps, double time_step) override;
 
     /** The mesh of the checkpoint read() chose, in @p discretization. */
     void
-    load_mesh(Discretization<dim> &discretization) const;
+    load_mesh(Discretization<dim> &discretization) const override;
 
     /**
-     * The fields of the checkpoint read() chose on the mesh of
-     * load_mesh(): w_n, u_n, the branches, w_{n-1} and the branches of the
-     * constrained AMG, in this order in @p fields (owned entries).
+     * The fields of the checkpoint read() chose, on the mesh of
+     * load_mesh(), into the saved fields of @p fields by name (owned
+     * entries). Refuses (InputError) a checkpoint that lacks a field of
+     * @p fields or holds one it does not have, naming them.
      */
     void
-    load_fields(const DoFHandler<dim>                              &dof_handler,
-                const IndexSet                                     &owned,
-                const std::vector<TrilinosWrappers::MPI::Vector *> &fields);
+    load_fields(const std::vector<StateField<dim>> &fields) override;
 
     /** The series of the checkpoint read() chose. */
     std::vector<SeriesRecord>

@@ -2,7 +2,7 @@
 
 #include <deal.II/base/timer.h>
 
-#include <hemicontact/output/memory_breakdown.h>
+#include <hemicontact/base/memory_breakdown.h>
 #include <hemicontact/solver/step_statistics.h>
 
 #include <mpi.h>

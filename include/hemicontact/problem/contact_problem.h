@@ -25,6 +25,9 @@
 #include <hemicontact/solver/linear_solver.h>
 #include <hemicontact/solver/step_preconditioner.h>
 #include <hemicontact/solver/step_statistics.h>
+#include <hemicontact/state/added_fields.h>
+#include <hemicontact/state/state_field.h>
+#include <hemicontact/state/state_source.h>
 
 #include <memory>
 #include <string>
@@ -35,10 +38,16 @@ namespace hemicontact
 {
   using namespace dealii;
 
-  template <int dim>
-  class RunOutput;
-  template <int dim>
-  class Checkpointer;
+  /**
+   * Whether this rank prints the run's terminal lines: rank 0, unless
+   * 'output/terminal = quiet'.
+   */
+  inline bool
+  terminal_output_on(const Parameters &parameters, MPI_Comm comm)
+  {
+    return Utilities::MPI::this_mpi_process(comm) == 0 &&
+           parameters.output.terminal != TerminalOutput::quiet;
+  }
 
   /**
    * The contact problem of every class (doc/theory.md sections 1-9): the
@@ -54,19 +63,26 @@ namespace hemicontact
    * Each time step minimises the step energy J_n by a semismooth Newton /
    * primal-dual active-set method (doc/theory.md section 3).
    *
+   * A driver runs it through its public step interface (setup(),
+   * resume(), advance(), adapt_mesh(), state(), fields()): Simulation
+   * (source/simulation/) with the output and the checkpoints, the
+   * convergence study, the tests. The state is one list of named fields
+   * (fields(), state_fields.cc), which checkpoints, resume, adaptation and
+   * the output loop over; add_field() adds one.
+   *
    * The member functions are spread over source/problem/: setup.cc (mesh,
    * dofs, constraints, contact nodes, initial state), resume.cc (the same
-   * from a checkpoint), assembly.cc (matrices and loads), step.cc (one
-   * step, by ActiveSetNewton on a ContactStep), diagnostics.cc (energies,
+   * from a StateSource), state_fields.cc (the list of the state's fields),
+   * assembly.cc (matrices and loads), step.cc (one step, by
+   * ActiveSetNewton on a ContactStep), diagnostics.cc (energies,
    * convexity), stability.cc and memory_stability_check.cc (the time-step
    * limits of the left-point rule and of the memory rule),
    * wall_admissibility.cc (the initial state and the transferred state
    * against the wall), adaptivity.cc (indicators, the new mesh),
    * residual_indicator.cc (estimate_error() and the residual indicator),
    * time_indicator.cc (the time part of the estimate), state_projection.cc
-   * (the state moved by projection), target_error.cc (a load value solved
-   * to a tolerance) and run.cc (run() and the time loop). The run's output
-   * and checkpoints are a RunOutput and a Checkpointer (source/output/).
+   * (the state moved by projection) and run.cc (advance() and its
+   * interval with the halvings).
    */
   template <int dim>
   class ContactProblem
@@ -84,22 +100,31 @@ namespace hemicontact
                    ProblemData<dim>  data,
                    MPI_Comm          comm);
 
-    /** Run the whole simulation: setup, time loop, output, summary. */
-    void
-    run();
-
-    /** @name The pieces of run(), public for tests and other drivers. */
+    /**
+     * @name The step interface: what a driver (Simulation, the
+     * convergence study, a test) calls.
+     */
     /** @{ */
     /** Mesh, dofs, constraints, contact nodes, matrices, initial state. */
     void
     setup();
 
     /**
-     * setup() from the newest usable checkpoint that @p checkpointer finds
-     * instead of the initial data.
+     * setup() from the state that @p source holds (a checkpoint) instead
+     * of the initial data.
      */
     void
-    resume(Checkpointer<dim> &checkpointer);
+    resume(StateSource<dim> &source);
+
+    /**
+     * Start again from t = 0 on the current mesh (the pre-refinement
+     * restart): the initial state, step 0.
+     */
+    void
+    restart()
+    {
+      initialize_state();
+    }
 
     /** Advance one time step; throws SolverFailure if Newton fails. */
     StepStatistics
@@ -115,24 +140,41 @@ namespace hemicontact
     adapt_mesh(StepStatistics &stats);
 
     /**
-     * Call adapt_mesh() if it is due after the step just taken: every
+     * Whether adapt_mesh() is due after the step just taken: every
      * 'adaptivity/interval' steps (never if 0), and not after the last
-     * step. With @p output, its solution write in progress finishes before
-     * the mesh changes and its probes follow the new mesh. Returns whether
-     * the mesh was adapted.
+     * step.
      */
     bool
-    adapt_mesh_if_due(StepStatistics &stats, RunOutput<dim> *output = nullptr);
+    adaptation_due() const
+    {
+      const unsigned int every = parameters.adaptivity.interval;
+      return every != 0 && step_number % every == 0 && !finished();
+    }
 
     /**
-     * advance() under 'adaptivity/target error' (static class,
-     * target_error.cc): solve the load value, and while its error estimate
-     * eta exceeds the target times a_B(u_h, u_h)^(1/2), adapt the mesh and
-     * solve it again. Throws TargetErrorNotReached, after @p output wrote
-     * the load value's last solution, if the mesh can grow no further.
+     * Solve the step just taken again (the static class's load value on a
+     * new mesh, from the transferred solution).
      */
     StepStatistics
-    advance_to_target_error(RunOutput<dim> &output);
+    solve_again()
+    {
+      --step_number;
+      return advance();
+    }
+
+    /** Free every AMG hierarchy (rebuilt when a step needs one). */
+    void
+    release_preconditioner()
+    {
+      preconditioner.clear();
+    }
+
+    /** The timer of the run's sections (the performance summary's). */
+    TimerOutput &
+    get_timer()
+    {
+      return timer;
+    }
 
     /** The cell-wise refinement indicator of the current state. */
     Vector<float>
@@ -174,6 +216,30 @@ namespace hemicontact
                &error_estimate :
                nullptr;
     }
+
+    /**
+     * Add a field to the state (before setup() or resume()): one entry,
+     * and checkpoints, resume, adaptation and the output take it
+     * (doc/extending.md, "The state"). Throws InputError if its name is
+     * taken.
+     */
+    void
+    add_field(const FieldDefinition<dim> &definition);
+
+    /** The added fields (their vectors, to set and to read). */
+    AddedFields<dim> &
+    get_added_fields()
+    {
+      return added_fields;
+    }
+
+    /**
+     * The state as its one list of named fields: w_n, u_n, the contact
+     * traction, w_{n-1}, the branches, the memory's history and the added
+     * fields (state_fields.cc); read only.
+     */
+    std::vector<StateField<dim>>
+    fields() const;
 
     /** Whether the final time has been reached. */
     bool
@@ -239,6 +305,8 @@ namespace hemicontact
      */
     struct State
     {
+      const Parameters                     &parameters;
+      MPI_Comm                              mpi_communicator;
       const Discretization<dim>            &discretization;
       const DoFHandler<dim>                &dof_handler;
       const IndexSet                       &locally_owned_dofs;
@@ -272,12 +340,19 @@ namespace hemicontact
       unsigned int n_steps;
       /** The history of the memory term of the stress. */
       const MemoryHistory<dim> &memory;
+      /**
+       * Whether the time step is above the memory rule's stability limit
+       * (allowed by 'time/allow unstable time step').
+       */
+      bool memory_rule_unstable;
     };
 
     State
     state() const
     {
-      return {discretization,
+      return {parameters,
+              mpi_communicator,
+              discretization,
               dof_handler,
               locally_owned_dofs,
               locally_relevant_dofs,
@@ -303,7 +378,8 @@ namespace hemicontact
               last_step_length,
               step_number,
               n_steps,
-              memory};
+              memory,
+              memory_rule_unstable};
     }
     /** @} */
 
@@ -476,13 +552,19 @@ namespace hemicontact
                               TrilinosWrappers::MPI::Vector &w,
                               TrilinosWrappers::MPI::Vector &u_next);
 
-    /** @name run.cc */
+    /** @name state_fields.cc */
     /**
-     * The time loop of run(), with its output in @p output and its
-     * checkpoints by @p checkpointer.
+     * The one list of the state's fields, with @p history the vectors of
+     * the memory's history (MemoryHistory::saved_fields() or restore()).
      */
+    std::vector<StateField<dim>>
+    state_fields(const std::vector<TrilinosWrappers::MPI::Vector *> &history);
+    /** The branches of @p nodes from a field of the list ("branches"). */
     void
-    time_loop(RunOutput<dim> &output, Checkpointer<dim> &checkpointer);
+    branches_from_field(const TrilinosWrappers::MPI::Vector &field,
+                        std::vector<ContactNode<dim>>       &nodes) const;
+
+    /** @name run.cc */
     /**
      * One interval [start, start + k]: a step of size k, or if Newton
      * fails (and 'time step halvings' allows) two intervals of k/2;
@@ -525,6 +607,13 @@ namespace hemicontact
 
     /** Hanging nodes and u = 0 on Gamma_1. */
     AffineConstraints<double> base_constraints;
+    /** The space of w, u and every displacement-like field of the state. */
+    FieldSpace<dim> displacement_space;
+    /** The fields added to the state (add_field()). */
+    AddedFields<dim> added_fields;
+    /** The branches as fields, filled when the state is saved. */
+    mutable TrilinosWrappers::MPI::Vector branch_field;
+    mutable TrilinosWrappers::MPI::Vector amg_branch_field;
 
     /**
      * Constant on a fixed mesh, condensed with the base constraints. The

@@ -7,7 +7,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <hemicontact/output/memory_breakdown.h>
+#include <hemicontact/base/memory_breakdown.h>
 #include <hemicontact/solver/projected_operator.h>
 #include <hemicontact/solver/solver_tuning.h>
 

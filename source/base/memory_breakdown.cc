@@ -1,6 +1,6 @@
 #include <deal.II/base/mpi.h>
 
-#include <hemicontact/output/memory_breakdown.h>
+#include <hemicontact/base/memory_breakdown.h>
 
 #include <Epetra_CrsGraph.h>
 #include <Epetra_CrsMatrix.h>

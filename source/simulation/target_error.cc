@@ -9,7 +9,7 @@
 
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/output/run_output.h>
-#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/simulation/simulation.h>
 
 #include <cmath>
 #include <iomanip>
@@ -19,10 +19,10 @@ namespace hemicontact
 {
   template <int dim>
   StepStatistics
-  ContactProblem<dim>::advance_to_target_error(RunOutput<dim> &output)
+  Simulation<dim>::advance_to_target_error(RunOutput<dim> &output)
   {
     const AdaptivityParameters &settings = parameters.adaptivity;
-    StepStatistics              stats    = advance();
+    StepStatistics              stats    = problem.advance();
     unsigned int                newton   = 0;
     unsigned int                linear   = 0;
     // the stored energy before the first adaptation and after the last
@@ -30,10 +30,11 @@ namespace hemicontact
     for (unsigned int refinements = 0;; ++refinements)
       {
         // the static class's stored energy is 1/2 a_B(u_h, u_h)
-        const double norm   = std::sqrt(2 * std::max(energy.elastic, 0.));
-        const double target = settings.target_error * norm;
-        const types::global_cell_index cells = stats.n_cells;
-        const types::global_dof_index  dofs  = stats.n_dofs;
+        const double norm =
+          std::sqrt(2 * std::max(problem.state().energy.elastic, 0.));
+        const double                   target = settings.target_error * norm;
+        const types::global_cell_index cells  = stats.n_cells;
+        const types::global_dof_index  dofs   = stats.n_dofs;
         if (stats.estimate <= target)
           {
             pcout << std::scientific << std::setprecision(4)
@@ -64,17 +65,18 @@ namespace hemicontact
           {
             output.finish_solution_output(); // its job reads the mesh
             StepStatistics adaptation;
-            adapt_mesh(adaptation);
+            problem.adapt_mesh(adaptation);
             if (refinements == 0)
               elastic_before = adaptation.elastic_before_adaptation;
             elastic_after = adaptation.elastic_after_adaptation;
-            output.mesh_changed(*this);
+            output.mesh_changed(problem);
           }
-        if (at_max_cells || dof_handler.n_dofs() <= dofs)
+        if (at_max_cells || problem.state().dof_handler.n_dofs() <= dofs)
           {
             std::ostringstream message;
-            message << "at load value " << step_number << " (t = " << stats.time
-                    << ") the error estimate " << stats.estimate
+            message << "at load value " << problem.state().step_number
+                    << " (t = " << stats.time << ") the error estimate "
+                    << stats.estimate
                     << " is above 'adaptivity/target error' = "
                     << settings.target_error
                     << " times a_B(u_h, u_h)^(1/2) = " << norm << ", i.e. "
@@ -93,13 +95,12 @@ namespace hemicontact
             if (!at_max_cells)
               {
                 // back to a solution on the mesh that stopped growing
-                --step_number;
-                stats = advance();
+                stats = problem.solve_again();
               }
             // the load value as far as it got, in every output file
-            output.write_probes(*this);
-            output.write_solution(*this);
-            output.write_step(stats, *this);
+            output.write_probes(problem);
+            output.write_solution(problem);
+            output.write_step(stats, problem);
             output.finish_solution_output();
             throw TargetErrorNotReached(message.str());
           }
@@ -108,15 +109,12 @@ namespace hemicontact
         // transferred solution
         newton += stats.newton_iterations;
         linear += stats.linear_iterations;
-        --step_number;
-        stats = advance();
+        stats = problem.solve_again();
       }
   }
 
-#define HEMICONTACT_INSTANTIATE(dim)                                    \
-  template StepStatistics ContactProblem<dim>::advance_to_target_error( \
-    RunOutput<dim> &);
-  HEMICONTACT_INSTANTIATE(2)
-  HEMICONTACT_INSTANTIATE(3)
-#undef HEMICONTACT_INSTANTIATE
+  template StepStatistics
+  Simulation<2>::advance_to_target_error(RunOutput<2> &);
+  template StepStatistics
+  Simulation<3>::advance_to_target_error(RunOutput<3> &);
 } // namespace hemicontact
