@@ -23,12 +23,7 @@ namespace hemicontact
     if (settings.indicator == RefinementIndicator::residual)
       return residual_indicators();
     if (settings.indicator == RefinementIndicator::estimator)
-      {
-        // the estimate advance() evaluated for this state, if any
-        const ErrorEstimate *evaluated = last_error_estimate();
-        return evaluated != nullptr ? evaluated->cell_values() :
-                                      estimate_error().cell_values();
-      }
+      return error_estimate().cell_values();
     TrilinosWrappers::MPI::Vector w(locally_owned_dofs,
                                     locally_relevant_dofs,
                                     mpi_communicator);
@@ -54,14 +49,12 @@ namespace hemicontact
     std::set<types::global_dof_index> is_contact_node;
     for (const ContactNode<dim> &node : contact_nodes)
       is_contact_node.insert(node.dofs[0]);
-    const std::set<types::boundary_id> contact_ids(
-      parameters.boundary.contact_ids.begin(),
-      parameters.boundary.contact_ids.end());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() &&
-              contact_ids.count(cell->face(f)->boundary_id()))
+              parameters.boundary.part(cell->face(f)->boundary_id()) ==
+                BoundaryPart::contact)
             {
               const auto        &face  = cell->face(f);
               double             jumps = 0;
@@ -104,8 +97,7 @@ namespace hemicontact
     // mark: thresholds from all indicators, sorted, so the same on any
     // number of ranks (see marking_thresholds())
     const Vector<float> indicators = refinement_indicators();
-    error_estimate_step            = 0; // its cells are those of the mesh left
-    std::vector<float> owned;
+    std::vector<float>  owned;
     for (const auto &cell : tria->active_cell_iterators())
       if (cell->is_locally_owned())
         owned.push_back(indicators[cell->active_cell_index()]);
@@ -203,6 +195,7 @@ namespace hemicontact
 
     // rebuild everything that lives on the mesh, then the state on it
     setup_on_current_mesh();
+    ++state_revision;
     const std::vector<StateField<dim>> new_fields =
       state_fields(memory.restore(history_values));
     transfer.interpolate(new_fields);

@@ -8,7 +8,6 @@
 #include <hemicontact/problem/contact_problem.h>
 
 #include <cmath>
-#include <set>
 #include <sstream>
 #include <string>
 
@@ -129,13 +128,6 @@ namespace hemicontact
     std::vector<Vector<double>> face_values(fe_face.n_quadrature_points,
                                             Vector<double>(dim));
 
-    const std::set<types::boundary_id> traction_ids(
-      parameters.boundary.traction_ids.begin(),
-      parameters.boundary.traction_ids.end());
-    const std::set<types::boundary_id> contact_ids(
-      parameters.boundary.contact_ids.begin(),
-      parameters.boundary.contact_ids.end());
-
     // zero data (the default body force, an unloaded contact boundary)
     // contribute nothing: skip their integrals
     const auto is_zero = [](const Function<dim> *f) {
@@ -200,11 +192,12 @@ namespace hemicontact
           for (const unsigned int f : cell->face_indices())
             if (cell->face(f)->at_boundary())
               {
-                const types::boundary_id id = cell->face(f)->boundary_id();
-                const bool               on_traction =
-                  surface_traction && traction_ids.count(id) > 0;
+                const BoundaryPart part =
+                  parameters.boundary.part(cell->face(f)->boundary_id());
+                const bool on_traction =
+                  surface_traction && part == BoundaryPart::traction;
                 const bool on_contact =
-                  !on_traction && contact_traction && contact_ids.count(id) > 0;
+                  contact_traction && part == BoundaryPart::contact;
                 if (!on_traction && !on_contact)
                   continue;
                 fe_face.reinit(cell, f);

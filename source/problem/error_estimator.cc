@@ -109,10 +109,6 @@ namespace hemicontact
         read(u, other_dof_indices, u_other);
     };
 
-    const auto is_in = [](const std::vector<unsigned int> &ids,
-                          const types::boundary_id         id) {
-      return std::find(ids.begin(), ids.end(), id) != ids.end();
-    };
     const double rho = scheme.inertia_density(material.density());
     // sigma_h at the points of a face from a cell's local values
     const auto stresses = [&](const FEFaceValuesBase<dim> &face_values,
@@ -202,12 +198,11 @@ namespace hemicontact
                 {
                   // h_E |g - sigma_h nu - xi_h|^2 with g = f2 (or f3, or 0),
                   // xi_h only on Gamma_3; nothing on Gamma_1
-                  const types::boundary_id id = face->boundary_id();
-                  if (is_in(boundary.clamped_ids, id))
+                  const BoundaryPart part = boundary.part(face->boundary_id());
+                  if (part == BoundaryPart::clamped)
                     continue;
-                  const bool on_traction = is_in(boundary.traction_ids, id);
-                  const bool on_contact =
-                    !on_traction && is_in(boundary.contact_ids, id);
+                  const bool on_traction = part == BoundaryPart::traction;
+                  const bool on_contact  = part == BoundaryPart::contact;
                   fe_boundary.reinit(cell, f);
                   stresses(fe_boundary, w_local, u_local, sigma);
                   for (auto &g : g_values)

@@ -28,10 +28,22 @@ namespace hemicontact
   }
 
   template <int dim>
+  const ErrorEstimate &
+  ContactProblem<dim>::error_estimate() const
+  {
+    if (estimate_revision != state_revision)
+      {
+        cached_estimate   = estimate_error();
+        estimate_revision = state_revision;
+      }
+    return cached_estimate;
+  }
+
+  template <int dim>
   Vector<float>
   ContactProblem<dim>::residual_indicators() const
   {
-    return estimate_error().cell_values(parameters.adaptivity.contact_weight,
+    return error_estimate().cell_values(parameters.adaptivity.contact_weight,
                                         /*in_energy_norm=*/false);
   }
 
@@ -39,6 +51,10 @@ namespace hemicontact
   ContactProblem<2>::estimate_error() const;
   template ErrorEstimate
   ContactProblem<3>::estimate_error() const;
+  template const ErrorEstimate &
+  ContactProblem<2>::error_estimate() const;
+  template const ErrorEstimate &
+  ContactProblem<3>::error_estimate() const;
   template Vector<float>
   ContactProblem<2>::residual_indicators() const;
   template Vector<float>

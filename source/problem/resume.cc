@@ -16,6 +16,7 @@ namespace hemicontact
     source.load_mesh(discretization);
     discretization.check_boundary_ids(parameters.boundary);
     setup_on_current_mesh();
+    ++state_revision;
     // the state's fields by name, the memory's history sized as recorded
     // (doc/theory.md 11)
     branch_field.reinit(locally_owned_dofs, mpi_communicator);

@@ -3,7 +3,6 @@
 
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/problem/contact_problem.h>
-#include <hemicontact/solver/friction_bound_iteration.h>
 
 #include <algorithm>
 #include <functional>
@@ -49,12 +48,12 @@ namespace hemicontact
     stats.wall_seconds = wall.wall_time();
     stats.n_cells      = discretization.triangulation->n_global_active_cells();
     stats.n_dofs       = dof_handler.n_dofs();
+    ++state_revision;
+    solved_revision = state_revision;
     if (parameters.output.error_estimate)
       {
-        TimerOutput::Scope t(timer, "error estimate");
-        error_estimate          = estimate_error();
-        error_estimate_step     = step_number;
-        const ErrorEstimate &e  = error_estimate;
+        TimerOutput::Scope   t(timer, "error estimate");
+        const ErrorEstimate &e  = error_estimate();
         stats.estimated         = true;
         stats.estimate          = e.total();
         stats.estimate_interior = e.part(e.interior_sum);
@@ -124,21 +123,8 @@ namespace hemicontact
     assemble_step_rhs();
     try
       {
-        StepStatistics stats = solve_step(wall_length);
-        // a bound in the step's own unknown: fixed-point iterations on it
-        // (doc/theory.md, sections 9.8 and 9.9)
-        const FrictionBound<dim> &bound = *data.friction_bound;
-        if (scheme.is_static() ? bound.uses_normal_displacement() ||
-                                   bound.uses_contact_pressure() :
-                                 bound.uses_normal_velocity())
-          iterate_friction_bound(
-            [&]() { return update_friction_bounds(start + k, pressure); },
-            [&]() {
-              recheck_convexity_if_bounds_grew(start + k);
-              return solve_step(wall_length);
-            },
-            parameters.nonlinear_solver,
-            stats);
+        StepStatistics stats =
+          solve_with_bound(start + k, pressure, wall_length, false);
         scheme.displacement_after_step(displacement, velocity, k);
         if (memory.active())
           memory.commit_step(&velocity, &contact_traction);

@@ -7,11 +7,9 @@
 
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/problem/contact_problem.h>
-#include <hemicontact/solver/friction_bound_iteration.h>
 
 #include <cmath>
 #include <map>
-#include <set>
 
 namespace hemicontact
 {
@@ -162,9 +160,7 @@ namespace hemicontact
   void
   ContactProblem<dim>::setup_contact_nodes()
   {
-    const std::set<types::boundary_id> contact_ids(
-      parameters.boundary.contact_ids.begin(),
-      parameters.boundary.contact_ids.end());
+    const BoundaryParameters &boundary = parameters.boundary;
 
     // lumped boundary mass m_j = int_{Gamma_3} phi_j and the nodal normal
     // n_j = int_{Gamma_3} phi_j nu_{c(j)}, condensed onto the free nodes
@@ -183,7 +179,8 @@ namespace hemicontact
       if (cell->is_locally_owned())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() &&
-              contact_ids.count(cell->face(f)->boundary_id()))
+              boundary.part(cell->face(f)->boundary_id()) ==
+                BoundaryPart::contact)
             {
               fe_face.reinit(cell, f);
               local_mass   = 0;
@@ -232,7 +229,8 @@ namespace hemicontact
       if (!cell->is_artificial())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() &&
-              contact_ids.count(cell->face(f)->boundary_id()))
+              boundary.part(cell->face(f)->boundary_id()) ==
+                BoundaryPart::contact)
             for (const unsigned int v : cell->face(f)->vertex_indices())
               {
                 ContactNode<dim> node;
@@ -349,6 +347,7 @@ namespace hemicontact
   void
   ContactProblem<dim>::initialize_state()
   {
+    ++state_revision;
     data.set_time(0);
     added_fields.initialize(*discretization.mapping);
     const auto interpolate_checked = [&](const Function<dim>           &f,
@@ -424,15 +423,7 @@ namespace hemicontact
         velocity = 0;
         try
           {
-            StepStatistics stats = solve_step(time_step);
-            // no step before w_0 whose pressure a bound in p_nu could read:
-            // its own, a fixed point (doc/theory.md, section 9.9)
-            if (data.friction_bound->uses_contact_pressure())
-              iterate_friction_bound(
-                [&]() { return update_friction_bounds(0.); },
-                [&]() { return solve_step(time_step); },
-                parameters.nonlinear_solver,
-                stats);
+            solve_with_bound(0., nullptr, time_step, true);
           }
         catch (const SolverFailure &failure)
           {
@@ -466,13 +457,7 @@ namespace hemicontact
     velocity = 0;
     try
       {
-        StepStatistics            stats = solve_step(time_step);
-        const FrictionBound<dim> &bound = *data.friction_bound;
-        if (bound.uses_normal_displacement() || bound.uses_contact_pressure())
-          iterate_friction_bound([&]() { return update_friction_bounds(0.); },
-                                 [&]() { return solve_step(time_step); },
-                                 parameters.nonlinear_solver,
-                                 stats);
+        solve_with_bound(0., nullptr, time_step, true);
       }
     catch (const SolverFailure &failure)
       {

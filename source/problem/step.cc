@@ -5,6 +5,7 @@
 #include <hemicontact/model/contact_wall.h>
 #include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/solver/active_set_newton.h>
+#include <hemicontact/solver/friction_bound_iteration.h>
 
 
 namespace hemicontact
@@ -116,8 +117,50 @@ namespace hemicontact
     return stats;
   }
 
+  template <int dim>
+  StepStatistics
+  ContactProblem<dim>::solve_with_bound(
+    const double                         t,
+    const TrilinosWrappers::MPI::Vector *pressure,
+    const double                         wall_length,
+    const bool                           initial)
+  {
+    StepStatistics            stats = solve_step(wall_length);
+    const FrictionBound<dim> &bound = *data.friction_bound;
+    // whether the bound reads the step's own unknown (doc/theory.md,
+    // sections 9.8 and 9.9): in the static class u_nu and p_nu; in a step
+    // of the velocity classes w_nu (p_nu is the step before's); at w_0 of
+    // the quasistatic class p_nu, which no step before could give
+    const bool reads_own_unknown =
+      scheme.is_static() ?
+        bound.uses_normal_displacement() || bound.uses_contact_pressure() :
+      initial ? bound.uses_contact_pressure() :
+                bound.uses_normal_velocity();
+    if (reads_own_unknown)
+      iterate_friction_bound(
+        [&]() { return update_friction_bounds(t, pressure); },
+        [&]() {
+          if (!initial)
+            recheck_convexity_if_bounds_grew(t);
+          return solve_step(wall_length);
+        },
+        parameters.nonlinear_solver,
+        stats);
+    return stats;
+  }
+
   template StepStatistics
   ContactProblem<2>::solve_step(const double);
   template StepStatistics
   ContactProblem<3>::solve_step(const double);
+  template StepStatistics
+  ContactProblem<2>::solve_with_bound(const double,
+                                      const TrilinosWrappers::MPI::Vector *,
+                                      const double,
+                                      const bool);
+  template StepStatistics
+  ContactProblem<3>::solve_with_bound(const double,
+                                      const TrilinosWrappers::MPI::Vector *,
+                                      const double,
+                                      const bool);
 } // namespace hemicontact

@@ -5,6 +5,7 @@
 
 #include <hemicontact/solver/solver_tuning.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -44,11 +45,37 @@ namespace hemicontact
   };
 
   /** The three boundary parts, each a set of boundary ids. */
+  /** The part of the boundary a boundary id belongs to. */
+  enum class BoundaryPart
+  {
+    clamped,  ///< Gamma_1
+    traction, ///< Gamma_2
+    contact,  ///< Gamma_3
+    free      ///< listed nowhere: sigma nu = 0
+  };
+
   struct BoundaryParameters
   {
     std::vector<unsigned int> clamped_ids;  ///< Gamma_1: u = 0
     std::vector<unsigned int> traction_ids; ///< Gamma_2: sigma nu = f2
     std::vector<unsigned int> contact_ids;  ///< Gamma_3: contact
+
+    /**
+     * The part of boundary id @p id: the one list that names it (parse()
+     * requires the lists to be disjoint), or free. The one classification
+     * every face loop uses.
+     */
+    BoundaryPart
+    part(const unsigned int id) const
+    {
+      const auto in = [id](const std::vector<unsigned int> &ids) {
+        return std::find(ids.begin(), ids.end(), id) != ids.end();
+      };
+      return in(clamped_ids)  ? BoundaryPart::clamped :
+             in(traction_ids) ? BoundaryPart::traction :
+             in(contact_ids)  ? BoundaryPart::contact :
+                                BoundaryPart::free;
+    }
 
     static void
     declare(ParameterHandler &prm);

@@ -189,11 +189,12 @@ namespace hemicontact
     residual_indicators() const;
 
     /**
-     * The residual error estimate of the step just solved (doc/theory.md
-     * section 12, ErrorEstimator).
+     * The residual error estimate of the current state (doc/theory.md
+     * section 12, ErrorEstimator), computed once per state: every
+     * indicator and output derived from it reads the same one.
      */
-    ErrorEstimate
-    estimate_error() const;
+    const ErrorEstimate &
+    error_estimate() const;
 
     /**
      * The time indicator of the velocity classes (doc/theory.md 12.4):
@@ -212,8 +213,9 @@ namespace hemicontact
     const ErrorEstimate *
     last_error_estimate() const
     {
-      return error_estimate_step == step_number && step_number > 0 ?
-               &error_estimate :
+      return parameters.output.error_estimate &&
+                 solved_revision == state_revision && step_number > 0 ?
+               &error_estimate() :
                nullptr;
     }
 
@@ -449,6 +451,19 @@ namespace hemicontact
      */
     StepStatistics
     solve_step(const double wall_length);
+    /**
+     * solve_step(), then, if the friction bound reads the step's own
+     * unknown, the fixed point on it (iterate_friction_bound()) with the
+     * bounds at time @p t and the pressure @p pressure
+     * (update_friction_bounds()): the one solve of a step, of the initial
+     * velocity and of the static initial state (@p initial: the latter
+     * two, no convexity recheck).
+     */
+    StepStatistics
+    solve_with_bound(const double                         t,
+                     const TrilinosWrappers::MPI::Vector *pressure,
+                     const double                         wall_length,
+                     const bool                           initial);
 
     /** @name diagnostics.cc */
     void
@@ -471,6 +486,11 @@ namespace hemicontact
      */
     void
     recheck_convexity_if_bounds_grew(const double t);
+
+    /** @name residual_indicator.cc */
+    /** The residual error estimate of the current state, computed. */
+    ErrorEstimate
+    estimate_error() const;
 
     /** @name wall_admissibility.cc (doc/theory.md 10.2) */
     /**
@@ -645,9 +665,15 @@ namespace hemicontact
     EnergyBalance           energy;
     ConvexityCheck          convexity;
 
-    /** The estimate of step error_estimate_step (advance(); 0: none). */
-    ErrorEstimate error_estimate;
-    unsigned int  error_estimate_step = 0;
+    /**
+     * The state the members hold, changed by every solve, adaptation,
+     * restart and resume; the revision of the last step solved.
+     */
+    unsigned int state_revision  = 0;
+    unsigned int solved_revision = numbers::invalid_unsigned_int;
+    /** error_estimate() of revision estimate_revision. */
+    mutable ErrorEstimate cached_estimate;
+    mutable unsigned int  estimate_revision = numbers::invalid_unsigned_int;
 
     double time_step = 0;
     /** Length of the last converged step (0: none yet). */
