@@ -526,7 +526,11 @@ namespace Step3
                             u_nu == 0 ? 0.5 * law.jump() :
                                         law.response(u_nu);
       const double xi_tau = u_tau == 0 ? 0.5 * friction_bound : friction_bound;
-      double       N      = 0;
+      // $N = d_+ \sum_m b_m I_{\tau_m}(t)$: zero where the body never
+      // penetrated ($d \le 0$, separation and the contact without
+      // penetration), as the discrete rule gives at nodes that stay out,
+      // so that the exact solution's branches are those of step-1.
+      double N = 0;
       for (const NormalMemoryTerm &term : normal_memory)
         N += term.b * convolution(term.tau, t);
       N *= std::max(d(p[0])[0], 0.);
@@ -760,6 +764,9 @@ namespace Step3
     load.reinit(dof_handler.n_dofs());
     memory_load.reinit(dof_handler.n_dofs());
     newton_rhs.reinit(dof_handler.n_dofs());
+    // One history vector per relaxation term, of the layout of $u$: the
+    // recursion of advance_memory() adds $k u_{n-1}$ to it, so it must
+    // share the numbering of the degrees of freedom.
     stress_history.assign(data.relaxation.size(),
                           Vector<double>(dof_handler.n_dofs()));
 
@@ -1032,6 +1039,10 @@ namespace Step3
     for (unsigned int m = 0; m < data.relaxation.size(); ++m)
       {
         Vector<double> &h = stress_history[m];
+        // $h \leftarrow e^{-k/\tau_m}(h + k u_{n-1})$: first the new
+        // state joins the sum, then the whole sum decays by one step, so
+        // that $u_{n-1}$ enters with the weight $k e^{-k/\tau_m}$, the
+        // kernel at $t_n - t_{n-1} = k$ (never at 0).
         h.add(k, solution);
         h *= decay(data.relaxation[m].tau, k);
         S_mu.add(data.relaxation[m].mu, h);
@@ -1051,6 +1062,8 @@ namespace Step3
         node.memory_pressure = 0;
         for (unsigned int m = 0; m < data.normal_memory.size(); ++m)
           {
+            // the same recursion with $(u_{\nu,n-1})_+$: a separating node
+            // adds nothing, but its history keeps decaying
             double &H = node.memory_history[m];
             H         = (H + k * std::max(u_nu, 0.)) *
                 decay(data.normal_memory[m].tau, k);
@@ -1107,6 +1120,11 @@ namespace Step3
         u[c]        = solution(node.dofs[c]);
         traction[c] = -residual(node.dofs[c]) / node.mass;
       }
+    // The residual at a contact node is the force the laws do not yet
+    // supply; divided by the weight $m_i$ it is a traction, comparable with
+    // the law's response $\xi$ and the friction bound $F_b$. The memory
+    // pressure $N_i$ is not in it: $b_n$ holds $-m_i N_i\nu_i$, so the
+    // residual is what the laws must add to the memory's pressure.
     NodeState m;
     m.u_nu   = u * node.normal;
     m.u_tau  = u - m.u_nu * node.normal;
@@ -1388,6 +1406,9 @@ namespace Step3
                 ExcMessage("The load values must be solved in order."));
     load_step = n;
     time      = n * time_step;
+    // One function computes $K$ and $F_n$ (as in step-1): $K$ comes out
+    // the same at every load value, the load is that of $t_n$, and
+    // advance_memory() then turns $F_n$ into $b_n$.
     assemble_system(clamped_constraints, stiffness_matrix, load);
     if (n > 0)
       advance_memory();
@@ -1450,6 +1471,8 @@ namespace Step3
   std::pair<double, double>
   MemoryContactProblem<dim>::right_end() const
   {
+    // The block's free end is its rightmost contact node; the clamped
+    // corner at the left is not a contact node.
     const auto node = std::max_element(contact_nodes.begin(),
                                        contact_nodes.end(),
                                        [](const ContactNode<dim> &x,
@@ -1498,6 +1521,8 @@ namespace Step3
     std::ofstream csv(std::string("contact-") + suffix + ".csv");
     csv << "x,u_nu,u_tau,minus_sigma_nu,sigma_tau,N,normal_branch,"
            "tangential_branch\n";
+    // The branch counts, the largest penetration and the largest memory
+    // pressure over the nodes, for the terminal line.
     unsigned int n_normal[3] = {0, 0, 0}, n_tangential[2] = {0, 0};
     double       largest_u_nu = 0, largest_N = 0;
     for (const ContactNode<dim> &node : contact_nodes)
@@ -1750,6 +1775,10 @@ main(int argc, char **argv)
                           " (alpha_nu < lambda_1: one solution)" :
                           " (alpha_nu >= lambda_1: maybe several solutions)")
                     << std::endl;
+          // The block without memory runs beside the block with memory, one
+          // load value each in turn; its load values are independent
+          // problems (empty kernels, no memory), and only its free end is
+          // written, to history.csv, for the figure of doc/results.md.
           std::ofstream history("history.csv");
           AssertThrow(history, ExcIO());
           history << "t,load_factor,u_nu_memory,N_memory,u_nu_elastic\n";
@@ -1783,6 +1812,9 @@ main(int argc, char **argv)
                 {
                   problem.run(n);
                   newton += problem.newton_iterations;
+                  // the largest errors over the load values, $t_0$ included:
+                  // $u_0$ is the first state of every memory sum, and its
+                  // error is carried into all the later load values
                   const auto [e_H, e_V] = problem.compute_errors(manufactured);
                   E_H                   = std::max(E_H, e_H);
                   E_V                   = std::max(E_V, e_V);
@@ -1815,6 +1847,9 @@ main(int argc, char **argv)
           std::cout << "\nThe memory rule alone, 1/h = 16, u at T = 1 for k "
                        "against k/2:"
                     << std::endl;
+          // The mesh is coarse on purpose: the difference measures the
+          // rule in time on whatever mesh, and 578 unknowns keep the
+          // finest $k$ cheap (129 load values at five levels).
           ConvergenceTable                         k_table;
           std::unique_ptr<MemoryContactProblem<2>> coarser;
           for (unsigned int level = 0; level <= n_levels; ++level)
