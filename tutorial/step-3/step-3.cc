@@ -1078,11 +1078,13 @@ namespace Step3
 
   // @sect3{The active-set Newton method}
 
-  // This part is step-1's, line for line: the memory is inside the vector
-  // load $= b_n$, and so inside the residual $R = K u - b_n$ and the
-  // energy. What the solver calls the nodal contact force, $G_i = -R_i$,
-  // is therefore the force of the *laws*: the part of the contact
-  // traction that the foundation's memory does not already supply.
+  // This part is step-1's, line for line but for one addition in
+  // assemble_newton_system() (the memory's part of $b_n$ in the Newton
+  // right-hand side): the memory is inside the vector load $= b_n$, and
+  // so inside the residual $R = K u - b_n$ and the energy. What the solver
+  // calls the nodal contact force, $G_i = -R_i$, is therefore the force of the
+  // *laws*: the part of the contact traction that the foundation's memory does
+  // not already supply.
 
   // @sect4{The state of a node}
 
