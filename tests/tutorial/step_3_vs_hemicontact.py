@@ -1,19 +1,23 @@
-"""step_3_vs_hemicontact.py STEP_DIR HEMICONTACT_DIR: the nodal
+"""step_3_vs_hemicontact.py STEP_DIR HEMICONTACT_DIR STEP_LOG: the nodal
 displacements of tutorial/step-3 (displacement-NN.txt: x y u_x u_y in
 %.17g) and of the full program (nodal_NNNNN.h5, 'output/precision =
 double') at the 17 load values t_n = n/8, n = 0..16, of the block with
 memory (step_3_block.prm), matched by the node coordinates, agree to 1e-10
-relative to the largest displacement of the load value; and the problem
+relative to the largest displacement of the load value; the branch counts
+of load values 1..16 (the full program's steps.csv, the step's log) agree;
+and the problem
 exercises every branch (read from the step's contact-NN.csv: separating,
 stick and penetrating on each of the three segments of the normal law,
 tangential stick and slip) and both memories (N > 0 at the contact, and
 the penetration falling under the held load)."""
+import csv
+import re
 import sys
 
 import h5py
 import numpy as np
 
-step_dir, full_dir = sys.argv[1], sys.argv[2]
+step_dir, full_dir, step_log = sys.argv[1:4]
 n_values, k = 17, 0.125
 breakpoints = [0.02, 0.15]  # the law's kinks between its three segments
 
@@ -33,6 +37,20 @@ for n in range(n_values):
     print(f"t = {k * n:.3f}: {len(step)} nodes, max |u_step - u_full| = "
           f"{difference:.3e}, relative {difference / scale:.3e}")
 assert worst <= 1e-10, worst
+
+# the branch counts per load value n >= 1 (steps.csv has no row for the
+# load value 0, which the full program solves before its first step)
+branches = ["n_separating", "n_normal_stick", "n_damped", "n_stick", "n_slip"]
+full_counts = {int(r["step"]): [int(r[b]) for b in branches]
+               for r in csv.DictReader(open(full_dir + "/steps.csv"))}
+step_counts = {}
+for line in open(step_log):
+    m = re.match(r"\s*t = ([0-9.]+): \d+ Newton, normal sep/stick/pen "
+                 r"(\d+)/(\d+)/(\d+), tangential stick/slip (\d+)/(\d+)", line)
+    if m and float(m.group(1)) > 0:
+        step_counts[round(float(m.group(1)) / k)] = [int(g) for g in m.groups()[1:]]
+assert len(full_counts) == n_values - 1 and step_counts == full_counts, \
+    (full_counts, step_counts)
 
 # every branch is visited at some load value, and the memory acts
 seen = set()
@@ -55,6 +73,7 @@ assert seen == expected, sorted(seen)
 assert table["N"].max() > 0, "no memory pressure at t = 2"
 # the full load from t = 0.75 (n = 6) on: the penetration falls under it
 assert largest[-1] < largest[6], (largest[6], largest[-1])
-print(f"max relative difference {worst:.3e} <= 1e-10; branches visited: "
+print(f"max relative difference {worst:.3e} <= 1e-10; the same branch counts "
+      f"at the {len(full_counts)} load values after the first; branches visited: "
       + ", ".join(sorted(seen)) + f"; largest u_nu {largest[6]:.4f} at "
       f"t = 0.75, {largest[-1]:.4f} at t = 2 under the same load")
