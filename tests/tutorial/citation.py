@@ -8,7 +8,8 @@ that
   programs (tutorial/**/*.md, tutorial/**/*.cc, the lines of
   doc/tutorial.md and README.md) is that one;
 * step-2's introduction and program, which solve the paper's problem,
-  give the full reference: the authors, the title and the year.
+  and step-3's introduction, which relates step-3 to it, give the full
+  reference: the authors, the title and the year.
 It prints what it checked and exits 1 with FILE:LINE for each mismatch."""
 import glob
 import os
@@ -45,7 +46,8 @@ for path in files:
             errors.append(f"{os.path.relpath(path, source)}:{line}: "
                           f"'{written}', CITATION.cff has '{authors}'")
 
-for page in ("tutorial/step-2/doc/intro.md", "tutorial/step-2/step-2.cc"):
+for page in ("tutorial/step-2/doc/intro.md", "tutorial/step-2/step-2.cc",
+             "tutorial/step-3/doc/intro.md"):
     text = " ".join(open(os.path.join(source, page)).read().split())
     text = re.sub(r"\s*\*\s*", " ", text)  # a C comment's leading stars
     for part in (authors, title, year):
