@@ -1407,10 +1407,10 @@ namespace Step4
           problem.refine_mesh(e.cell_values(), 0.2);
       }
     const auto counts = problem.branch_counts();
-    std::cout << "last cycle: normal separating/stick/penetrating " << counts[0]
-              << '/' << counts[1] << '/' << counts[2]
-              << ", tangential stick/slip " << counts[3] << '/' << counts[4]
-              << std::endl;
+    std::cout << "cycle " << n_cycles - 1
+              << ": normal separating/stick/penetrating " << counts[0] << '/'
+              << counts[1] << '/' << counts[2] << ", tangential stick/slip "
+              << counts[3] << '/' << counts[4] << std::endl;
     return results;
   }
 
@@ -1482,15 +1482,17 @@ namespace Step4
   // \log(E_{J,k-1}/E_{J,k}) / \log(N_k/N_{k-1})$ (so that $E_J \sim
   // N^{-p}$; $p = 1/2$ is the rate of $Q_1$ for a smooth solution in 2D),
   // the estimate $\eta$ with its rate, and the effectivity index
-  // $\eta/E_J$.
+  // $\eta/E_J$; then the rate over the whole table.
   void
   print_table(const std::string              &title,
+              const std::string              &row_name,
               const std::vector<CycleResult> &rows,
               const double                    J_reference)
   {
     std::cout << '\n'
               << title << '\n'
-              << "cycle cells  dofs Newton    E_J     rate    eta     rate "
+              << row_name
+              << " cells  dofs Newton    E_J     rate    eta     rate "
                  "effectivity\n";
     for (unsigned int k = 0; k < rows.size(); ++k)
       {
@@ -1527,6 +1529,16 @@ namespace Step4
                       r.eta / E);
         std::cout << line << '\n';
       }
+    // The rate over the whole table, from its first row to its last.
+    const CycleResult &first = rows.front(), &last = rows.back();
+    const double       dN = std::log(double(last.dofs) / first.dofs);
+    std::printf("rate from %s 0 to %u: E_J %4.2f, eta %4.2f\n",
+                row_name.c_str(),
+                static_cast<unsigned int>(rows.size() - 1),
+                std::log(energy_error(first.energy, J_reference) /
+                         energy_error(last.energy, J_reference)) /
+                  dN,
+                std::log(first.eta / last.eta) / dN);
     std::cout << std::flush;
   }
 } // namespace Step4
@@ -1664,9 +1676,11 @@ main(int argc, char **argv)
                                               all.begin() + n_table_cycles);
       const std::vector<CycleResult> uniform = uniform_study(data, 4);
       print_table("Uniform refinement (E_J, eta, rates against the dofs)",
+                  "level",
                   uniform,
                   J_reference);
       print_table("Adaptive refinement (E_J, eta, rates against the dofs)",
+                  "cycle",
                   adaptive,
                   J_reference);
       write_csv(uniform, J_reference, "uniform.csv");
