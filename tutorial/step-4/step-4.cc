@@ -1553,15 +1553,17 @@ namespace CommandLine
   constexpr int exit_bad_arguments = 2;
 
   // The number of cycles of the mode "adaptive": each refines a fifth of
-  // the cells, about 1.6 times the unknowns of the cycle before; 30
-  // cycles end near 40,000 unknowns in about 20 s (doc/results.md,
-  // "Running it"). The cap keeps a typo from running for hours.
-  constexpr unsigned int max_cycles = 30;
+  // the cells, about 1.6 times the unknowns of the cycle before, and with
+  // the direct solver about twice the time. 16 cycles end at 121,872
+  // unknowns after about 20 s of CPU time (doc/results.md, "Running it");
+  // the cap keeps a typo from running for an hour or exhausting the
+  // memory.
+  constexpr unsigned int max_cycles = 16;
 
   const char *const usage =
     "usage: step-4                    the reference solution, then the\n"
     "                                 uniform and the adaptive tables\n"
-    "       step-4 adaptive CYCLES    CYCLES (1 to 30) cycles of the\n"
+    "       step-4 adaptive CYCLES    CYCLES (1 to 16) cycles of the\n"
     "                                 adaptive loop, without the errors\n"
     "       step-4 --help             this text\n"
     "exit codes: 0 done, 1 the computation failed, 2 a bad argument";
