@@ -293,7 +293,11 @@ namespace Step4
       return Tensor<1, 2>({load[0], load[1]});
     }
 
-    // The traction on the top of the left arm.
+    // The traction on the top of the left arm: down and to the left. It
+    // presses most of $\Gamma_3$ into the foundation beyond the jump $a$
+    // (the branch "penetrating"), holds the rest at $u_\nu = 0$, and shears
+    // enough that part of $\Gamma_3$ slips: every branch but "separating"
+    // occurs on the adapted meshes (the program prints the counts).
     static constexpr std::array<double, 2> load = {{-4, -8}};
   };
 
@@ -576,6 +580,10 @@ namespace Step4
     Vector<double>                       cell_mass(n), cell_normal(n);
     std::vector<types::global_dof_index> dofs(n);
 
+    // The face integrals, one face at a time, added into the global
+    // vectors through the constraints: a share that belongs to a hanging
+    // node lands on its parents, a share of a clamped node nowhere (its
+    // entry stays zero and it is no contact node anyway).
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary() && face->boundary_id() == BoundaryIds::contact)
@@ -600,6 +608,11 @@ namespace Step4
             constraints.distribute_local_to_global(cell_normal, dofs, normal);
           }
 
+    // Every vertex of $\Gamma_3$ is met once per face it belongs to: the
+    // flags keep the first meeting. The constrained vertices (the corner on
+    // $\Gamma_1$, and the hanging nodes) are skipped; every other vertex of
+    // $\Gamma_3$ has a positive weight, since it is the end of at least one
+    // active face of $\Gamma_3$.
     contact_nodes.clear();
     std::vector<bool> seen(dof_handler.n_dofs(), false);
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -664,6 +677,11 @@ namespace Step4
     Vector<double>                       cell_rhs(n);
     std::vector<types::global_dof_index> dofs(n);
 
+    // The constraints are applied while assembling
+    // (distribute_local_to_global()), so the matrix and the vector come out
+    // condensed, as in step-6. The load uses one Gauss point more than the
+    // matrix, as in step-1: there the data were not polynomials; here they
+    // are constant, and the extra point costs little.
     matrix = 0;
     rhs    = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -773,6 +791,9 @@ namespace Step4
         u[c]        = solution(node.dofs[c]);
         traction[c] = -residual(node.dofs[c]) / node.mass;
       }
+    // The residual at a contact node is the force the laws do not yet
+    // supply; divided by the weight $m_i$ it is a traction, comparable with
+    // the law's response $\xi$ and the friction bound $F_b$.
     NodeState m;
     m.u_nu   = u * node.normal;
     m.u_tau  = u - m.u_nu * node.normal;
@@ -841,6 +862,8 @@ namespace Step4
   AdaptiveContactProblem<dim>::nonsmooth_residual(
     const Vector<double> &residual) const
   {
+    // At a contact node the residual is not expected to vanish (it is the
+    // contact force); there the complementarity functions take its place.
     Vector<double> free_part(residual);
     double         contact_part = 0;
     for (const ContactNode<dim> &node : contact_nodes)
@@ -875,6 +898,9 @@ namespace Step4
   AdaptiveContactProblem<dim>::assemble_newton_system(
     const Vector<double> &residual)
   {
+    // Each held condition is solved for one component of the node: the one
+    // of largest $|\nu_c|$, so that the division by $\nu_k$ is safe (on the
+    // flat $\Gamma_3$ of this program, $\nu = (0, -1)$ and $k$ is $y$).
     newton_constraints.clear();
     for (const ContactNode<dim> &node : contact_nodes)
       {
@@ -915,6 +941,9 @@ namespace Step4
 
     assemble_system(newton_constraints, newton_matrix, newton_rhs);
 
+    // The nodal terms of the free branches, added through the same
+    // constraints as the cell terms, so that a node's held directions
+    // drop out of its own $L_i$ too.
     FullMatrix<double>                   node_matrix(dim, dim);
     Vector<double>                       node_rhs(dim);
     std::vector<types::global_dof_index> node_dofs(dim);
@@ -1006,6 +1035,11 @@ namespace Step4
   void
   AdaptiveContactProblem<dim>::solve()
   {
+    // The tolerance is relative to the load: the residual is a force, and
+    // $10^{-11}|F|$ lies well above the round-off of evaluating it while
+    // being tight enough for the comparison with the full program at
+    // $10^{-10}$. The load does not change between the meshes, but its
+    // vector does (it has an entry per node), and so does the tolerance.
     const double   tolerance = 1e-11 * load.l2_norm();
     Vector<double> residual(dof_handler.n_dofs());
     newton_iterations = 0;
@@ -1027,6 +1061,13 @@ namespace Step4
         direct_solver.solve(trial);
         newton_constraints.distribute(trial);
 
+        // The line search on $J_h$. A full Newton step can raise $J_h$
+        // because $j_\nu$ is not convex: the quadratic model of one branch
+        // is wrong beyond that branch's segment of the law. The bound
+        // $10^{-12}$ on the rise is relative, since $J_h$ is a sum of terms
+        // of either sign whose last digits are noise. The trial points
+        // satisfy the constraints of $V^h$ (distribute() above), and so does
+        // every point on the segment to them.
         Vector<double> direction(trial);
         direction -= solution;
         const double J0    = energy(solution);
@@ -1111,6 +1152,9 @@ namespace Step4
     std::vector<Tensor<2, dim>>      gradients(n_f), other_gradients(n_f);
     std::vector<Tensor<1, dim>>      xi_values(n_f);
 
+    // Four vectors with one entry per active cell, indexed by
+    // active_cell_index(), which numbers the active cells in the order of
+    // the iteration below.
     ErrorEstimate e;
     for (Vector<double> *part : {&e.interior, &e.jumps, &e.neumann, &e.contact})
       part->reinit(triangulation.n_active_cells());
@@ -1157,6 +1201,10 @@ namespace Step4
                 // on $\Gamma_2$ and $\Gamma_3$, $\xi_h$ on $\Gamma_3$ only.
                 if (face->boundary_id() == BoundaryIds::clamped)
                   continue;
+                // data.traction() is $f_2$ on the loaded part of $\Gamma_2$,
+                // zero on its free part, and $f_3$ (zero here) on
+                // $\Gamma_3$: the same function as in the assembly, so
+                // that the estimate sees the load that was solved for.
                 const bool on_contact =
                   face->boundary_id() == BoundaryIds::contact;
                 fe_face.reinit(cell, f);
@@ -1231,6 +1279,9 @@ namespace Step4
   AdaptiveContactProblem<dim>::refine_mesh(const Vector<float> &indicators,
                                            const double         fraction)
   {
+    // The flags first; prepare_coarsening_and_refinement() then adds the
+    // flags that the smoothing needs, and SolutionTransfer must see the
+    // final flags, so it is prepared after that call.
     GridRefinement::refine_and_coarsen_fixed_number(triangulation,
                                                     indicators,
                                                     fraction,
@@ -1240,6 +1291,8 @@ namespace Step4
     transfer.prepare_for_coarsening_and_refinement(solution);
     triangulation.execute_coarsening_and_refinement();
     dof_handler.distribute_dofs(fe);
+    // The old vector is read by the transfer while the new one is written:
+    // two vectors, the old one replaced afterwards.
     Vector<double> interpolated(dof_handler.n_dofs());
     transfer.interpolate(solution, interpolated);
     solution = interpolated;
@@ -1274,6 +1327,9 @@ namespace Step4
         }
     };
 
+    // One factorisation of $K$, used in every step of the iteration; the
+    // start is the normal field on $\Gamma_3$, which the lowest mode
+    // resembles.
     SparseDirectUMFPACK K_inverse;
     K_inverse.initialize(stiffness_matrix);
     Vector<double> x(dof_handler.n_dofs()), Nx(x), Kx(x);
@@ -1334,6 +1390,10 @@ namespace Step4
     std::ofstream vtu(std::string("solution-") + suffix + ".vtu");
     data_out.write_vtu(vtu);
 
+    // Each vertex once, with printf's %.17g, which prints a double so that
+    // it reads back bit for bit: the comparison at $10^{-10}$ must not be
+    // limited by the output. A hanging vertex has its own degrees of
+    // freedom in the DoFHandler, and its value is the constrained one.
     std::FILE *nodal =
       std::fopen((std::string("displacement-") + suffix + ".txt").c_str(), "w");
     AssertThrow(nodal != nullptr, ExcIO());
@@ -1365,6 +1425,8 @@ namespace Step4
   };
 
   // Solve, estimate, write: what each cycle and each uniform level does.
+  // The two studies share it, so that a uniform level and an adaptive
+  // cycle are measured alike.
   template <int dim>
   CycleResult
   solve_and_estimate(AdaptiveContactProblem<dim> &problem, ErrorEstimate &e)
@@ -1397,6 +1459,8 @@ namespace Step4
                     " (alpha_nu < lambda_1: one solution)" :
                     " (alpha_nu >= lambda_1: maybe several solutions)")
               << std::endl;
+    // The last cycle is not refined: its estimate is reported, but no
+    // further mesh would be solved on.
     std::vector<CycleResult> results;
     for (unsigned int cycle = 0; cycle < n_cycles; ++cycle)
       {
@@ -1498,7 +1562,8 @@ namespace Step4
       {
         const CycleResult &r = rows[k];
         const double       E = energy_error(r.energy, J_reference);
-        // the rates, "-" in the first row
+        // The rates against the row before; the first row has none, and
+        // shows "-" in their place, as deal.II's ConvergenceTable does.
         char rate_E[8] = "  - ", rate_eta[8] = "  - ";
         if (k > 0)
           {
@@ -1628,6 +1693,8 @@ main(int argc, char **argv)
                   arguments[1] + "'");
           n_cycles = CommandLine::parse_cycles(arguments[1]);
         }
+      // No mode at all is the default run; anything else is a typo that
+      // should not start a computation of some seconds.
       else if (!arguments.empty())
         throw CommandLine::BadArguments("unknown mode '" + mode +
                                         "' (the mode is adaptive)");
@@ -1667,6 +1734,9 @@ main(int argc, char **argv)
       // the introduction ("Measuring the error") says what this costs the
       // error of the table. The table's cycles are the first cycles of the
       // same loop, so the adaptive loop runs once.
+      // The CPU time of the whole run goes to standard error, so that
+      // standard output, which the results page shows, is the same on
+      // every machine.
       Timer                          timer;
       const unsigned int             n_table_cycles = 9, n_reference = 15;
       const std::vector<CycleResult> all = adaptive_study(data, n_reference);
