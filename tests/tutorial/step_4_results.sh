@@ -43,6 +43,19 @@ import csv
 rows = list(csv.DictReader(open('adaptive.csv')))
 print(f\"{float(rows[0]['estimate_contact']):.3f} of η = {float(rows[0]['estimate']):.3f} at cycle 0|\"
       f\"{float(rows[8]['estimate_contact']):.4f} of {float(rows[8]['estimate']):.3f} at cycle 8\")")
+# the reference's error against the last cycle's, from the two estimates
+bias=$(/usr/bin/python3 -c "
+import sys
+ref = float(sys.argv[1]); last = float(sys.argv[2])
+r = ref / last
+print(f'about a quarter ({r:.2f})|about {round(100 * r * r)} % of|low by at most about {round(100 * (1 - (1 - r * r) ** 0.5))} %')
+" "$(sed -n 's/^reference: .*, eta = \([0-9.e+-]*\)$/\1/p' printed.txt)" \
+  "$(awk '$1 == "a" {e = $8} END {print e}' rows.txt)")
+# the Newton iterations: the first cycle, the later ones, the uniform levels
+newton=$(awk '$1 == "a" && $2 == 0 {first = $5}
+              $1 == "a" && $2 > 0 {v = $5; if (min == "" || v < min) min = v; if (v > max) max = v}
+              $1 == "u" {w = $5; if (umin == "" || w < umin) umin = w; if (w > umax) umax = w}
+              END {printf "takes %s iterations from zero; each later|takes %s to %s. The uniform levels, each started from zero, take %s to %s", first, min, max, umin, umax}' rows.txt)
 failures=0
 [ "$sep" = 0 ] || { echo "FAIL: $sep separating nodes, the pages say none"; failures=1; }
 for quote in "λ₁ = $lambda > α_ν|$intro" "λ₁ = $lambda > α_ν = 0.769|$results" \
@@ -56,12 +69,47 @@ for quote in "λ₁ = $lambda > α_ν|$intro" "λ₁ = $lambda > α_ν = 0.769|$
              "estimate falls at N^(−$aeta)|$results" \
              "$(range a) on the adaptive meshes|$results" "$(range u) on the uniform ones|$results" \
              "At $(comma "$a_dofs") unknowns the adaptive error is $a_E, below the $u_E of the uniform mesh with $(comma "$u_dofs")|$results" \
-             "${contact%%|*}|$results" "${contact##*|}|$results"; do
+             "${contact%%|*}|$results" "${contact##*|}|$results" \
+             "$(echo "$bias" | cut -d'|' -f1)|$intro" "$(echo "$bias" | cut -d'|' -f2)|$intro" \
+             "$(echo "$bias" | cut -d'|' -f3)|$intro" \
+             "${newton%%|*}|$results" "${newton##*|}|$results"; do
   page=${quote##*|}; text=${quote%|*}
   tr '\n' ' ' < "$page" | sed 's/  */ /g' | grep -qF -- "$text" ||
     { echo "FAIL: '$text' is not in $page"; failures=$((failures + 1)); }
 done
 [ $failures -eq 0 ] || exit 1
+
+# where the finest cells of cycle 8 are (its solution-08.vtu, the cell
+# values written per patch vertex): the results page says levels 8 to 10
+# at the corner (1, 1) and at (0, 2) and (1, 2), and level 5 along y = 0
+/usr/bin/python3 - "$results" <<'PYTHON' || exit 1
+import sys
+import meshio
+import numpy as np
+mesh = meshio.read("solution-08.vtu")
+cells = mesh.cells[0].data
+level = mesh.point_data["level"][cells[:, 0]].astype(int)
+centre = mesh.points[cells].mean(axis=1)[:, :2]
+points = np.array([[1, 1], [0, 2], [1, 2]])
+distance = np.min(np.linalg.norm(centre[:, None, :] - points[None], axis=2), axis=1)
+finest = level >= 8
+on_gamma_3 = centre[:, 1] < 0.1
+checks = {"the finest level is 10": level.max() == 10,
+          "levels 8 to 10 lie within 0.1 of the three points":
+              distance[finest].max() < 0.1,
+          "each of the three points has a cell of level >= 8 within 0.1":
+              all((np.linalg.norm(centre[finest] - p, axis=1) < 0.1).any()
+                  for p in points),
+          "the cells along y = 0 reach level 5": level[on_gamma_3].max() == 5}
+page = " ".join(open(sys.argv[1]).read().split())
+quote = "(levels 8 to 10; the starting mesh has level 2)"
+checks[f"the page says '{quote}'"] = quote in page
+checks["the page says 'the cells reach level 5'"] = "the cells reach level 5" in page
+failed = [name for name, ok in checks.items() if not ok]
+for name in failed:
+    print("FAIL:", name)
+sys.exit(1 if failed else 0)
+PYTHON
 
 # the figure, drawn as the page says from the files of this run
 [ -x "$src/tutorial/step-4/doc/plot_convergence.py" ] ||
