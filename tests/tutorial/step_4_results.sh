@@ -58,7 +58,9 @@ newton=$(awk '$1 == "a" && $2 == 0 {first = $5}
               END {printf "takes %s iterations from zero; each later|takes %s to %s. The uniform levels, each started from zero, take %s to %s", first, min, max, umin, umax}' rows.txt)
 failures=0
 [ "$sep" = 0 ] || { echo "FAIL: $sep separating nodes, the pages say none"; failures=1; }
-for quote in "λ₁ = $lambda > α_ν|$intro" "λ₁ = $lambda > α_ν = 0.769|$results" \
+alpha=$(sed -n 's/^alpha_nu = \([0-9.]*\),.*/\1/p' printed.txt)
+times=$(awk -v l="$lambda" -v a="$alpha" 'BEGIN {printf "%d", l / a}')
+for quote in "λ₁ = $lambda, $times times α_ν|$intro" "λ₁ = $lambda > α_ν = 0.769|$results" \
              "$pen contact nodes penetrate, $stick are held|$intro" \
              "78 stick tangentially and $slip slip|$intro" \
              "$pen of the $((sep + stick + pen)) contact nodes penetrate|$results" \
