@@ -44,7 +44,7 @@ subsection time
   set time step = 0.1
 end
 subsection data
-  set traction on boundary 3 = 0; -1
+  set surface traction = 0; -1
 end
 subsection adaptivity
   set interval         = 1
