@@ -3,9 +3,9 @@
 // the version this program reads, before any of its content is used; one
 // of the current format reads back with its fields by space and its energy
 // terms by name.
-#include <hemicontact/output/checkpoint_directory.h>
-
 #include <boost/crc.hpp>
+
+#include <hemicontact/output/checkpoint_directory.h>
 
 #include <fstream>
 #include <sstream>
@@ -49,21 +49,21 @@ main(int argc, char **argv)
     const std::string why = read_state("current.state", read);
     out() << "current format: " << (why.empty() ? "read" : why) << ", version "
           << read.format_version << ", step " << read.step_number << ", "
-          << read.fields.size() << " spaces, fields of the second: "
-          << read.fields[1].second[0] << ", energy term 0: "
-          << read.energy[0].first << "\n";
+          << read.fields.size()
+          << " spaces, fields of the second: " << read.fields[1].second[0]
+          << ", energy term 0: " << read.energy[0].first << "\n";
   }
 
   // the class version is the second number after the archive's header
   // ("22 serialization::archive L T V ...": T its tracking, V its version)
-  const std::string body = text.substr(0, text.rfind("crc32 "));
+  const std::string  body = text.substr(0, text.rfind("crc32 "));
   std::istringstream words(body);
   std::string        size, signature, library, tracking, version;
   words >> size >> signature >> library >> tracking >> version;
   const std::size_t at =
     body.find(" " + tracking + " " + version + " ") + tracking.size() + 2;
-  const std::string old_body = body.substr(0, at) + "0" +
-                               body.substr(at + version.size());
+  const std::string old_body =
+    body.substr(0, at) + "0" + body.substr(at + version.size());
   std::ofstream("old.state") << with_checksum(old_body);
   CheckpointState   read;
   const std::string why = read_state("old.state", read);

@@ -26,7 +26,7 @@ status=0; "$exe" stop.prm 2> stop.err || status=$?
 [ "$status" -eq 5 ] || { echo "FAIL: the stopped run exited with $status, not 5"; cat stop.err; exit 1; }
 cp -r parts parts-saved
 
-# take the first energy value out of a .state (its count lowered to match);
+# take the first energy term out of a .state (its count lowered to match);
 # with 'fixed' the state's checksum line is recomputed for the new content
 take_out_energy() { # FILE [fixed]
   python3 - "$@" << 'PY'
@@ -36,10 +36,11 @@ text = open(path).read()
 cut = text.rstrip('\n').rfind('\n') + 1
 body, checksum = text[:cut], text[cut:]
 tokens = body.split(' ')
-# 22 serialization::archive V 0 0 step k n_steps count item_version values...
-assert tokens[8] == '10', tokens[:10]
-tokens[8] = '9'
-del tokens[10]
+# 22 serialization::archive V 0 1 step k n_steps 0 0 count item_version
+# 0 0 (length name value) per energy term ...
+assert tokens[10] == '10' and tokens[15] == 'kinetic', tokens[:16]
+tokens[10] = '9'
+del tokens[14:17]
 body = ' '.join(tokens)
 if len(sys.argv) > 2:
     checksum = 'crc32 %d\n' % zlib.crc32(body.encode())
