@@ -8,7 +8,7 @@
  * The program is run_command_line() of the library, so that a program of
  * one's own that registers further laws behaves the same way.
  */
-#include <hemicontact/input/command_line.h>
+#include <hemicontact/simulation/command_line.h>
 
 int
 main(int argc, char **argv)

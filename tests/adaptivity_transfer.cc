@@ -24,8 +24,8 @@ namespace
     FunctionParser<2> exact(2);
     exact.initialize("x,y", expression, {});
     TrilinosWrappers::MPI::Vector interpolant(field);
-    VectorTools::interpolate(problem.get_mapping(),
-                             problem.get_dof_handler(),
+    VectorTools::interpolate(*problem.state().discretization.mapping,
+                             problem.state().dof_handler,
                              exact,
                              interpolant);
     interpolant -= field;
@@ -71,7 +71,7 @@ end
                             MPI_COMM_WORLD);
   problem.setup();
 
-  const auto &tria = problem.get_dof_handler().get_triangulation();
+  const auto &tria = problem.state().dof_handler.get_triangulation();
   for (unsigned int cycle = 0; cycle < 3; ++cycle)
     {
       StepStatistics stats;
@@ -86,9 +86,9 @@ end
       coarser = Utilities::MPI::sum(coarser, MPI_COMM_WORLD);
       finer   = Utilities::MPI::sum(finer, MPI_COMM_WORLD);
       const double dw =
-        max_difference(problem, problem.get_velocity(), "x; 2*x + x*y");
+        max_difference(problem, problem.state().velocity, "x; 2*x + x*y");
       const double du =
-        max_difference(problem, problem.get_displacement(), "x/2; -x");
+        max_difference(problem, problem.state().displacement, "x/2; -x");
       out() << "adaptation " << cycle + 1 << ": cells coarser than "
             << "the start: " << (coarser > 0 ? "yes" : "no")
             << ", finer: " << (finer > 0 ? "yes" : "no")

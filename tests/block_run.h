@@ -53,7 +53,7 @@ run_block(const std::string                                      &file,
       result.newton_iterations += step.newton_iterations;
       result.linear_iterations += step.linear_iterations;
     }
-  result.velocity = problem.get_velocity();
+  result.velocity = problem.state().velocity;
   return result;
 }
 

@@ -98,12 +98,12 @@ one_step(const std::string &parameter_text,
                                    dim,
                                    "V=" + num(V) + ", H=1",
                                    "exact velocity");
-  dealii::TrilinosWrappers::MPI::Vector w(problem.get_velocity());
-  dealii::VectorTools::interpolate(problem.get_mapping(),
-                                   problem.get_dof_handler(),
+  dealii::TrilinosWrappers::MPI::Vector w(problem.state().velocity);
+  dealii::VectorTools::interpolate(*problem.state().discretization.mapping,
+                                   problem.state().dof_handler,
                                    *exact,
                                    w);
-  w -= problem.get_velocity();
+  w -= problem.state().velocity;
   result.error           = w.linfty_norm() / V;
   result.convexity_bound = problem.state().convexity.bound;
   return result;

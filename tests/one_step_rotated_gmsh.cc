@@ -122,12 +122,12 @@ namespace
     constants.precision(17);
     constants << "V=" << V << ", H=" << H << ", c=" << c << ", s=" << s;
     auto exact = parse_function<2>(exact_w, 2, constants.str(), "exact");
-    TrilinosWrappers::MPI::Vector w(problem.get_velocity());
-    VectorTools::interpolate(problem.get_mapping(),
-                             problem.get_dof_handler(),
+    TrilinosWrappers::MPI::Vector w(problem.state().velocity);
+    VectorTools::interpolate(*problem.state().discretization.mapping,
+                             problem.state().dof_handler,
                              *exact,
                              w);
-    w -= problem.get_velocity();
+    w -= problem.state().velocity;
     const double error = w.linfty_norm() / V;
 
     double normal_error = 0;

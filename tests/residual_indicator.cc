@@ -50,7 +50,7 @@ end
     const Vector<float> eta   = problem.residual_indicators();
     double              error = 0, largest = 0;
     unsigned int        nonzero = 0, hanging = 0;
-    for (const auto &cell : problem.get_dof_handler().active_cell_iterators())
+    for (const auto &cell : problem.state().dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           const double e = expected(cell);
@@ -69,7 +69,7 @@ end
     largest = Utilities::MPI::max(largest, MPI_COMM_WORLD);
     nonzero = Utilities::MPI::sum(nonzero, MPI_COMM_WORLD);
     hanging = Utilities::MPI::sum(hanging, MPI_COMM_WORLD);
-    out() << label << ": " << problem.get_dof_handler().n_dofs() << " dofs, "
+    out() << label << ": " << problem.state().dof_handler.n_dofs() << " dofs, "
           << hanging << " cells with a hanging face, " << nonzero
           << " cells expected nonzero (largest " << largest
           << "); indicators as expected (within 1e-6): "
@@ -175,7 +175,7 @@ end
     const Vector<float> eta    = problem.residual_indicators();
     double              error  = 0;
     unsigned int        n_kink = 0;
-    for (const auto &cell : problem.get_dof_handler().active_cell_iterators())
+    for (const auto &cell : problem.state().dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && !cell->at_boundary())
         {
           const double e = expected(cell);

@@ -133,13 +133,13 @@ main(int argc, char **argv)
     adapted->get_added_fields().vector("theta");
   TrilinosWrappers::MPI::Vector interpolant(theta);
   VectorTools::interpolate(
-    adapted->get_mapping(),
+    *adapted->state().discretization.mapping,
     *adapted->get_added_fields().space("theta").dof_handler,
     exact,
     interpolant);
   out() << "mesh adapted: "
-        << (adapted->get_dof_handler()
-                  .get_triangulation()
+        << (adapted->state()
+                  .dof_handler.get_triangulation()
                   .n_global_active_cells() != 4 * 16 ?
               "yes" :
               "no")
@@ -184,8 +184,8 @@ main(int argc, char **argv)
               "bitwise" :
               "differs")
         << ", u "
-        << (difference(second->get_displacement(), whole->get_displacement()) ==
-                0 ?
+        << (difference(second->state().displacement,
+                       whole->state().displacement) == 0 ?
               "bitwise" :
               "differs")
         << "\n";

@@ -38,15 +38,15 @@ namespace
   functionals(const ContactProblem<2> &problem, const Parameters &parameters)
   {
     const KelvinVoigtMaterial<2>  material(parameters.material);
-    const DoFHandler<2>          &dofs = problem.get_dof_handler();
+    const DoFHandler<2>          &dofs = problem.state().dof_handler;
     TrilinosWrappers::MPI::Vector w, u_next;
     IndexSet                      relevant;
     DoFTools::extract_locally_relevant_dofs(dofs, relevant);
     w.reinit(dofs.locally_owned_dofs(), relevant, MPI_COMM_WORLD);
     u_next.reinit(w);
-    TrilinosWrappers::MPI::Vector sum(problem.get_displacement());
-    sum.add(problem.get_time_step(), problem.get_velocity());
-    w      = problem.get_velocity();
+    TrilinosWrappers::MPI::Vector sum(problem.state().displacement);
+    sum.add(problem.state().time_step, problem.state().velocity);
+    w      = problem.state().velocity;
     u_next = sum;
 
     std::vector<double> result;
@@ -54,7 +54,7 @@ namespace
       {
         FunctionParser<2> v(2);
         v.initialize("x,y", expression, {});
-        FEValues<2>                        fe_values(problem.get_mapping(),
+        FEValues<2> fe_values(*problem.state().discretization.mapping,
                               dofs.get_fe(),
                               QGauss<2>(3),
                               update_values | update_gradients |
@@ -148,7 +148,7 @@ end
     const std::vector<double> before     = functionals(problem, parameters);
     double                    max_change = 0, scale = 0;
     bool                      energy_grew = false;
-    const auto &tria         = problem.get_dof_handler().get_triangulation();
+    const auto &tria         = problem.state().dof_handler.get_triangulation();
     const auto  cells_before = tria.n_global_active_cells();
     for (unsigned int cycle = 0; cycle < 3; ++cycle)
       {
@@ -181,8 +181,8 @@ end
     FunctionParser<2> exact(2);
     exact.initialize("x,y", expression, {});
     TrilinosWrappers::MPI::Vector interpolant(field);
-    VectorTools::interpolate(problem.get_mapping(),
-                             problem.get_dof_handler(),
+    VectorTools::interpolate(*problem.state().discretization.mapping,
+                             problem.state().dof_handler,
                              exact,
                              interpolant);
     interpolant -= field;
@@ -206,11 +206,11 @@ end
         problem.adapt_mesh(stats);
         max_dw = std::max(max_dw,
                           max_difference(problem,
-                                         problem.get_velocity(),
+                                         problem.state().velocity,
                                          "x; 2*x + x*y"));
         max_du = std::max(max_du,
                           max_difference(problem,
-                                         problem.get_displacement(),
+                                         problem.state().displacement,
                                          "x/2; -x"));
       }
     out() << "projection, refining and coarsening: fields in the space "

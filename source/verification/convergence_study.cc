@@ -59,7 +59,7 @@ namespace hemicontact
     public:
       explicit ErrorEnergy(const ContactProblem<dim> &problem)
         : material(problem.state().material)
-        , c(problem.state().scheme.step_matrix(problem.get_time_step()))
+        , c(problem.state().scheme.step_matrix(problem.state().time_step))
         , on_u(problem.state().scheme.is_static())
       {}
 
@@ -91,20 +91,20 @@ namespace hemicontact
                 SpatialCache                    &cache,
                 MPI_Comm                         comm)
     {
-      const DoFHandler<dim>        &dof_handler = problem.get_dof_handler();
+      const DoFHandler<dim>        &dof_handler = problem.state().dof_handler;
       TrilinosWrappers::MPI::Vector w(dof_handler.locally_owned_dofs(),
                                       relevant,
                                       comm);
       TrilinosWrappers::MPI::Vector u(w);
-      w = problem.get_velocity();
-      u = problem.get_displacement();
+      w = problem.state().velocity;
+      u = problem.state().displacement;
 
       // of higher order than the elements (exact for degree 5)
       const Quadrature<dim> quadrature =
         dof_handler.get_fe()
           .reference_cell()
           .template get_gauss_type_quadrature<dim>(3);
-      FEValues<dim>                    fe_values(problem.get_mapping(),
+      FEValues<dim> fe_values(*problem.state().discretization.mapping,
                               dof_handler.get_fe(),
                               quadrature,
                               update_values | update_gradients |
@@ -175,19 +175,19 @@ namespace hemicontact
                           const IndexSet            &relevant,
                           MPI_Comm                   comm)
     {
-      const DoFHandler<dim> &dof_handler = problem.get_dof_handler();
+      const DoFHandler<dim> &dof_handler = problem.state().dof_handler;
       const unsigned int     j           = reference.index(t);
-      AssertThrow(reference.w[j].size() == problem.get_velocity().size(),
+      AssertThrow(reference.w[j].size() == problem.state().velocity.size(),
                   ExcMessage("the reference ran on another mesh"));
       TrilinosWrappers::MPI::Vector difference(reference.w[j]);
-      difference -= problem.get_velocity();
+      difference -= problem.state().velocity;
       TrilinosWrappers::MPI::Vector d_w(dof_handler.locally_owned_dofs(),
                                         relevant,
                                         comm);
       TrilinosWrappers::MPI::Vector d_u(d_w);
       d_w        = difference;
       difference = reference.u[j];
-      difference -= problem.get_displacement();
+      difference -= problem.state().displacement;
       d_u = difference;
 
       // both fields are finite element functions: Gauss of order 2 is exact
@@ -195,7 +195,7 @@ namespace hemicontact
         dof_handler.get_fe()
           .reference_cell()
           .template get_gauss_type_quadrature<dim>(2);
-      FEValues<dim>                    fe_values(problem.get_mapping(),
+      FEValues<dim> fe_values(*problem.state().discretization.mapping,
                               dof_handler.get_fe(),
                               quadrature,
                               update_values | update_gradients |
@@ -353,8 +353,8 @@ namespace hemicontact
           const double j = problem.advance().time / finest_step;
           if (std::abs(j - std::round(j)) < 1e-6)
             {
-              reference.u.push_back(problem.get_displacement());
-              reference.w.push_back(problem.get_velocity());
+              reference.u.push_back(problem.state().displacement);
+              reference.w.push_back(problem.state().velocity);
             }
         }
       return reference;
@@ -386,7 +386,7 @@ namespace hemicontact
         {
           const std::string jump = find_manufactured_jump(
             exact,
-            problem.get_dof_handler().get_triangulation(),
+            problem.state().dof_handler.get_triangulation(),
             p.time.end_time,
             comm);
           if (!jump.empty() && Utilities::MPI::this_mpi_process(comm) == 0)
@@ -402,7 +402,7 @@ namespace hemicontact
               << std::endl;
         }
       IndexSet relevant;
-      DoFTools::extract_locally_relevant_dofs(problem.get_dof_handler(),
+      DoFTools::extract_locally_relevant_dofs(problem.state().dof_handler,
                                               relevant);
       const std::unique_ptr<SpatialCache> cache = exact.make_fields_cache();
       LevelSums                           sums;
@@ -416,20 +416,20 @@ namespace hemicontact
               reference_step_errors(
                 problem, *reference, s.time, relevant, comm) :
               step_errors(problem, exact, s.time, relevant, *cache, comm),
-            problem.get_time_step());
+            problem.state().time_step);
           if (problem.adaptation_due())
             {
               problem.adapt_mesh(s);
-              DoFTools::extract_locally_relevant_dofs(problem.get_dof_handler(),
-                                                      relevant);
+              DoFTools::extract_locally_relevant_dofs(
+                problem.state().dof_handler, relevant);
             }
         }
       const double step_wall_seconds = steps_wall.wall_time();
       LevelResult  result            = sums.result();
       result.step_wall_seconds       = step_wall_seconds;
-      result.h            = mesh_size(problem.get_dof_handler(), comm);
-      result.k            = problem.get_time_step();
-      result.n_dofs       = problem.get_dof_handler().n_dofs();
+      result.h            = mesh_size(problem.state().dof_handler, comm);
+      result.k            = problem.state().time_step;
+      result.n_dofs       = problem.state().dof_handler.n_dofs();
       result.wall_seconds = wall.wall_time();
       return result;
     }

@@ -251,36 +251,8 @@ namespace hemicontact
     }
     /** @} */
 
-    /** @name Read access to the state (after setup()). */
+    /** @name Read access to the state (after setup()): state(). */
     /** @{ */
-    const DoFHandler<dim> &
-    get_dof_handler() const
-    {
-      return dof_handler;
-    }
-    const Mapping<dim> &
-    get_mapping() const
-    {
-      return *discretization.mapping;
-    }
-    /** w_n (owned entries). */
-    const TrilinosWrappers::MPI::Vector &
-    get_velocity() const
-    {
-      return velocity;
-    }
-    /** u_n, the displacement that entered step n (approximates u(t_n)). */
-    const TrilinosWrappers::MPI::Vector &
-    get_displacement() const
-    {
-      return displacement;
-    }
-    double
-    get_time_step() const
-    {
-      return time_step;
-    }
-
     /** The last check of the convexity of the step energy (diagnostics.cc). */
     struct ConvexityCheck
     {
