@@ -1,25 +1,35 @@
 #include <hemicontact/memory/contact_memory.h>
 
 #include <algorithm>
-#include <cmath>
-#include <utility>
 
 namespace hemicontact
 {
+  namespace
+  {
+    /** v* of @p wear, its components beyond dim dropped. */
+    template <int dim>
+    Tensor<1, dim>
+    foundation_velocity(const WearParameters &wear)
+    {
+      Tensor<1, dim> v;
+      for (unsigned int c = 0;
+           c < std::min<std::size_t>(dim, wear.foundation_velocity.size());
+           ++c)
+        v[c] = wear.foundation_velocity[c];
+      return v;
+    }
+  } // namespace
+
   template <int dim>
   ContactMemory<dim>::ContactMemory(const NormalMemoryParameters &parameters,
                                     const WearParameters         &wear,
                                     const std::string            &constants,
                                     MPI_Comm                      comm)
-    : kernel(parameters, constants)
-    , comm(comm)
-    , wear_coefficient(wear.coefficient)
-  {
-    for (unsigned int c = 0;
-         c < std::min<std::size_t>(dim, wear.foundation_velocity.size());
-         ++c)
-      foundation_velocity[c] = wear.foundation_velocity[c];
-  }
+    : comm(comm)
+    , history(NormalMemoryKernel(parameters, constants), comm)
+    , slip_sum(0., Tensor<1, dim>(), false, comm)
+    , wear_sum(wear.coefficient, foundation_velocity<dim>(wear), true, comm)
+  {}
 
   template <int dim>
   void
@@ -34,9 +44,10 @@ namespace hemicontact
       if (node.locally_owned)
         nodes.push_back({node.dofs, node.normal, node.mass});
     memory_pressure.reinit(owned, comm);
-    accumulated_slip.reinit(owned, comm);
+    slip_sum.reinit(owned);
+    wear_sum.reinit(owned);
     slip_start.reinit(owned, comm);
-    wear_depth.reinit(owned, comm);
+    history.reinit(owned);
     clear();
   }
 
@@ -46,16 +57,11 @@ namespace hemicontact
   {
     if (!active())
       return;
-    terms.assign(kernel.n_terms(), VectorType(owned_dofs, comm));
-    trial_terms = terms;
-    past_times.clear();
-    past_steps.clear();
-    past_states.clear();
-    pending_state.reinit(owned_dofs, comm);
-    memory_pressure  = 0;
-    accumulated_slip = 0;
-    wear_depth       = 0;
-    prepared         = false;
+    history.clear();
+    memory_pressure = 0;
+    slip_sum.clear();
+    wear_sum.clear();
+    prepared = false;
   }
 
   template <int dim>
@@ -65,61 +71,30 @@ namespace hemicontact
                                    const VectorType &u_start)
   {
     prepared     = true;
-    pending_time = start;
     pending_step = k;
-    if ((slip_measured || wear_active()) && slip_from_displacement)
+    if ((slip_active() || wear_active()) && slip_from_displacement)
       slip_start = u_start;
     if (!normal_active())
       return;
     // (u_nu)_+ of the state at start, at each node's first dof
-    std::vector<double> penetration(nodes.size());
+    std::vector<types::global_dof_index> first_dofs(nodes.size());
+    VectorType                           penetration(owned_dofs, comm);
     for (std::size_t i = 0; i < nodes.size(); ++i)
       {
         double u_nu = 0;
         for (unsigned int c = 0; c < dim; ++c)
           u_nu += u_start[nodes[i].dofs[c]] * nodes[i].normal[c];
-        penetration[i] = std::max(u_nu, 0.);
+        first_dofs[i]              = nodes[i].dofs[0];
+        penetration[first_dofs[i]] = std::max(u_nu, 0.);
       }
+    penetration.compress(VectorOperation::insert);
 
-    std::vector<double> sum(nodes.size(), 0.);
-    if (kernel.type() == RelaxationKernelType::prony)
-      // h_n = e^{-k/tau} (h_{n-1} + k (u_nu,n-1)_+) per term
-      for (unsigned int m = 0; m < terms.size(); ++m)
-        {
-          VectorType  &h     = trial_terms[m];
-          const double decay = std::exp(-k / kernel.relaxation_time(m));
-          h                  = terms[m];
-          for (std::size_t i = 0; i < nodes.size(); ++i)
-            {
-              const auto d = nodes[i].dofs[0];
-              h[d]         = (h[d] + k * penetration[i]) * decay;
-              sum[i] += kernel.amplitude(m) * h[d];
-            }
-          h.compress(VectorOperation::insert);
-        }
-    else
-      {
-        // the sum over the past states, the one before the step last
-        const double t = start + k;
-        for (unsigned int j = 0; j < past_states.size(); ++j)
-          {
-            const double weight = past_steps[j] * kernel(t - past_times[j]);
-            for (std::size_t i = 0; i < nodes.size(); ++i)
-              sum[i] += weight * past_states[j][nodes[i].dofs[0]];
-          }
-        const double weight = k * kernel(t - start);
-        pending_state       = 0;
-        for (std::size_t i = 0; i < nodes.size(); ++i)
-          {
-            sum[i] += weight * penetration[i];
-            pending_state[nodes[i].dofs[0]] = penetration[i];
-          }
-        pending_state.compress(VectorOperation::insert);
-      }
+    VectorType sum(owned_dofs, comm);
+    history.prepare_step(start, k, penetration, {{&sum}}, &first_dofs);
     memory_pressure = 0;
-    for (std::size_t i = 0; i < nodes.size(); ++i)
+    for (const Node &node : nodes)
       for (unsigned int c = 0; c < dim; ++c)
-        memory_pressure[nodes[i].dofs[c]] = sum[i] * nodes[i].normal[c];
+        memory_pressure[node.dofs[c]] = sum[node.dofs[0]] * node.normal[c];
     memory_pressure.compress(VectorOperation::insert);
   }
 
@@ -129,72 +104,11 @@ namespace hemicontact
                                   const VectorType *traction)
   {
     Assert(prepared, ExcMessage("commit_step() without prepare_step()"));
-    if (wear_active())
-      {
-        Assert(unknown != nullptr && traction != nullptr,
-               ExcMessage("the wear needs the unknown and the traction"));
-        // k_w p_n |u_tau,n - u_tau,n-1 - k_n v*| (static) or
-        // k_w k_n p_n |w_tau,n - v*| per node, p_n = (-sigma_nu)_+
-        for (const Node &node : nodes)
-          {
-            Tensor<1, dim> v, t;
-            for (unsigned int c = 0; c < dim; ++c)
-              {
-                v[c] = (*unknown)[node.dofs[c]];
-                t[c] = (*traction)[node.dofs[c]];
-              }
-            const double pressure = std::max(t * node.normal, 0.);
-            if (slip_from_displacement)
-              {
-                for (unsigned int c = 0; c < dim; ++c)
-                  v[c] -= slip_start[node.dofs[c]] +
-                          pending_step * foundation_velocity[c];
-                const Tensor<1, dim> v_tau =
-                  v - (v * node.normal) * node.normal;
-                // read, then set (not +=): the vector's last operation
-                // must be the 'insert' its compress() names, which deal.II's
-                // debug library checks
-                wear_depth[node.dofs[0]] =
-                  wear_depth[node.dofs[0]] +
-                  wear_coefficient * pressure * v_tau.norm();
-              }
-            else
-              {
-                v -= foundation_velocity;
-                const Tensor<1, dim> v_tau =
-                  v - (v * node.normal) * node.normal;
-                wear_depth[node.dofs[0]] =
-                  wear_depth[node.dofs[0]] +
-                  wear_coefficient * pending_step * pressure * v_tau.norm();
-              }
-          }
-        wear_depth.compress(VectorOperation::insert);
-      }
-    if (slip_measured)
-      {
-        Assert(unknown != nullptr, ExcMessage("the slip needs the unknown"));
-        // |u_tau,n - u_tau,n-1| (static) or k_n |w_tau,n| per node
-        const double k = slip_from_displacement ? 1. : pending_step;
-        for (const Node &node : nodes)
-          {
-            Tensor<1, dim> v;
-            for (unsigned int c = 0; c < dim; ++c)
-              v[c] = (*unknown)[node.dofs[c]] -
-                     (slip_from_displacement ? slip_start[node.dofs[c]] : 0.);
-            const Tensor<1, dim> v_tau = v - (v * node.normal) * node.normal;
-            accumulated_slip[node.dofs[0]] =
-              accumulated_slip[node.dofs[0]] + k * v_tau.norm();
-          }
-        accumulated_slip.compress(VectorOperation::insert);
-      }
-    if (kernel.type() == RelaxationKernelType::prony)
-      std::swap(terms, trial_terms);
-    else if (kernel.type() == RelaxationKernelType::expression)
-      {
-        past_times.push_back(pending_time);
-        past_steps.push_back(pending_step);
-        past_states.push_back(pending_state);
-      }
+    const VectorType *start = slip_from_displacement ? &slip_start : nullptr;
+    for (SlipAccumulator<dim> *sum : {&wear_sum, &slip_sum})
+      if (sum->active())
+        sum->add(nodes, unknown, start, traction, pending_step);
+    history.commit_step();
   }
 
   template <int dim>
@@ -212,11 +126,8 @@ namespace hemicontact
   std::vector<double>
   ContactMemory<dim>::saved_values() const
   {
-    if (kernel.type() != RelaxationKernelType::expression)
-      return {static_cast<double>(terms.size())};
-    std::vector<double> values{static_cast<double>(past_states.size())};
-    values.insert(values.end(), past_times.begin(), past_times.end());
-    values.insert(values.end(), past_steps.begin(), past_steps.end());
+    std::vector<double> values;
+    history.save_values(values);
     return values;
   }
 
@@ -225,13 +136,10 @@ namespace hemicontact
   ContactMemory<dim>::saved_fields() const
   {
     std::vector<const VectorType *> fields;
-    for (const VectorType &x :
-         kernel.type() == RelaxationKernelType::prony ? terms : past_states)
-      fields.push_back(&x);
-    if (slip_measured)
-      fields.push_back(&accumulated_slip);
-    if (wear_active())
-      fields.push_back(&wear_depth);
+    history.save_fields(fields);
+    for (const SlipAccumulator<dim> *sum : {&slip_sum, &wear_sum})
+      if (sum->active())
+        fields.push_back(&sum->value());
     return fields;
   }
 
@@ -243,21 +151,14 @@ namespace hemicontact
     std::vector<VectorType *> fields;
     if (!active())
       return fields;
-    const std::size_t n = values.empty() ? 0 : std::lround(values[0]);
-    if (kernel.type() == RelaxationKernelType::expression)
-      {
-        AssertDimension(values.size(), 1 + 2 * n);
-        past_times.assign(values.begin() + 1, values.begin() + 1 + n);
-        past_steps.assign(values.begin() + 1 + n, values.end());
-        past_states.assign(n, VectorType(owned_dofs, comm));
-      }
-    for (VectorType &x :
-         kernel.type() == RelaxationKernelType::prony ? terms : past_states)
-      fields.push_back(&x);
-    if (slip_measured)
-      fields.push_back(&accumulated_slip);
-    if (wear_active())
-      fields.push_back(&wear_depth);
+    const std::size_t used = history.restore(values, 0, fields);
+    (void)used;
+    Assert(get_kernel().type() != MemoryKernelType::expression ||
+             used == values.size(),
+           ExcDimensionMismatch(values.size(), used));
+    for (SlipAccumulator<dim> *sum : {&slip_sum, &wear_sum})
+      if (sum->active())
+        fields.push_back(&sum->value());
     return fields;
   }
 
@@ -267,8 +168,7 @@ namespace hemicontact
   {
     if (!active())
       return 0;
-    return memory_pressure.memory_consumption() *
-             (2 * terms.size() + past_states.size() + 5) +
+    return memory_pressure.memory_consumption() * (history.n_vectors() + 4) +
            nodes.capacity() * sizeof(Node);
   }
 

@@ -7,8 +7,6 @@
 #include <hemicontact/memory/memory_history.h>
 
 #include <algorithm>
-#include <cmath>
-#include <utility>
 
 namespace hemicontact
 {
@@ -29,7 +27,7 @@ namespace hemicontact
                                     const WearParameters         &wear,
                                     const std::string            &constants,
                                     MPI_Comm                      comm)
-    : kernel(parameters, constants)
+    : history(RelaxationKernel(parameters, constants), comm)
     , contact(normal, wear, constants, comm)
     , comm(comm)
   {}
@@ -48,6 +46,7 @@ namespace hemicontact
       return;
     owned_dofs    = owned;
     relevant_dofs = relevant;
+    history.reinit(owned);
     for (VectorType *x : {&shear_sum, &volumetric_sum, &functional})
       x->reinit(owned, comm);
     contact.reinit(contact_nodes, owned);
@@ -118,12 +117,7 @@ namespace hemicontact
     if (!active())
       return;
     contact.clear();
-    terms.assign(kernel.n_terms(), VectorType(owned_dofs, comm));
-    trial_terms = terms;
-    past_times.clear();
-    past_steps.clear();
-    past_states.clear();
-    pending_state.reinit(owned_dofs, comm);
+    history.clear();
     shear_sum      = 0;
     volumetric_sum = 0;
     functional     = 0;
@@ -148,34 +142,7 @@ namespace hemicontact
           contact.add_functional(functional);
         return;
       }
-    if (kernel.type() == RelaxationKernelType::prony)
-      // h_n = e^{-k/tau} (h_{n-1} + k u_{n-1}) per term
-      for (unsigned int m = 0; m < terms.size(); ++m)
-        {
-          VectorType &h = trial_terms[m];
-          h             = terms[m];
-          h.add(k, u_start);
-          h *= std::exp(-k / kernel.relaxation_time(m));
-          shear_sum.add(kernel.mu_amplitude(m), h);
-          volumetric_sum.add(kernel.lambda_amplitude(m), h);
-        }
-    else
-      {
-        // the sum over the past states, the one before the step last
-        const double t = start + k;
-        for (unsigned int j = 0; j < past_states.size(); ++j)
-          {
-            const auto [mu, lambda] = kernel(t - past_times[j]);
-            shear_sum.add(past_steps[j] * mu, past_states[j]);
-            volumetric_sum.add(past_steps[j] * lambda, past_states[j]);
-          }
-        const auto [mu, lambda] = kernel(t - start);
-        shear_sum.add(k * mu, u_start);
-        volumetric_sum.add(k * lambda, u_start);
-        pending_time  = start;
-        pending_step  = k;
-        pending_state = u_start;
-      }
+    history.prepare_step(start, k, u_start, {{&shear_sum, &volumetric_sum}});
     VectorType tmp(owned_dofs, comm);
     shear_matrix.vmult(functional, shear_sum);
     volumetric_matrix.vmult(tmp, volumetric_sum);
@@ -192,14 +159,7 @@ namespace hemicontact
     Assert(prepared, ExcMessage("commit_step() without prepare_step()"));
     if (contact.active())
       contact.commit_step(unknown, traction);
-    if (kernel.type() == RelaxationKernelType::prony)
-      std::swap(terms, trial_terms);
-    else if (kernel.type() == RelaxationKernelType::expression)
-      {
-        past_times.push_back(pending_time);
-        past_steps.push_back(pending_step);
-        past_states.push_back(pending_state);
-      }
+    history.commit_step();
   }
 
   template <int dim>
@@ -250,13 +210,8 @@ namespace hemicontact
   MemoryHistory<dim>::saved_values() const
   {
     // the stress's numbers, then those of the contact memory
-    std::vector<double> values{static_cast<double>(terms.size())};
-    if (kernel.type() == RelaxationKernelType::expression)
-      {
-        values = {static_cast<double>(past_states.size())};
-        values.insert(values.end(), past_times.begin(), past_times.end());
-        values.insert(values.end(), past_steps.begin(), past_steps.end());
-      }
+    std::vector<double> values;
+    history.save_values(values);
     if (contact.active())
       for (const double x : contact.saved_values())
         values.push_back(x);
@@ -268,9 +223,7 @@ namespace hemicontact
   MemoryHistory<dim>::saved_fields() const
   {
     std::vector<const VectorType *> fields;
-    for (const VectorType &x :
-         kernel.type() == RelaxationKernelType::prony ? terms : past_states)
-      fields.push_back(&x);
+    history.save_fields(fields);
     if (contact.active())
       for (const VectorType *x : contact.saved_fields())
         fields.push_back(x);
@@ -285,20 +238,7 @@ namespace hemicontact
     std::vector<VectorType *> fields;
     if (!active())
       return fields;
-    const std::size_t n = values.empty() ? 0 : std::lround(values[0]);
-    // the stress's numbers: its size, and t_j, k_j of an expression
-    std::size_t stress_size = 1;
-    if (kernel.type() == RelaxationKernelType::expression)
-      {
-        stress_size = 1 + 2 * n;
-        AssertIndexRange(stress_size, values.size() + 1);
-        past_times.assign(values.begin() + 1, values.begin() + 1 + n);
-        past_steps.assign(values.begin() + 1 + n, values.begin() + stress_size);
-        past_states.assign(n, VectorType(owned_dofs, comm));
-      }
-    for (VectorType &x :
-         kernel.type() == RelaxationKernelType::prony ? terms : past_states)
-      fields.push_back(&x);
+    const std::size_t stress_size = history.restore(values, 0, fields);
     if (contact.active())
       for (VectorType *x : contact.restore(std::vector<double>(
              values.begin() + std::min(stress_size, values.size()),
@@ -317,7 +257,7 @@ namespace hemicontact
                         volumetric_matrix.memory_consumption() +
                         contact.memory_consumption();
     const std::size_t vector = functional.memory_consumption();
-    bytes += vector * (2 * terms.size() + past_states.size() + 4);
+    bytes += vector * (history.n_vectors() + 3);
     return bytes;
   }
 

@@ -167,13 +167,16 @@ namespace hemicontact
     parse(ParameterHandler &prm);
   };
 
-  /** The kernel of the relaxation tensor R(t) ('relaxation/kernel'). */
-  enum class RelaxationKernelType
+  /** The kind of a memory kernel (each kernel subsection's 'kernel'). */
+  enum class MemoryKernelType
   {
-    none,      ///< no memory: sigma as without relaxation
-    prony,     ///< R(t) = sum_m R_m exp(-t/tau_m), O(1) history per term
-    expression ///< mu_R(t), lambda_R(t) as expressions: every past state
+    none,      ///< no memory
+    prony,     ///< K(t) = sum_m K_m exp(-t/tau_m), O(1) history per term
+    expression ///< K(t) as expressions in t: every past state
   };
+
+  /** The kind of the relaxation tensor's kernel R(t). */
+  using RelaxationKernelType = MemoryKernelType;
 
   /**
    * Long memory in the stress (doc/theory.md, section 10): the isotropic
@@ -182,7 +185,7 @@ namespace hemicontact
    */
   struct RelaxationParameters
   {
-    RelaxationKernelType kernel;
+    MemoryKernelType kernel;
     /** The Prony series: mu_m, lambda_m and tau_m of each term. */
     std::vector<double> mu_amplitudes;
     std::vector<double> lambda_amplitudes;
@@ -195,7 +198,7 @@ namespace hemicontact
     bool
     active() const
     {
-      return kernel != RelaxationKernelType::none;
+      return kernel != MemoryKernelType::none;
     }
 
     static void
@@ -211,7 +214,7 @@ namespace hemicontact
    */
   struct NormalMemoryParameters
   {
-    RelaxationKernelType kernel;
+    MemoryKernelType kernel;
     /** The Prony series b(t) = sum_m b_m exp(-t/tau_m): b_m and tau_m. */
     std::vector<double> amplitudes;
     std::vector<double> relaxation_times;
@@ -222,7 +225,7 @@ namespace hemicontact
     bool
     active() const
     {
-      return kernel != RelaxationKernelType::none;
+      return kernel != MemoryKernelType::none;
     }
 
     static void

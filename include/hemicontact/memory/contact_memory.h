@@ -5,10 +5,11 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/memory/convolution_history.h>
 #include <hemicontact/memory/normal_memory_kernel.h>
+#include <hemicontact/memory/slip_accumulator.h>
 #include <hemicontact/model/contact_node.h>
 
-#include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -28,20 +29,13 @@ namespace hemicontact
    *
    * A node's history value is held at the degree of freedom of its first
    * component in vectors of the displacement's layout, so that checkpoints
-   * save it as they save the displacement. A Prony series keeps one such
-   * vector per term, h_n = e^{-k_n/tau} (h_{n-1} + k_n (u_nu,n-1)_+); an
-   * expression kernel keeps every past (u_nu,j)_+ with t_j and k_j.
+   * save it as they save the displacement: a ConvolutionHistory of the
+   * states (u_nu,j)_+, updated at those degrees of freedom only.
    *
    * With measure_slip(), also the slip s_tau accumulated up to the state
-   * before the step (section 11.10), a variable of the friction bound: in
-   * the static class S_n = sum_{j=1}^{n-1} |u_tau,j - u_tau,j-1|, in the
-   * velocity classes S_n = sum_{j=1}^{n-1} k_j |w_tau,j|.
-   *
-   * With a wear coefficient k_w > 0, also the wear depth (section 11.12)
-   * up to the state before the step: omega_n = k_w sum_{j=1}^{n-1} p_j
-   * |u_tau,j - u_tau,j-1 - k_j v*_tau| in the static class, k_w
-   * sum_{j=1}^{n-1} k_j p_j |w_tau,j - v*_tau| in the velocity classes,
-   * p_j = (-sigma_nu)_+ the contact pressure of state j.
+   * before the step (section 11.10), a variable of the friction bound; with
+   * a wear coefficient k_w > 0, also the wear depth (section 11.12) up to
+   * the state before the step: each a SlipAccumulator.
    */
   template <int dim>
   class ContactMemory
@@ -62,14 +56,14 @@ namespace hemicontact
     bool
     active() const
     {
-      return normal_active() || slip_measured || wear_active();
+      return normal_active() || slip_active() || wear_active();
     }
 
     /** Whether the foundation wears ('wear/wear coefficient' > 0). */
     bool
     wear_active() const
     {
-      return wear_coefficient > 0;
+      return wear_sum.active();
     }
 
     /**
@@ -86,7 +80,7 @@ namespace hemicontact
     bool
     normal_active() const
     {
-      return kernel.type() != RelaxationKernelType::none;
+      return history.active();
     }
 
     /**
@@ -96,7 +90,7 @@ namespace hemicontact
     void
     measure_slip(const bool of_displacement)
     {
-      slip_measured = true;
+      slip_sum = SlipAccumulator<dim>(1., Tensor<1, dim>(), false, comm);
       set_static_class(of_displacement);
     }
 
@@ -104,7 +98,7 @@ namespace hemicontact
     bool
     slip_active() const
     {
-      return slip_measured;
+      return slip_sum.active();
     }
 
     /**
@@ -114,7 +108,7 @@ namespace hemicontact
     const VectorType &
     slip() const
     {
-      return accumulated_slip;
+      return slip_sum.value();
     }
 
     /**
@@ -124,13 +118,13 @@ namespace hemicontact
     const VectorType &
     wear() const
     {
-      return wear_depth;
+      return wear_sum.value();
     }
 
     const NormalMemoryKernel &
     get_kernel() const
     {
-      return kernel;
+      return history.get_kernel();
     }
 
     /** The owned nodes of @p nodes and an empty history. */
@@ -187,45 +181,25 @@ namespace hemicontact
     memory_consumption() const;
 
   private:
-    /** What the memory needs of a contact node. */
-    struct Node
-    {
-      std::array<types::global_dof_index, dim> dofs;
-      Tensor<1, dim>                           normal;
-      double                                   mass;
-    };
+    using Node = MemoryNode<dim>;
 
-    NormalMemoryKernel kernel;
-    MPI_Comm           comm;
-    IndexSet           owned_dofs;
-    std::vector<Node>  nodes;
+    MPI_Comm          comm;
+    IndexSet          owned_dofs;
+    std::vector<Node> nodes;
 
-    /** Prony: h_{n-1} of each term, and h_n of the step prepared. */
-    std::vector<VectorType> terms;
-    std::vector<VectorType> trial_terms;
+    /** The history of the (u_nu,j)_+. */
+    ConvolutionHistory<NormalMemoryKernel> history;
 
-    /** Expression: t_j, k_j and (u_nu,j)_+ of every state j < n - 1 ... */
-    std::vector<double>     past_times;
-    std::vector<double>     past_steps;
-    std::vector<VectorType> past_states;
-    /** ... and the state the step prepared adds. */
-    double     pending_time = 0;
-    double     pending_step = 0;
-    VectorType pending_state;
-
-    /** N_i nu_i of the step prepared last. */
+    /** N_i nu_i of the step prepared last, and its length. */
     VectorType memory_pressure;
-    bool       prepared = false;
+    double     pending_step = 0;
+    bool       prepared     = false;
 
-    /** The accumulated slip, and u at the start of the static step. */
-    bool       slip_measured          = false;
+    /** The accumulated slip (none before measure_slip()) and the wear. */
+    SlipAccumulator<dim> slip_sum;
+    SlipAccumulator<dim> wear_sum;
+    /** Whether in the static class, and u at the start of its step. */
     bool       slip_from_displacement = false;
-    VectorType accumulated_slip;
     VectorType slip_start;
-
-    /** k_w, v*, and the wear depth omega. */
-    double         wear_coefficient = 0;
-    Tensor<1, dim> foundation_velocity;
-    VectorType     wear_depth;
   };
 } // namespace hemicontact

@@ -11,6 +11,7 @@
 
 #include <hemicontact/input/parameters.h>
 #include <hemicontact/memory/contact_memory.h>
+#include <hemicontact/memory/convolution_history.h>
 #include <hemicontact/memory/relaxation_kernel.h>
 #include <hemicontact/model/contact_node.h>
 
@@ -37,11 +38,10 @@ namespace hemicontact
    * the nodal vectors S_mu = sum_j k_j mu_R(t_n - t_j) u_j, S_lambda the
    * same with lambda_R.
    *
-   * A Prony series keeps one vector per term, h_n = e^{-k_n/tau}
-   * (h_{n-1} + k_n u_{n-1}), the same sum exactly; an expression kernel
-   * keeps every past state u_j with t_j and k_j. prepare_step() forms m_n
-   * without changing the history, commit_step() adds the step to it after
-   * the step converged: a failed step (and its halves) needs no undo.
+   * The sums are those of a ConvolutionHistory of the states u_j.
+   * prepare_step() forms m_n without changing the history, commit_step()
+   * adds the step to it after the step converged: a failed step (and its
+   * halves) needs no undo.
    *
    * It also owns the memory of the contact conditions, a ContactMemory
    * (section 11.9): the memory pressure N_i of each contact node, whose
@@ -80,7 +80,7 @@ namespace hemicontact
     bool
     stress_active() const
     {
-      return kernel.type() != RelaxationKernelType::none;
+      return history.active();
     }
 
     /** The memory of the contact conditions. */
@@ -113,7 +113,7 @@ namespace hemicontact
     const RelaxationKernel &
     get_kernel() const
     {
-      return kernel;
+      return history.get_kernel();
     }
 
     /**
@@ -223,28 +223,15 @@ namespace hemicontact
     memory_consumption() const;
 
   private:
-    RelaxationKernel   kernel;
-    ContactMemory<dim> contact;
-    MPI_Comm           comm;
-    IndexSet           owned_dofs;
-    IndexSet           relevant_dofs;
+    ConvolutionHistory<RelaxationKernel> history;
+    ContactMemory<dim>                   contact;
+    MPI_Comm                             comm;
+    IndexSet                             owned_dofs;
+    IndexSet                             relevant_dofs;
 
     /** A_mu and A_lambda. */
     TrilinosWrappers::SparseMatrix shear_matrix;
     TrilinosWrappers::SparseMatrix volumetric_matrix;
-
-    /** Prony: h_{n-1} of each term, and h_n of the step prepared. */
-    std::vector<VectorType> terms;
-    std::vector<VectorType> trial_terms;
-
-    /** Expression: t_j, k_j and u_j of every state j < n - 1. */
-    std::vector<double>     past_times;
-    std::vector<double>     past_steps;
-    std::vector<VectorType> past_states;
-    /** ... and the state the step prepared adds. */
-    double     pending_time = 0;
-    double     pending_step = 0;
-    VectorType pending_state;
 
     /** S_mu, S_lambda and m of the step prepared last. */
     VectorType shear_sum;

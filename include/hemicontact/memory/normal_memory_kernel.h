@@ -1,11 +1,9 @@
 #pragma once
 
-#include <hemicontact/expressions/expression.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/memory/memory_kernel.h>
 
-#include <memory>
 #include <string>
-#include <vector>
 
 namespace hemicontact
 {
@@ -14,7 +12,7 @@ namespace hemicontact
    * memory' (doc/theory.md, section 11.9): a Prony series or an expression
    * b(t).
    */
-  class NormalMemoryKernel
+  class NormalMemoryKernel : public MemoryKernel<1>
   {
   public:
     /**
@@ -23,51 +21,29 @@ namespace hemicontact
      * unknown name).
      */
     NormalMemoryKernel(const NormalMemoryParameters &parameters,
-                       const std::string            &constants);
+                       const std::string            &constants)
+      : MemoryKernel<1>(parameters.kernel,
+                        parameters.relaxation_times,
+                        {{{"b", parameters.amplitudes, parameters.b}}},
+                        "normal memory",
+                        "11.9",
+                        constants)
+    {}
 
-    RelaxationKernelType
-    type() const
-    {
-      return kernel;
-    }
+    using MemoryKernel<1>::amplitude;
 
-    /** The number of terms of a Prony series (0 for an expression). */
-    unsigned int
-    n_terms() const
-    {
-      return relaxation_times.size();
-    }
-    /** b_m and tau_m of term @p m of a Prony series. */
+    /** b_m of term @p m of a Prony series. */
     double
     amplitude(const unsigned int m) const
     {
-      return amplitudes[m];
+      return amplitude(0, m);
     }
+
+    /** b(t), as values(). */
     double
-    relaxation_time(const unsigned int m) const
+    operator()(const double t) const
     {
-      return relaxation_times[m];
+      return values(t)[0];
     }
-
-    /**
-     * b(t): the Prony sum or the expression; an expression that is not a
-     * finite number at @p t throws an InputError naming it and t.
-     */
-    double
-    operator()(const double t) const;
-
-    /**
-     * Throw an InputError if the kernel is not finite at one of the times
-     * t = k, 2k, ..., n_steps k, the arguments t_n - t_j of the rule.
-     */
-    void
-    require_finite(const double k, const unsigned int n_steps) const;
-
-  private:
-    RelaxationKernelType        kernel;
-    std::vector<double>         amplitudes;
-    std::vector<double>         relaxation_times;
-    std::string                 text;
-    std::shared_ptr<Expression> b;
   };
 } // namespace hemicontact
