@@ -1,15 +1,16 @@
 /**
- * The command line of hemicontact (include/hemicontact/simulation/command_line.h).
+ * The command line of hemicontact
+ * (include/hemicontact/simulation/command_line.h).
  */
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <hemicontact/base/exceptions.h>
-#include <hemicontact/simulation/command_line.h>
 #include <hemicontact/input/parameters.h>
 #include <hemicontact/laws/contact_laws.h>
 #include <hemicontact/model/step_scheme.h>
 #include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/simulation/command_line.h>
 #include <hemicontact/simulation/simulation.h>
 #include <hemicontact/verification/convergence_study.h>
 

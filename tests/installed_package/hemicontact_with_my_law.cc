@@ -3,9 +3,9 @@
 // r(s) = F_b c s (monotone, so alpha_tau = 0). Everything else, the
 // parameter file, the output and the exit codes, is hemicontact's.
 #include <hemicontact/base/exceptions.h>
-#include <hemicontact/simulation/command_line.h>
 #include <hemicontact/laws/friction_law.h>
 #include <hemicontact/laws/law_parameters.h>
+#include <hemicontact/simulation/command_line.h>
 
 #include <string>
 
