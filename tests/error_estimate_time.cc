@@ -12,7 +12,7 @@
 //   to the space and time parts' squares summed (to 1e-10);
 // and that the static class (one level of
 // prm/verification/mms_2d_quad_breakpoint_static.prm) has no time part.
-// With ContactProblem::time_indicator returning 0 the three time-part
+// With time_indicator() returning 0 the three time-part
 // checks and the two order checks fail.
 #include <hemicontact/input/parameters.h>
 #include <hemicontact/verification/convergence_study.h>

@@ -7,7 +7,7 @@
 #include <hemicontact/output/contact_table.h>
 #include <hemicontact/output/output_file.h>
 #include <hemicontact/output/run_output.h>
-#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/problem/error_indicators.h>
 
 #include <cerrno>
 #include <sstream>
@@ -192,7 +192,7 @@ namespace hemicontact
     cell_data.emplace_back("level", level);
     if (parameters.adaptivity.interval > 0)
       cell_data.emplace_back("refinement_indicator",
-                             problem.refinement_indicators());
+                             refinement_indicators(problem));
     // the memory part M_n of the stress, which stress_* leaves out
     // (doc/theory.md, section 11)
     if (state.memory.stress_active())

@@ -5,7 +5,10 @@
 #include <deal.II/numerics/error_estimator.h>
 
 #include <hemicontact/mesh/marking.h>
-#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/problem/error_indicators.h>
+#include <hemicontact/problem/stability.h>
+#include <hemicontact/problem/state_projection.h>
+#include <hemicontact/problem/wall_admissibility.h>
 #include <hemicontact/state/field_transfer.h>
 
 #include <cmath>
@@ -17,17 +20,20 @@ namespace hemicontact
 {
   template <int dim>
   Vector<float>
-  ContactProblem<dim>::refinement_indicators() const
+  refinement_indicators(const ContactProblem<dim> &problem)
   {
-    const AdaptivityParameters &settings = parameters.adaptivity;
+    const ProblemState<dim>     state    = problem.state();
+    const AdaptivityParameters &settings = state.parameters.adaptivity;
     if (settings.indicator == RefinementIndicator::residual)
-      return residual_indicators();
+      return residual_indicators(problem);
     if (settings.indicator == RefinementIndicator::estimator)
-      return error_estimate().cell_values();
-    TrilinosWrappers::MPI::Vector w(locally_owned_dofs,
-                                    locally_relevant_dofs,
-                                    mpi_communicator);
-    w = velocity;
+      return problem.error_estimate().cell_values();
+    const Discretization<dim>    &discretization = state.discretization;
+    const DoFHandler<dim>        &dof_handler    = state.dof_handler;
+    TrilinosWrappers::MPI::Vector w(state.locally_owned_dofs,
+                                    state.locally_relevant_dofs,
+                                    state.mpi_communicator);
+    w = state.velocity;
     Vector<float> indicators(discretization.triangulation->n_active_cells());
     KellyErrorEstimator<dim>::estimate(
       *discretization.mapping,
@@ -45,15 +51,15 @@ namespace hemicontact
 
     // the jumps of the nodal contact traction along Gamma_3, face by face
     TrilinosWrappers::MPI::Vector t(w);
-    t = contact_traction;
+    t = state.contact_traction;
     std::set<types::global_dof_index> is_contact_node;
-    for (const ContactNode<dim> &node : contact_nodes)
+    for (const ContactNode<dim> &node : state.contact_nodes)
       is_contact_node.insert(node.dofs[0]);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() &&
-              parameters.boundary.part(cell->face(f)->boundary_id()) ==
+              state.parameters.boundary.part(cell->face(f)->boundary_id()) ==
                 BoundaryPart::contact)
             {
               const auto        &face  = cell->face(f);
@@ -93,10 +99,10 @@ namespace hemicontact
                 ExcMessage("adaptivity needs a p4est (hypercube) mesh"));
 
     std::tie(stats.kinetic_before_adaptation, stats.elastic_before_adaptation) =
-      stored_energy();
+      stored_energy(state());
     // mark: thresholds from all indicators, sorted, so the same on any
     // number of ranks (see marking_thresholds())
-    const Vector<float> indicators = refinement_indicators();
+    const Vector<float> indicators = refinement_indicators(*this);
     std::vector<float>  owned;
     for (const auto &cell : tria->active_cell_iterators())
       if (cell->is_locally_owned())
@@ -180,7 +186,7 @@ namespace hemicontact
     tria->prepare_coarsening_and_refinement();
     transfer.prepare();
     const unsigned int functionals =
-      project ? attach_coarsened_functionals(w, u) : 0;
+      project ? attach_coarsened_functionals(state(), w, u) : 0;
     tria->execute_coarsening_and_refinement();
     // fixed fraction keeps the budget of its marks; the 2:1 balance may
     // refine beyond it: say so with the count
@@ -202,13 +208,19 @@ namespace hemicontact
     // (before the hanging-node values are distributed: a kept cell next to
     // a coarsened one still holds the old field there)
     if (project)
-      project_transferred_state(functionals, velocity, displacement);
+      project_transferred_state(state(),
+                                linear_solver,
+                                preconditioner,
+                                functionals,
+                                velocity,
+                                displacement);
     distribute_constraints(new_fields);
     if (project)
       displacement.add(-scheme.held_displacement_offset(time_step),
                        velocity); // u_n = u_{n+1} - k w_n (left point)
     // a projection can overshoot the wall (doc/theory.md 10.2)
-    const auto [n_moved, largest_move] = move_state_onto_wall();
+    const auto [n_moved, largest_move] =
+      move_state_onto_wall(state(), displacement);
     if (n_moved > 0)
       pcout << "  adaptation: the transferred state crossed the wall "
             << (memory.contact_memory().wear_active() ?
@@ -219,7 +231,7 @@ namespace hemicontact
     old_velocity = velocity;
 
     std::tie(stats.kinetic_after_adaptation, stats.elastic_after_adaptation) =
-      stored_energy();
+      stored_energy(state());
     stats.adapted  = true;
     energy.kinetic = stats.kinetic_after_adaptation;
     energy.elastic = stats.elastic_after_adaptation;
@@ -227,14 +239,14 @@ namespace hemicontact
       stats.kinetic_after_adaptation + stats.elastic_after_adaptation -
       stats.kinetic_before_adaptation - stats.elastic_before_adaptation;
     // a finer mesh may have a smaller stability limit
-    check_time_step_stability();
-    check_memory_stability();
+    memory_rule_unstable =
+      check_time_step_limits(state(), preconditioner, timer);
   }
 
   template Vector<float>
-  ContactProblem<2>::refinement_indicators() const;
+  refinement_indicators(const ContactProblem<2> &);
   template Vector<float>
-  ContactProblem<3>::refinement_indicators() const;
+  refinement_indicators(const ContactProblem<3> &);
   template void
   ContactProblem<2>::adapt_mesh(StepStatistics &);
   template void

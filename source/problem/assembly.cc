@@ -5,6 +5,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/problem/cell_matrices.h>
 #include <hemicontact/problem/contact_problem.h>
 
 #include <cmath>
@@ -40,7 +41,8 @@ namespace hemicontact
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          cell_matrices(fe_values, cell_mass, cell_viscous, cell_elastic);
+          cell_matrices(
+            material, fe_values, cell_mass, cell_viscous, cell_elastic);
           cell_step = cell_viscous;
           if (c.viscous != 1.)
             cell_step *= c.viscous;
@@ -66,10 +68,11 @@ namespace hemicontact
 
   template <int dim>
   void
-  ContactProblem<dim>::cell_matrices(const FEValues<dim> &fe_values,
-                                     FullMatrix<double>  &mass,
-                                     FullMatrix<double>  &viscous,
-                                     FullMatrix<double>  &elastic) const
+  cell_matrices(const KelvinVoigtMaterial<dim> &material,
+                const FEValues<dim>            &fe_values,
+                FullMatrix<double>             &mass,
+                FullMatrix<double>             &viscous,
+                FullMatrix<double>             &elastic)
   {
     const FEValuesExtractors::Vector     v(0);
     const unsigned int                   n = fe_values.dofs_per_cell;
@@ -261,15 +264,15 @@ namespace hemicontact
     base_constraints.set_zero(step_rhs);
   }
 
-#define HEMICONTACT_INSTANTIATE(dim)                                      \
-  template void ContactProblem<dim>::assemble_constant_matrices(          \
-    const StepMatrixCoefficients &);                                      \
-  template void ContactProblem<dim>::cell_matrices(const FEValues<dim> &, \
-                                                   FullMatrix<double> &,  \
-                                                   FullMatrix<double> &,  \
-                                                   FullMatrix<double> &)  \
-    const;                                                                \
-  template void ContactProblem<dim>::assemble_load(const double);         \
+#define HEMICONTACT_INSTANTIATE(dim)                              \
+  template void ContactProblem<dim>::assemble_constant_matrices(  \
+    const StepMatrixCoefficients &);                              \
+  template void cell_matrices(const KelvinVoigtMaterial<dim> &,   \
+                              const FEValues<dim> &,              \
+                              FullMatrix<double> &,               \
+                              FullMatrix<double> &,               \
+                              FullMatrix<double> &);              \
+  template void ContactProblem<dim>::assemble_load(const double); \
   template void ContactProblem<dim>::assemble_step_rhs();
 
   HEMICONTACT_INSTANTIATE(2)

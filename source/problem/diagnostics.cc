@@ -103,22 +103,26 @@ namespace hemicontact
 
   template <int dim>
   std::pair<double, double>
-  ContactProblem<dim>::stored_energy() const
+  stored_energy(const ProblemState<dim> &state)
   {
+    const AffineConstraints<double> &base_constraints = state.base_constraints;
+    const StepScheme                &scheme           = state.scheme;
+    const TrilinosWrappers::MPI::Vector &velocity     = state.velocity;
     // rho/2 |w_n|^2 and 1/2 a_B(u, u) with u the displacement held after
     // step n: u_{n+1} = u_n + k w_n (left point) or u_n (implicit); no
     // kinetic energy without inertia (doc/theory.md, section 9.3)
     const TrilinosWrappers::MPI::Vector w =
       without_constrained(velocity, base_constraints);
-    TrilinosWrappers::MPI::Vector u_next(displacement);
-    const double offset = scheme.held_displacement_offset(time_step);
+    TrilinosWrappers::MPI::Vector u_next(state.displacement);
+    const double offset = scheme.held_displacement_offset(state.time_step);
     if (offset != 0.)
       u_next.add(offset, velocity);
     u_next = without_constrained(u_next, base_constraints);
-    TrilinosWrappers::MPI::Vector tmp(locally_owned_dofs, mpi_communicator);
-    mass_matrix.vmult(tmp, w);
+    TrilinosWrappers::MPI::Vector tmp(state.locally_owned_dofs,
+                                      state.mpi_communicator);
+    state.mass_matrix.vmult(tmp, w);
     const double kinetic = scheme.kinetic_energy(w * tmp);
-    elastic_matrix.vmult(tmp, u_next);
+    state.elastic_matrix.vmult(tmp, u_next);
     return {kinetic, 0.5 * (u_next * tmp)};
   }
 
@@ -153,7 +157,7 @@ namespace hemicontact
           energy.memory_work = 0.5 * (memory.step_functional() * w);
         return;
       }
-    std::tie(energy.kinetic, energy.elastic) = stored_energy();
+    std::tie(energy.kinetic, energy.elastic) = stored_energy(state());
     if (initial)
       {
         energy.initial_energy = energy.total_energy();
@@ -361,32 +365,32 @@ namespace hemicontact
   }
 
   template <int dim>
-  void
-  ContactProblem<dim>::recheck_convexity_if_bounds_grew(const double t)
+  std::optional<std::string>
+  convexity_recheck(const ProblemState<dim> &state, const double t)
   {
     // a bound from u_nu or t may raise alpha_tau above what was checked
-    int grew = convexity.checked_alpha_tau.size() != contact_nodes.size();
-    for (std::size_t i = 0; i < contact_nodes.size() && !grew; ++i)
-      grew =
-        contact_nodes[i].locally_owned &&
-        friction->relaxed_monotonicity_constant(
-          contact_nodes[i].friction_bound) > convexity.checked_alpha_tau[i];
-    if (Utilities::MPI::max(grew, mpi_communicator) == 0)
-      return;
+    const std::vector<ContactNode<dim>> &nodes = state.contact_nodes;
+    const std::vector<double> &checked = state.convexity.checked_alpha_tau;
+    int                        grew    = checked.size() != nodes.size();
+    for (std::size_t i = 0; i < nodes.size() && !grew; ++i)
+      grew = nodes[i].locally_owned &&
+             state.friction_law.relaxed_monotonicity_constant(
+               nodes[i].friction_bound) > checked[i];
+    if (Utilities::MPI::max(grew, state.mpi_communicator) == 0)
+      return std::nullopt;
     std::ostringstream context;
     context << "at t = " << t
             << " (the friction bound or the mesh changed since the last "
                "convexity check) ";
-    check_convexity(context.str());
+    return context.str();
   }
 
-#define HEMICONTACT_INSTANTIATE(dim)                                       \
-  template void ContactProblem<dim>::update_energy_balance(const bool);    \
-  template std::pair<double, double> ContactProblem<dim>::stored_energy()  \
-    const;                                                                 \
-  template void ContactProblem<dim>::check_convexity(const std::string &); \
-  template void ContactProblem<dim>::recheck_convexity_if_bounds_grew(     \
-    const double);
+#define HEMICONTACT_INSTANTIATE(dim)                                           \
+  template void ContactProblem<dim>::update_energy_balance(const bool);        \
+  template std::pair<double, double> stored_energy(const ProblemState<dim> &); \
+  template void ContactProblem<dim>::check_convexity(const std::string &);     \
+  template std::optional<std::string> convexity_recheck(                       \
+    const ProblemState<dim> &, const double);
 
   HEMICONTACT_INSTANTIATE(2)
   HEMICONTACT_INSTANTIATE(3)

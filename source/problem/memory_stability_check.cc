@@ -2,7 +2,7 @@
 
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/model/memory_stability.h>
-#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/problem/stability.h>
 #include <hemicontact/solver/constrained_operator.h>
 #include <hemicontact/solver/generalized_eigenvalue.h>
 
@@ -104,19 +104,31 @@ namespace hemicontact
   } // namespace
 
   template <int dim>
-  void
-  ContactProblem<dim>::check_memory_stability()
+  bool
+  check_memory_stability(const ProblemState<dim> &state,
+                         StepPreconditioner<dim> &preconditioner,
+                         TimerOutput             &timer)
   {
-    const RelaxationKernel   &stress = memory.get_kernel();
-    const NormalMemoryKernel &normal = memory.contact_memory().get_kernel();
+    const RelaxationKernel   &stress = state.memory.get_kernel();
+    const NormalMemoryKernel &normal =
+      state.memory.contact_memory().get_kernel();
     const bool stress_memory = stress.type() != RelaxationKernelType::none;
     const bool normal_memory = normal.type() != RelaxationKernelType::none;
-    memory_rule_unstable     = false;
     if (!stress_memory && !normal_memory)
-      return;
-    TimerOutput::Scope t(timer, "stability check");
-    const double       k = time_step;
-    MemoryLimit        result;
+      return false;
+    TimerOutput::Scope                   t(timer, "stability check");
+    const double                         k             = state.time_step;
+    const Parameters                    &parameters    = state.parameters;
+    const KelvinVoigtMaterial<dim>      &material      = state.material;
+    const StepScheme                    &scheme        = state.scheme;
+    const NormalLaw                     &law           = state.normal_law;
+    const std::vector<ContactNode<dim>> &contact_nodes = state.contact_nodes;
+    const AffineConstraints<double> &base_constraints  = state.base_constraints;
+    const TrilinosWrappers::SparseMatrix &step_matrix  = state.step_matrix;
+    const TrilinosWrappers::SparseMatrix &mass_matrix  = state.mass_matrix;
+    const TrilinosWrappers::SparseMatrix &elastic_matrix = state.elastic_matrix;
+    MPI_Comm    mpi_communicator = state.mpi_communicator;
+    MemoryLimit result;
 
     // the stress: the deviatoric and the volumetric channel of the
     // isotropic tensors (doc/theory.md 11.13), moduli 2 mu and 2 mu + d lambda
@@ -159,7 +171,7 @@ namespace hemicontact
                 channel(stress.mu_amplitude(l), stress.lambda_amplitude(l)) *
                 stress.relaxation_time(l);
           else
-            for (unsigned int n = 1; n <= n_steps; ++n)
+            for (unsigned int n = 1; n <= state.n_steps; ++n)
               {
                 const auto [mu, lambda] = stress(n * k);
                 integral += k * channel(mu, lambda);
@@ -179,7 +191,7 @@ namespace hemicontact
     // with the law's largest slope; none behind a wall, which bounds
     // (u_nu)_+ <= g and so N
     if (normal_memory && !contact_nodes.empty() &&
-        !std::isfinite(law->penetration_limit()))
+        !std::isfinite(law.penetration_limit()))
       {
         const auto apply_c = [&](const TrilinosWrappers::MPI::Vector &in,
                                  TrilinosWrappers::MPI::Vector       &out) {
@@ -199,7 +211,8 @@ namespace hemicontact
         const auto apply_k = constrained(step_matrix, base_constraints);
         const auto precondition =
           constrained(preconditioner.step_amg(step_matrix), base_constraints);
-        TrilinosWrappers::MPI::Vector x(locally_owned_dofs, mpi_communicator);
+        TrilinosWrappers::MPI::Vector x(state.locally_owned_dofs,
+                                        mpi_communicator);
         for (const ContactNode<dim> &node : contact_nodes)
           if (node.locally_owned)
             for (unsigned int c = 0; c < dim; ++c)
@@ -221,7 +234,7 @@ namespace hemicontact
             step_matrix.vmult(tmp, x);
             const double kx = x * tmp / c;
             // the law acts on u_nu (static class) or w_nu
-            const double law_slope = law->largest_remainder_slope();
+            const double law_slope = law.largest_remainder_slope();
             MemoryMode   mode;
             mode.elasticity = scheme.is_static() ? kx + law_slope : b;
             mode.viscosity  = scheme.is_static() ?
@@ -244,8 +257,7 @@ namespace hemicontact
         Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       std::cerr << "hemicontact: warning: " << growing_model.str() << std::endl;
     if (!(result.limit < k))
-      return;
-    memory_rule_unstable = true;
+      return false;
     std::ostringstream message;
     message << std::setprecision(4) << "the time step k = " << k
             << " is above the stability limit of the memory rule for "
@@ -263,10 +275,15 @@ namespace hemicontact
       throw InputError("time: " + message.str());
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       std::cerr << "hemicontact: warning: " << message.str() << std::endl;
+    return true;
   }
 
-  template void
-  ContactProblem<2>::check_memory_stability();
-  template void
-  ContactProblem<3>::check_memory_stability();
+#define HEMICONTACT_INSTANTIATE(dim)                              \
+  template bool check_memory_stability(const ProblemState<dim> &, \
+                                       StepPreconditioner<dim> &, \
+                                       TimerOutput &);
+
+  HEMICONTACT_INSTANTIATE(2)
+  HEMICONTACT_INSTANTIATE(3)
+#undef HEMICONTACT_INSTANTIATE
 } // namespace hemicontact

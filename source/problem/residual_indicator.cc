@@ -1,11 +1,13 @@
-#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/problem/error_indicators.h>
 
 namespace hemicontact
 {
   template <int dim>
-  ErrorEstimate
-  ContactProblem<dim>::estimate_error() const
+  const ErrorEstimate &
+  ContactProblem<dim>::error_estimate() const
   {
+    if (estimate_revision == state_revision)
+      return cached_estimate;
     // the state of the step just solved, ghosted; the nodal traction also
     // at hanging nodes on Gamma_3 (interpolated from the face's nodes)
     const auto ghosted = [&](const TrilinosWrappers::MPI::Vector &v) {
@@ -19,44 +21,31 @@ namespace hemicontact
     base_constraints.distribute(xi_owned);
     const ErrorEstimator<dim> estimator(
       discretization, dof_handler, material, scheme, data, parameters.boundary);
-    return estimator.estimate(ghosted(velocity),
-                              ghosted(old_velocity),
-                              ghosted(displacement),
-                              ghosted(xi_owned),
-                              time_step,
-                              mpi_communicator);
-  }
-
-  template <int dim>
-  const ErrorEstimate &
-  ContactProblem<dim>::error_estimate() const
-  {
-    if (estimate_revision != state_revision)
-      {
-        cached_estimate   = estimate_error();
-        estimate_revision = state_revision;
-      }
+    cached_estimate   = estimator.estimate(ghosted(velocity),
+                                         ghosted(old_velocity),
+                                         ghosted(displacement),
+                                         ghosted(xi_owned),
+                                         time_step,
+                                         mpi_communicator);
+    estimate_revision = state_revision;
     return cached_estimate;
   }
 
   template <int dim>
   Vector<float>
-  ContactProblem<dim>::residual_indicators() const
+  residual_indicators(const ContactProblem<dim> &problem)
   {
-    return error_estimate().cell_values(parameters.adaptivity.contact_weight,
-                                        /*in_energy_norm=*/false);
+    return problem.error_estimate().cell_values(
+      problem.state().parameters.adaptivity.contact_weight,
+      /*in_energy_norm=*/false);
   }
 
-  template ErrorEstimate
-  ContactProblem<2>::estimate_error() const;
-  template ErrorEstimate
-  ContactProblem<3>::estimate_error() const;
   template const ErrorEstimate &
   ContactProblem<2>::error_estimate() const;
   template const ErrorEstimate &
   ContactProblem<3>::error_estimate() const;
   template Vector<float>
-  ContactProblem<2>::residual_indicators() const;
+  residual_indicators(const ContactProblem<2> &);
   template Vector<float>
-  ContactProblem<3>::residual_indicators() const;
+  residual_indicators(const ContactProblem<3> &);
 } // namespace hemicontact

@@ -2,7 +2,7 @@
 #include <deal.II/base/timer.h>
 
 #include <hemicontact/base/exceptions.h>
-#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/problem/error_indicators.h>
 
 #include <algorithm>
 #include <functional>
@@ -65,7 +65,7 @@ namespace hemicontact
             // its own share of the section 'error estimate'
             TimerOutput::Scope t_time(timer, "time indicator");
             stats.time_estimated = true;
-            stats.estimate_time  = time_indicator(velocity_before);
+            stats.estimate_time  = time_indicator(state(), velocity_before);
           }
       }
     return stats;
@@ -118,7 +118,8 @@ namespace hemicontact
     const TrilinosWrappers::MPI::Vector *pressure =
       scheme.is_static() ? &contact_traction : &traction_before;
     update_friction_bounds(start + k, pressure);
-    recheck_convexity_if_bounds_grew(start + k);
+    if (const auto context = convexity_recheck(state(), start + k))
+      check_convexity(*context);
     assemble_load(start + k);
     assemble_step_rhs();
     try
@@ -176,11 +177,11 @@ namespace hemicontact
     // everything that depends on k: the step matrix rho/k M + A, its AMG
     // and the stored energy, whose elastic part is that of u_n + k w_n: the
     // change of k changes E_n by itself, booked like a mesh transfer
-    const std::pair<double, double> before = stored_energy();
+    const std::pair<double, double> before = stored_energy(state());
     time_step                              = k;
     assemble_constant_matrices(scheme.step_matrix(time_step));
     preconditioner.clear();
-    std::tie(energy.kinetic, energy.elastic) = stored_energy();
+    std::tie(energy.kinetic, energy.elastic) = stored_energy(state());
     energy.transfer_change +=
       energy.kinetic + energy.elastic - before.first - before.second;
   }

@@ -6,7 +6,10 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/problem/contact_node_setup.h>
 #include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/problem/stability.h>
+#include <hemicontact/problem/wall_admissibility.h>
 
 #include <cmath>
 #include <map>
@@ -76,8 +79,8 @@ namespace hemicontact
     discretization.check_boundary_ids(parameters.boundary);
     setup_on_current_mesh();
     initialize_state();
-    check_time_step_stability();
-    check_memory_stability();
+    memory_rule_unstable =
+      check_time_step_limits(state(), preconditioner, timer);
     check_convexity();
   }
 
@@ -85,34 +88,23 @@ namespace hemicontact
   void
   ContactProblem<dim>::setup_on_current_mesh()
   {
-    setup_dofs();
-    displacement_space = {"displacement",
-                          &dof_handler,
-                          &locally_owned_dofs,
-                          &locally_relevant_dofs,
-                          &base_constraints};
-    added_fields.reinit(*discretization.triangulation, mpi_communicator);
-    assemble_constant_matrices(scheme.step_matrix(time_step));
-    setup_contact_nodes();
-    preconditioner.reinit(dof_handler, *discretization.mapping);
-    memory.reinit(dof_handler,
-                  *discretization.mapping,
-                  discretization.cell_quadrature(2),
-                  base_constraints,
-                  locally_owned_dofs,
-                  locally_relevant_dofs,
-                  contact_nodes);
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::setup_dofs()
-  {
     dof_handler.distribute_dofs(*discretization.fe);
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
 
-    setup_base_constraints();
+    // hanging nodes and u = 0 on Gamma_1
+    base_constraints.clear();
+    base_constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, base_constraints);
+    const Functions::ZeroFunction<dim>                  zero(dim);
+    std::map<types::boundary_id, const Function<dim> *> clamped;
+    for (const unsigned int id : parameters.boundary.clamped_ids)
+      clamped[id] = &zero;
+    VectorTools::interpolate_boundary_values(*discretization.mapping,
+                                             dof_handler,
+                                             clamped,
+                                             base_constraints);
+    base_constraints.close();
 
     TrilinosWrappers::SparsityPattern sparsity(locally_owned_dofs,
                                                locally_owned_dofs,
@@ -136,139 +128,32 @@ namespace hemicontact
                                              &step_rhs,
                                              &contact_traction})
       v->reinit(locally_owned_dofs, mpi_communicator);
-  }
 
-  template <int dim>
-  void
-  ContactProblem<dim>::setup_base_constraints()
-  {
-    base_constraints.clear();
-    base_constraints.reinit(locally_relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, base_constraints);
-    const Functions::ZeroFunction<dim>                  zero(dim);
-    std::map<types::boundary_id, const Function<dim> *> clamped;
-    for (const unsigned int id : parameters.boundary.clamped_ids)
-      clamped[id] = &zero;
-    VectorTools::interpolate_boundary_values(*discretization.mapping,
-                                             dof_handler,
-                                             clamped,
-                                             base_constraints);
-    base_constraints.close();
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::setup_contact_nodes()
-  {
-    const BoundaryParameters &boundary = parameters.boundary;
-
-    // lumped boundary mass m_j = int_{Gamma_3} phi_j and the nodal normal
-    // n_j = int_{Gamma_3} phi_j nu_{c(j)}, condensed onto the free nodes
-    TrilinosWrappers::MPI::Vector mass(locally_owned_dofs, mpi_communicator);
-    TrilinosWrappers::MPI::Vector normal(locally_owned_dofs, mpi_communicator);
-    const FiniteElement<dim>     &fe = *discretization.fe;
-    FEFaceValues<dim>             fe_face(*discretization.mapping,
-                              fe,
-                              discretization.face_quadrature(2),
-                              update_values | update_normal_vectors |
-                                update_JxW_values);
-    const unsigned int            dofs_per_cell = fe.n_dofs_per_cell();
-    Vector<double> local_mass(dofs_per_cell), local_normal(dofs_per_cell);
-    std::vector<types::global_dof_index> dofs(dofs_per_cell);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              boundary.part(cell->face(f)->boundary_id()) ==
-                BoundaryPart::contact)
-            {
-              fe_face.reinit(cell, f);
-              local_mass   = 0;
-              local_normal = 0;
-              for (const unsigned int q : fe_face.quadrature_point_indices())
-                for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                  {
-                    const unsigned int c =
-                      fe.system_to_component_index(i).first;
-                    const double phi =
-                      fe_face.shape_value_component(i, q, c) * fe_face.JxW(q);
-                    local_mass(i) += phi;
-                    local_normal(i) += phi * fe_face.normal_vector(q)[c];
-                  }
-              cell->get_dof_indices(dofs);
-              base_constraints.distribute_local_to_global(local_mass,
-                                                          dofs,
-                                                          mass);
-              base_constraints.distribute_local_to_global(local_normal,
-                                                          dofs,
-                                                          normal);
-            }
-    mass.compress(VectorOperation::add);
-    normal.compress(VectorOperation::add);
-
-    TrilinosWrappers::MPI::Vector diagonal(locally_owned_dofs,
-                                           mpi_communicator);
-    for (const auto i : locally_owned_dofs)
-      diagonal[i] = step_matrix.diag_element(i);
-    diagonal.compress(VectorOperation::insert);
-
-    TrilinosWrappers::MPI::Vector ghosted(locally_owned_dofs,
-                                          locally_relevant_dofs,
-                                          mpi_communicator);
-    TrilinosWrappers::MPI::Vector mass_g(ghosted), normal_g(ghosted),
-      diagonal_g(ghosted);
-    mass_g     = mass;
-    normal_g   = normal;
-    diagonal_g = diagonal;
-
-    contact_nodes.clear();
-    convexity.checked_alpha_tau
-      .clear(); // a convexity check covers its own nodes
-    std::map<types::global_dof_index, unsigned int> seen;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!cell->is_artificial())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              boundary.part(cell->face(f)->boundary_id()) ==
-                BoundaryPart::contact)
-            for (const unsigned int v : cell->face(f)->vertex_indices())
-              {
-                ContactNode<dim> node;
-                for (unsigned int c = 0; c < dim; ++c)
-                  node.dofs[c] = cell->face(f)->vertex_dof_index(v, c);
-                if (seen.count(node.dofs[0]) ||
-                    base_constraints.is_constrained(node.dofs[0]) ||
-                    mass_g[node.dofs[0]] <= 0)
-                  continue;
-                seen[node.dofs[0]] = contact_nodes.size();
-                node.position      = cell->face(f)->vertex(v);
-                node.mass          = mass_g[node.dofs[0]];
-                double diag        = 0;
-                for (unsigned int c = 0; c < dim; ++c)
-                  {
-                    node.normal[c] = normal_g[node.dofs[c]];
-                    diag += diagonal_g[node.dofs[c]] / dim;
-                  }
-                node.normal /= node.normal.norm();
-                node.c = parameters.solver_tuning.complementarity_factor *
-                         diag / node.mass;
-                // above the law's steepest rise, so that q = s + c w_nu
-                // grows along every free segment of the path even where an
-                // iterate sits off its segment (doc/theory.md 10.3)
-                node.c = std::max(node.c, 2 * law->largest_remainder_slope());
-                node.locally_owned =
-                  locally_owned_dofs.is_element(node.dofs[0]);
-                contact_nodes.push_back(node);
-              }
-
+    displacement_space = {"displacement",
+                          &dof_handler,
+                          &locally_owned_dofs,
+                          &locally_relevant_dofs,
+                          &base_constraints};
+    added_fields.reinit(*discretization.triangulation, mpi_communicator);
+    assemble_constant_matrices(scheme.step_matrix(time_step));
+    contact_nodes = collect_contact_nodes(state());
+    // a convexity check covers its own nodes
+    convexity.checked_alpha_tau.clear();
     update_friction_bounds(step_number * time_step);
-
     unsigned int n_owned = 0;
     for (const auto &node : contact_nodes)
       n_owned += node.locally_owned;
     require(Utilities::MPI::sum(n_owned, mpi_communicator) > 0,
             "boundary: the contact boundary Gamma_3 has no free node (every "
             "node is clamped); check 'contact boundary ids'.");
+    preconditioner.reinit(dof_handler, *discretization.mapping);
+    memory.reinit(dof_handler,
+                  *discretization.mapping,
+                  discretization.cell_quadrature(2),
+                  base_constraints,
+                  locally_owned_dofs,
+                  locally_relevant_dofs,
+                  contact_nodes);
   }
 
   template <int dim>
@@ -283,7 +168,7 @@ namespace hemicontact
     if (bound.uses_slip())
       {
         // zero before the memory has its vectors on this mesh (the bounds
-        // of setup_contact_nodes(): no slip yet, or read again on resume)
+        // of setup_on_current_mesh(): no slip yet, or read again on resume)
         s.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
         if (memory.contact_memory().slip().size() == dof_handler.n_dofs())
           s = memory.contact_memory().slip();
@@ -397,19 +282,46 @@ namespace hemicontact
                             displacement,
                             "initial displacement");
       }
-    require_admissible_initial_state();
+    require_admissible_initial_state(state());
     old_velocity = velocity;
     step_number  = 0;
     // no contact pressure before the first step (doc/theory.md 9.9)
     contact_traction = 0;
     update_friction_bounds(0.);
     memory.clear();
+    // the step problem at t = 0 with the right-hand side b that @p set_rhs
+    // sets from the load F_0, solved from w = 0 by the step solver
+    const auto solve_initial_problem = [&](const auto        &set_rhs,
+                                           const std::string &what) {
+      assemble_load(0.);
+      set_rhs();
+      base_constraints.set_zero(step_rhs);
+      velocity = 0;
+      try
+        {
+          solve_with_bound(0., nullptr, time_step, true);
+        }
+      catch (const SolverFailure &failure)
+        {
+          throw SolverFailure(what + " failed: " + failure.what());
+        }
+      old_velocity = velocity;
+    };
     if (scheme.is_static() && memory.active())
-      solve_static_initial_state();
+      {
+        // u_0, the first state of the memory sum, is the solution of load
+        // value 0 (M_0 = 0: the problem without memory; doc/theory.md,
+        // section 11)
+        solve_initial_problem([&]() { step_rhs = load; },
+                              "the initial displacement u_0 of the static "
+                              "class with memory (the problem of load value "
+                              "t = 0, doc/theory.md section 11)");
+        scheme.displacement_after_step(displacement, velocity, time_step);
+      }
     if (scheme.initial_velocity_from_step())
       {
         // doc/theory.md, section 9.2: the equation at t_0 with the data u_0,
-        // K = A and b = F_0 - B u_0, solved from w = 0 by the step solver
+        // K = A and b = F_0 - B u_0
         const bool other_matrix =
           !(scheme.initial_matrix() == scheme.step_matrix(time_step));
         if (other_matrix)
@@ -417,24 +329,13 @@ namespace hemicontact
             assemble_constant_matrices(scheme.initial_matrix());
             preconditioner.clear();
           }
-        assemble_load(0.);
-        scheme.initial_rhs(elastic_matrix, displacement, load, step_rhs);
-        base_constraints.set_zero(step_rhs);
-        velocity = 0;
-        try
-          {
-            solve_with_bound(0., nullptr, time_step, true);
-          }
-        catch (const SolverFailure &failure)
-          {
-            throw SolverFailure(
-              std::string(
-                "the initial velocity w_0 of the quasistatic class (the "
-                "step problem at t = 0 with the initial displacement, "
-                "doc/theory.md section 9.2) failed: ") +
-              failure.what());
-          }
-        old_velocity = velocity;
+        solve_initial_problem(
+          [&]() {
+            scheme.initial_rhs(elastic_matrix, displacement, load, step_rhs);
+          },
+          "the initial velocity w_0 of the quasistatic class (the step "
+          "problem at t = 0 with the initial displacement, doc/theory.md "
+          "section 9.2)");
         if (other_matrix)
           {
             assemble_constant_matrices(scheme.step_matrix(time_step));
@@ -443,32 +344,6 @@ namespace hemicontact
       }
     energy = EnergyBalance();
     update_energy_balance(/*initial=*/true);
-  }
-
-  template <int dim>
-  void
-  ContactProblem<dim>::solve_static_initial_state()
-  {
-    // u_0, the first state of the memory sum, is the solution of load value
-    // 0 (M_0 = 0: the problem without memory; doc/theory.md, section 11)
-    assemble_load(0.);
-    step_rhs = load;
-    base_constraints.set_zero(step_rhs);
-    velocity = 0;
-    try
-      {
-        solve_with_bound(0., nullptr, time_step, true);
-      }
-    catch (const SolverFailure &failure)
-      {
-        throw SolverFailure(
-          std::string("the initial displacement u_0 of the static class with "
-                      "memory (the problem of load value t = 0, "
-                      "doc/theory.md section 11) failed: ") +
-          failure.what());
-      }
-    old_velocity = velocity;
-    scheme.displacement_after_step(displacement, velocity, time_step);
   }
 
 #define HEMICONTACT_INSTANTIATE(dim)                               \
@@ -483,11 +358,7 @@ namespace hemicontact
     const double, const TrilinosWrappers::MPI::Vector *);          \
   template void ContactProblem<dim>::setup();                      \
   template void ContactProblem<dim>::setup_on_current_mesh();      \
-  template void ContactProblem<dim>::setup_dofs();                 \
-  template void ContactProblem<dim>::setup_base_constraints();     \
-  template void ContactProblem<dim>::setup_contact_nodes();        \
-  template void ContactProblem<dim>::initialize_state();           \
-  template void ContactProblem<dim>::solve_static_initial_state();
+  template void ContactProblem<dim>::initialize_state();
 
   HEMICONTACT_INSTANTIATE(2)
   HEMICONTACT_INSTANTIATE(3)

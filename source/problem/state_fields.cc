@@ -157,33 +157,11 @@ namespace hemicontact
     added_fields.add(definition, taken);
   }
 
-  template <int dim>
-  void
-  ContactProblem<dim>::branches_from_field(
-    const TrilinosWrappers::MPI::Vector &field,
-    std::vector<ContactNode<dim>>       &nodes) const
-  {
-    TrilinosWrappers::MPI::Vector ghosted(locally_owned_dofs,
-                                          locally_relevant_dofs,
-                                          mpi_communicator);
-    ghosted = field;
-    for (ContactNode<dim> &node : nodes)
-      {
-        node.normal_branch =
-          static_cast<NormalBranch>(std::lround(ghosted[node.dofs[0]]));
-        node.tangential_branch =
-          static_cast<TangentialBranch>(std::lround(ghosted[node.dofs[1]]));
-      }
-  }
-
-#define HEMICONTACT_INSTANTIATE(dim)                                          \
-  template std::vector<StateField<dim>> ContactProblem<dim>::state_fields(    \
-    const std::vector<TrilinosWrappers::MPI::Vector *> &);                    \
-  template std::vector<StateField<dim>> ContactProblem<dim>::fields() const;  \
-  template void ContactProblem<dim>::add_field(const FieldDefinition<dim> &); \
-  template void ContactProblem<dim>::branches_from_field(                     \
-    const TrilinosWrappers::MPI::Vector &, std::vector<ContactNode<dim>> &)   \
-    const;
+#define HEMICONTACT_INSTANTIATE(dim)                                         \
+  template std::vector<StateField<dim>> ContactProblem<dim>::state_fields(   \
+    const std::vector<TrilinosWrappers::MPI::Vector *> &);                   \
+  template std::vector<StateField<dim>> ContactProblem<dim>::fields() const; \
+  template void ContactProblem<dim>::add_field(const FieldDefinition<dim> &);
   HEMICONTACT_INSTANTIATE(2)
   HEMICONTACT_INSTANTIATE(3)
 #undef HEMICONTACT_INSTANTIATE

@@ -4,7 +4,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/problem/cell_matrices.h>
+#include <hemicontact/problem/state_projection.h>
 
 #include <map>
 #include <vector>
@@ -36,75 +37,87 @@ namespace hemicontact
                            update_values | update_gradients |
                              update_JxW_values);
     }
+
+    /** The cell's rho M w and B u_next (its local vectors m_w, b_u). */
+    template <int dim>
+    void
+    cell_functionals(const KelvinVoigtMaterial<dim>                &material,
+                     FEValues<dim>                                 &fe_values,
+                     const typename DoFHandler<dim>::cell_iterator &cell,
+                     const TrilinosWrappers::MPI::Vector           &w,
+                     const TrilinosWrappers::MPI::Vector           &u_next,
+                     Vector<double>                                &m_w,
+                     Vector<double>                                &b_u)
+    {
+      const unsigned int n = fe_values.dofs_per_cell;
+      FullMatrix<double> mass(n, n), viscous(n, n), elastic(n, n);
+      Vector<double>     w_cell(n), u_cell(n);
+      fe_values.reinit(cell);
+      cell_matrices(material, fe_values, mass, viscous, elastic);
+      cell->get_dof_values(w, w_cell);
+      cell->get_dof_values(u_next, u_cell);
+      mass.vmult(m_w, w_cell);
+      elastic.vmult(b_u, u_cell);
+    }
   } // namespace
 
   template <int dim>
-  void
-  ContactProblem<dim>::cell_functionals(
-    FEValues<dim>                                 &fe_values,
-    const typename DoFHandler<dim>::cell_iterator &cell,
-    const TrilinosWrappers::MPI::Vector           &w,
-    const TrilinosWrappers::MPI::Vector           &u_next,
-    Vector<double>                                &m_w,
-    Vector<double>                                &b_u) const
-  {
-    const unsigned int n = fe_values.dofs_per_cell;
-    FullMatrix<double> mass(n, n), viscous(n, n), elastic(n, n);
-    Vector<double>     w_cell(n), u_cell(n);
-    fe_values.reinit(cell);
-    cell_matrices(fe_values, mass, viscous, elastic);
-    cell->get_dof_values(w, w_cell);
-    cell->get_dof_values(u_next, u_cell);
-    mass.vmult(m_w, w_cell);
-    elastic.vmult(b_u, u_cell);
-  }
-
-  template <int dim>
   unsigned int
-  ContactProblem<dim>::attach_coarsened_functionals(
-    const TrilinosWrappers::MPI::Vector &w,
-    const TrilinosWrappers::MPI::Vector &u_next)
+  attach_coarsened_functionals(const ProblemState<dim>             &state,
+                               const TrilinosWrappers::MPI::Vector &w,
+                               const TrilinosWrappers::MPI::Vector &u_next)
   {
     auto *tria = dynamic_cast<parallel::DistributedTriangulationBase<dim> *>(
-      discretization.triangulation.get());
+      state.discretization.triangulation.get());
     AssertThrow(tria != nullptr, ExcInternalError());
 
-    // (the mesh keeps the callback until execute_coarsening_and_refinement())
-    const auto pack = [this, &w, &u_next](
-                        const typename Triangulation<dim>::cell_iterator &cell,
-                        const typename Triangulation<dim>::CellStatus status) {
-      if (status != Triangulation<dim>::CELL_COARSEN)
-        return std::vector<char>();
-      // called on the parent, while its children and the old dofs still exist
-      const FiniteElement<dim> &fe        = *discretization.fe;
-      const unsigned int        n         = fe.n_dofs_per_cell();
-      FEValues<dim>             fe_values = matrix_fe_values(discretization);
-      Vector<double>            m_w(n), b_u(n), parent_m_w(n), parent_b_u(n);
-      const typename DoFHandler<dim>::cell_iterator parent(*cell, &dof_handler);
-      for (unsigned int c = 0; c < parent->n_children(); ++c)
-        {
-          cell_functionals(fe_values, parent->child(c), w, u_next, m_w, b_u);
-          // parent shape function i on child c = sum_j P_ji (child's j)
-          const FullMatrix<double> &prolongation =
-            fe.get_prolongation_matrix(c, parent->refinement_case());
-          prolongation.Tvmult_add(parent_m_w, m_w);
-          prolongation.Tvmult_add(parent_b_u, b_u);
-        }
-      CellFunctionals values(parent_m_w.begin(), parent_m_w.end());
-      values.insert(values.end(), parent_b_u.begin(), parent_b_u.end());
-      return Utilities::pack(values, /*allow_compression=*/false);
-    };
+    // (the mesh keeps the callback until execute_coarsening_and_refinement():
+    // it holds the problem's objects, not the view @p state)
+    const auto pack =
+      [&discretization = state.discretization,
+       &dof_handler    = state.dof_handler,
+       &material       = state.material,
+       &w,
+       &u_next](const typename Triangulation<dim>::cell_iterator &cell,
+                const typename Triangulation<dim>::CellStatus     status) {
+        if (status != Triangulation<dim>::CELL_COARSEN)
+          return std::vector<char>();
+        // called on the parent, while its children and the old dofs still exist
+        const FiniteElement<dim> &fe        = *discretization.fe;
+        const unsigned int        n         = fe.n_dofs_per_cell();
+        FEValues<dim>             fe_values = matrix_fe_values(discretization);
+        Vector<double>            m_w(n), b_u(n), parent_m_w(n), parent_b_u(n);
+        const typename DoFHandler<dim>::cell_iterator parent(*cell,
+                                                             &dof_handler);
+        for (unsigned int c = 0; c < parent->n_children(); ++c)
+          {
+            cell_functionals(
+              material, fe_values, parent->child(c), w, u_next, m_w, b_u);
+            // parent shape function i on child c = sum_j P_ji (child's j)
+            const FullMatrix<double> &prolongation =
+              fe.get_prolongation_matrix(c, parent->refinement_case());
+            prolongation.Tvmult_add(parent_m_w, m_w);
+            prolongation.Tvmult_add(parent_b_u, b_u);
+          }
+        CellFunctionals values(parent_m_w.begin(), parent_m_w.end());
+        values.insert(values.end(), parent_b_u.begin(), parent_b_u.end());
+        return Utilities::pack(values, /*allow_compression=*/false);
+      };
     return tria->register_data_attach(pack,
                                       /*returns_variable_size_data=*/true);
   }
 
   template <int dim>
   void
-  ContactProblem<dim>::project_transferred_state(
-    const unsigned int             handle,
-    TrilinosWrappers::MPI::Vector &w,
-    TrilinosWrappers::MPI::Vector &u_next)
+  project_transferred_state(const ProblemState<dim>       &state,
+                            LinearSolver                  &linear_solver,
+                            StepPreconditioner<dim>       &preconditioner,
+                            const unsigned int             handle,
+                            TrilinosWrappers::MPI::Vector &w,
+                            TrilinosWrappers::MPI::Vector &u_next)
   {
+    const Discretization<dim>       &discretization   = state.discretization;
+    const AffineConstraints<double> &base_constraints = state.base_constraints;
     auto *tria = dynamic_cast<parallel::DistributedTriangulationBase<dim> *>(
       discretization.triangulation.get());
     AssertThrow(tria != nullptr, ExcInternalError());
@@ -127,13 +140,14 @@ namespace hemicontact
     // all others those of the interpolated fields, exact there as long as
     // the hanging-node values are not yet distributed (a kept cell next to
     // a coarsened one holds the old values on its now hanging nodes)
-    TrilinosWrappers::MPI::Vector w_ghosted(locally_owned_dofs,
-                                            locally_relevant_dofs,
-                                            mpi_communicator);
+    TrilinosWrappers::MPI::Vector w_ghosted(state.locally_owned_dofs,
+                                            state.locally_relevant_dofs,
+                                            state.mpi_communicator);
     TrilinosWrappers::MPI::Vector u_ghosted(w_ghosted);
     w_ghosted = w;
     u_ghosted = u_next;
-    TrilinosWrappers::MPI::Vector m_w(locally_owned_dofs, mpi_communicator);
+    TrilinosWrappers::MPI::Vector m_w(state.locally_owned_dofs,
+                                      state.mpi_communicator);
     TrilinosWrappers::MPI::Vector b_u(m_w);
 
     const FiniteElement<dim> &fe        = *discretization.fe;
@@ -141,7 +155,7 @@ namespace hemicontact
     FEValues<dim>             fe_values = matrix_fe_values(discretization);
     Vector<double>            m_w_cell(n), b_u_cell(n);
     std::vector<types::global_dof_index> dofs(n);
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &cell : state.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           const auto attached = coarsened.find(cell->id());
@@ -152,8 +166,13 @@ namespace hemicontact
                 b_u_cell[i] = attached->second[n + i];
               }
           else
-            cell_functionals(
-              fe_values, cell, w_ghosted, u_ghosted, m_w_cell, b_u_cell);
+            cell_functionals(state.material,
+                             fe_values,
+                             cell,
+                             w_ghosted,
+                             u_ghosted,
+                             m_w_cell,
+                             b_u_cell);
           cell->get_dof_indices(dofs);
           base_constraints.distribute_local_to_global(m_w_cell, dofs, m_w);
           base_constraints.distribute_local_to_global(b_u_cell, dofs, b_u);
@@ -162,43 +181,28 @@ namespace hemicontact
     b_u.compress(VectorOperation::add);
 
     // the interpolated fields are the initial guesses
-    linear_solver.solve_mass(mass_matrix, w, m_w);
-    linear_solver.solve(elastic_matrix,
-                        preconditioner.amg_of(elastic_matrix),
+    linear_solver.solve_mass(state.mass_matrix, w, m_w);
+    linear_solver.solve(state.elastic_matrix,
+                        preconditioner.amg_of(state.elastic_matrix),
                         u_next,
                         b_u);
     // free the AMG of B: nothing else on this mesh has been built yet
     preconditioner.clear();
   }
 
-  template void
-  ContactProblem<2>::cell_functionals(FEValues<2> &,
-                                      const DoFHandler<2>::cell_iterator &,
-                                      const TrilinosWrappers::MPI::Vector &,
-                                      const TrilinosWrappers::MPI::Vector &,
-                                      Vector<double> &,
-                                      Vector<double> &) const;
-  template void
-  ContactProblem<3>::cell_functionals(FEValues<3> &,
-                                      const DoFHandler<3>::cell_iterator &,
-                                      const TrilinosWrappers::MPI::Vector &,
-                                      const TrilinosWrappers::MPI::Vector &,
-                                      Vector<double> &,
-                                      Vector<double> &) const;
-  template unsigned int
-  ContactProblem<2>::attach_coarsened_functionals(
-    const TrilinosWrappers::MPI::Vector &,
-    const TrilinosWrappers::MPI::Vector &);
-  template unsigned int
-  ContactProblem<3>::attach_coarsened_functionals(
-    const TrilinosWrappers::MPI::Vector &,
-    const TrilinosWrappers::MPI::Vector &);
-  template void
-  ContactProblem<2>::project_transferred_state(const unsigned int,
-                                               TrilinosWrappers::MPI::Vector &,
-                                               TrilinosWrappers::MPI::Vector &);
-  template void
-  ContactProblem<3>::project_transferred_state(const unsigned int,
-                                               TrilinosWrappers::MPI::Vector &,
-                                               TrilinosWrappers::MPI::Vector &);
+#define HEMICONTACT_INSTANTIATE(dim)                                       \
+  template unsigned int attach_coarsened_functionals(                      \
+    const ProblemState<dim> &,                                             \
+    const TrilinosWrappers::MPI::Vector &,                                 \
+    const TrilinosWrappers::MPI::Vector &);                                \
+  template void project_transferred_state(const ProblemState<dim> &,       \
+                                          LinearSolver &,                  \
+                                          StepPreconditioner<dim> &,       \
+                                          const unsigned int,              \
+                                          TrilinosWrappers::MPI::Vector &, \
+                                          TrilinosWrappers::MPI::Vector &);
+
+  HEMICONTACT_INSTANTIATE(2)
+  HEMICONTACT_INSTANTIATE(3)
+#undef HEMICONTACT_INSTANTIATE
 } // namespace hemicontact

@@ -141,7 +141,8 @@ namespace hemicontact
         [&]() { return update_friction_bounds(t, pressure); },
         [&]() {
           if (!initial)
-            recheck_convexity_if_bounds_grew(t);
+            if (const auto context = convexity_recheck(state(), t))
+              check_convexity(*context);
           return solve_step(wall_length);
         },
         parameters.nonlinear_solver,

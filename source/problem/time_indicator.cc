@@ -1,5 +1,5 @@
 #include <hemicontact/model/contact_step.h>
-#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/problem/error_indicators.h>
 
 #include <algorithm>
 #include <cmath>
@@ -8,31 +8,31 @@ namespace hemicontact
 {
   template <int dim>
   double
-  ContactProblem<dim>::time_indicator(
-    const TrilinosWrappers::MPI::Vector &w_before) const
+  time_indicator(const ProblemState<dim>             &state,
+                 const TrilinosWrappers::MPI::Vector &w_before)
   {
     // the change d = w_n - w_{n-1} without its constrained entries (the
     // matrices are condensed), and |||d|||^2 = c_A d.A d + c_B d.B d =
     // d.K d - c_M d.rho M d: A is not held (doc/theory.md 12.4)
-    TrilinosWrappers::MPI::Vector d(velocity);
+    TrilinosWrappers::MPI::Vector d(state.velocity);
     d -= w_before;
-    d = without_constrained(d, base_constraints);
+    d = without_constrained(d, state.base_constraints);
     TrilinosWrappers::MPI::Vector tmp(d);
-    step_matrix.vmult(tmp, d);
+    state.step_matrix.vmult(tmp, d);
     double                       energy = d * tmp;
-    const StepMatrixCoefficients c      = scheme.step_matrix(time_step);
+    const StepMatrixCoefficients c = state.scheme.step_matrix(state.time_step);
     if (c.mass != 0)
       {
-        mass_matrix.vmult(tmp, d);
+        state.mass_matrix.vmult(tmp, d);
         energy -= c.mass * (d * tmp);
       }
     return std::sqrt(std::max(energy, 0.));
   }
 
   template double
-  ContactProblem<2>::time_indicator(
-    const TrilinosWrappers::MPI::Vector &) const;
+  time_indicator(const ProblemState<2> &,
+                 const TrilinosWrappers::MPI::Vector &);
   template double
-  ContactProblem<3>::time_indicator(
-    const TrilinosWrappers::MPI::Vector &) const;
+  time_indicator(const ProblemState<3> &,
+                 const TrilinosWrappers::MPI::Vector &);
 } // namespace hemicontact

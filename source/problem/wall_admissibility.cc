@@ -2,7 +2,7 @@
 
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/model/contact_wall.h>
-#include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/problem/wall_admissibility.h>
 
 #include <cmath>
 #include <sstream>
@@ -11,22 +11,25 @@ namespace hemicontact
 {
   template <int dim>
   void
-  ContactProblem<dim>::require_admissible_initial_state() const
+  require_admissible_initial_state(const ProblemState<dim> &state)
   {
-    const double g = law->penetration_limit();
+    const StepScheme &scheme = state.scheme;
+    const double      g      = state.normal_law.penetration_limit();
     if (!std::isfinite(g) || scheme.is_static())
       return;
     // the displacement of the first step without a solve: u_0 + k w_0 in
     // the left-point rule of the dynamic class (the quasistatic w_0 solves
     // the step problem with the wall)
-    const double k =
-      scheme.has_inertia() ? scheme.held_displacement_offset(time_step) : 0.;
-    std::string error;
-    for (const ContactNode<dim> &node : contact_nodes)
+    const double k = scheme.has_inertia() ?
+                       scheme.held_displacement_offset(state.time_step) :
+                       0.;
+    std::string  error;
+    for (const ContactNode<dim> &node : state.contact_nodes)
       if (node.locally_owned && error.empty())
         {
-          const double u_nu = nodal_vector(node, displacement) * node.normal;
-          const double w_nu = nodal_vector(node, velocity) * node.normal;
+          const double u_nu =
+            nodal_vector(node, state.displacement) * node.normal;
+          const double w_nu = nodal_vector(node, state.velocity) * node.normal;
           // round-off of the nodal values, relative to their own scale
           const double slack =
             1e-12 * std::max(std::abs(g), std::abs(u_nu) + k * std::abs(w_nu));
@@ -56,31 +59,34 @@ namespace hemicontact
           error = message.str();
         }
     for (const std::string &message :
-         Utilities::MPI::all_gather(mpi_communicator, error))
+         Utilities::MPI::all_gather(state.mpi_communicator, error))
       if (!message.empty())
         throw InputError(message);
   }
 
   template <int dim>
   std::pair<unsigned int, double>
-  ContactProblem<dim>::move_state_onto_wall()
+  move_state_onto_wall(const ProblemState<dim>       &state,
+                       TrilinosWrappers::MPI::Vector &displacement)
   {
-    const double g = law->penetration_limit();
-    if (!std::isfinite(g) || scheme.is_static())
+    const double g = state.normal_law.penetration_limit();
+    if (!std::isfinite(g) || state.scheme.is_static())
       return {0, 0.};
-    const double offset = scheme.held_displacement_offset(time_step);
+    const double offset =
+      state.scheme.held_displacement_offset(state.time_step);
     // the worn wall, g + omega (owned nodes only: the owned entries do)
+    const ContactMemory<dim> &contact = state.memory.contact_memory();
     const TrilinosWrappers::MPI::Vector *wear =
-      memory.contact_memory().wear_active() ? &memory.contact_memory().wear() :
-                                              nullptr;
+      contact.wear_active() ? &contact.wear() : nullptr;
     unsigned int n_moved = 0;
     double       largest = 0;
-    for (const ContactNode<dim> &node : contact_nodes)
-      if (node.locally_owned && !base_constraints.is_constrained(node.dofs[0]))
+    for (const ContactNode<dim> &node : state.contact_nodes)
+      if (node.locally_owned &&
+          !state.base_constraints.is_constrained(node.dofs[0]))
         {
           const double excess =
             nodal_vector(node, displacement) * node.normal +
-            offset * nodal_vector(node, velocity) * node.normal -
+            offset * nodal_vector(node, state.velocity) * node.normal -
             wall_position(g, node, wear);
           if (excess > 0)
             {
@@ -94,17 +100,17 @@ namespace hemicontact
             }
         }
     displacement.compress(VectorOperation::insert);
-    base_constraints.distribute(displacement);
-    return {Utilities::MPI::sum(n_moved, mpi_communicator),
-            Utilities::MPI::max(largest, mpi_communicator)};
+    state.base_constraints.distribute(displacement);
+    return {Utilities::MPI::sum(n_moved, state.mpi_communicator),
+            Utilities::MPI::max(largest, state.mpi_communicator)};
   }
 
-  template void
-  ContactProblem<2>::require_admissible_initial_state() const;
-  template void
-  ContactProblem<3>::require_admissible_initial_state() const;
-  template std::pair<unsigned int, double>
-  ContactProblem<2>::move_state_onto_wall();
-  template std::pair<unsigned int, double>
-  ContactProblem<3>::move_state_onto_wall();
+#define HEMICONTACT_INSTANTIATE(dim)                                         \
+  template void require_admissible_initial_state(const ProblemState<dim> &); \
+  template std::pair<unsigned int, double> move_state_onto_wall(             \
+    const ProblemState<dim> &, TrilinosWrappers::MPI::Vector &);
+
+  HEMICONTACT_INSTANTIATE(2)
+  HEMICONTACT_INSTANTIATE(3)
+#undef HEMICONTACT_INSTANTIATE
 } // namespace hemicontact

@@ -85,7 +85,7 @@ namespace hemicontact
   Simulation<dim>::adapt_mesh_if_due(StepStatistics &stats,
                                      RunOutput<dim> &output)
   {
-    if (!problem.adaptation_due())
+    if (!adaptation_due(problem.state()))
       return;
     output.finish_solution_output(); // its job reads the mesh
     problem.adapt_mesh(stats);

@@ -417,7 +417,7 @@ namespace hemicontact
                 problem, *reference, s.time, relevant, comm) :
               step_errors(problem, exact, s.time, relevant, *cache, comm),
             problem.state().time_step);
-          if (problem.adaptation_due())
+          if (adaptation_due(problem.state()))
             {
               problem.adapt_mesh(s);
               DoFTools::extract_locally_relevant_dofs(

@@ -22,6 +22,7 @@
 #include <hemicontact/model/problem_data.h>
 #include <hemicontact/model/step_scheme.h>
 #include <hemicontact/problem/error_estimator.h>
+#include <hemicontact/problem/problem_state.h>
 #include <hemicontact/solver/linear_solver.h>
 #include <hemicontact/solver/step_preconditioner.h>
 #include <hemicontact/solver/step_statistics.h>
@@ -75,14 +76,14 @@ namespace hemicontact
    * from a StateSource), state_fields.cc (the list of the state's fields),
    * assembly.cc (matrices and loads), step.cc (one step, by
    * ActiveSetNewton on a ContactStep), diagnostics.cc (energies,
-   * convexity), stability.cc and memory_stability_check.cc (the time-step
-   * limits of the left-point rule and of the memory rule),
-   * wall_admissibility.cc (the initial state and the transferred state
-   * against the wall), adaptivity.cc (indicators, the new mesh),
-   * residual_indicator.cc (estimate_error() and the residual indicator),
-   * time_indicator.cc (the time part of the estimate), state_projection.cc
-   * (the state moved by projection) and run.cc (advance() and its
-   * interval with the halvings).
+   * convexity), adaptivity.cc (the new mesh), residual_indicator.cc (the
+   * error estimate) and run.cc (advance() and its interval with the
+   * halvings). What reads the state and not the members is a free function
+   * of a ProblemState (problem_state.h): the time-step limits
+   * (stability.h), the wall checks (wall_admissibility.h), the indicators
+   * (error_indicators.h), the projection of a transferred state
+   * (state_projection.h), the contact nodes (contact_node_setup.h), the
+   * cell matrices (cell_matrices.h).
    */
   template <int dim>
   class ContactProblem
@@ -140,18 +141,6 @@ namespace hemicontact
     adapt_mesh(StepStatistics &stats);
 
     /**
-     * Whether adapt_mesh() is due after the step just taken: every
-     * 'adaptivity/interval' steps (never if 0), and not after the last
-     * step.
-     */
-    bool
-    adaptation_due() const
-    {
-      const unsigned int every = parameters.adaptivity.interval;
-      return every != 0 && step_number % every == 0 && !finished();
-    }
-
-    /**
      * Solve the step just taken again (the static class's load value on a
      * new mesh, from the transferred solution).
      */
@@ -176,18 +165,6 @@ namespace hemicontact
       return timer;
     }
 
-    /** The cell-wise refinement indicator of the current state. */
-    Vector<float>
-    refinement_indicators() const;
-
-    /**
-     * The residual indicator of the step just solved (residual_indicator.cc):
-     * the terms of estimate_error() unscaled, the contact term weighted by
-     * 'adaptivity/contact weight'^2.
-     */
-    Vector<float>
-    residual_indicators() const;
-
     /**
      * The residual error estimate of the current state (doc/theory.md
      * section 12, ErrorEstimator), computed once per state: every
@@ -195,15 +172,6 @@ namespace hemicontact
      */
     const ErrorEstimate &
     error_estimate() const;
-
-    /**
-     * The time indicator of the velocity classes (doc/theory.md 12.4):
-     * |||w_n - @p w_before||| in the energy norm of the step, |||v|||^2 =
-     * v.K v - c_M v.rho M v, from the step matrix K and the mass matrix
-     * (time_indicator.cc).
-     */
-    double
-    time_indicator(const TrilinosWrappers::MPI::Vector &w_before) const;
 
     /**
      * The estimate advance() evaluated with 'output/error estimate' for the
@@ -253,73 +221,7 @@ namespace hemicontact
 
     /** @name Read access to the state (after setup()): state(). */
     /** @{ */
-    /** The last check of the convexity of the step energy (diagnostics.cc). */
-    struct ConvexityCheck
-    {
-      /**
-       * Estimated smallest eigenvalue of K0 against sum m_i nu nu (0 if not
-       * computed); with a friction law that has alpha_tau > 0, against
-       * sum m_i (alpha_nu nu nu + alpha_tau (I - nu nu)), so that each step
-       * is strongly convex iff it exceeds 1.
-       */
-      double bound = 0;
-      /** Whether the bound includes the friction law's alpha_tau. */
-      bool with_friction = false;
-      /** The largest alpha_tau over the contact nodes at the check. */
-      double largest_alpha_tau = 0;
-      /** alpha_tau of each contact node that the check covers. */
-      std::vector<double> checked_alpha_tau;
-      /** Whether the check found the steps strongly convex. */
-      bool steps_convex = true;
-    };
-
-    /**
-     * A read-only view of the discretization and the state, for the run's
-     * output, its checkpoints and tests.
-     */
-    struct State
-    {
-      const Parameters                     &parameters;
-      MPI_Comm                              mpi_communicator;
-      const Discretization<dim>            &discretization;
-      const DoFHandler<dim>                &dof_handler;
-      const IndexSet                       &locally_owned_dofs;
-      const IndexSet                       &locally_relevant_dofs;
-      const KelvinVoigtMaterial<dim>       &material;
-      const NormalLaw                      &normal_law;
-      const FrictionLaw                    &friction_law;
-      const TrilinosWrappers::SparseMatrix &step_matrix; ///< K0 = rho/k M + A
-      const TrilinosWrappers::SparseMatrix &mass_matrix; ///< rho M
-      const TrilinosWrappers::SparseMatrix &elastic_matrix; ///< B
-      /** Hanging nodes and u = 0 on Gamma_1. */
-      const AffineConstraints<double>     &base_constraints;
-      const TrilinosWrappers::MPI::Vector &velocity;     ///< w_n
-      const TrilinosWrappers::MPI::Vector &old_velocity; ///< w_{n-1}
-      const TrilinosWrappers::MPI::Vector &displacement; ///< u_n
-      /** b = rho/k M w_{n-1} - B u_n + F_n of the last step. */
-      const TrilinosWrappers::MPI::Vector &step_rhs;
-      /** Nodal traction -(K w - b)_i / m_i at owned contact node dofs. */
-      const TrilinosWrappers::MPI::Vector &contact_traction;
-      const std::vector<ContactNode<dim>> &contact_nodes;
-      const StepPreconditioner<dim>       &preconditioner;
-      const EnergyBalance                 &energy;
-      const ConvexityCheck                &convexity;
-      /** The problem class and time scheme of the run. */
-      const StepScheme &scheme;
-      double            time; ///< t_n = n k
-      double            time_step;
-      /** Length of the last converged step (0: none yet). */
-      double       last_step_length;
-      unsigned int step_number;
-      unsigned int n_steps;
-      /** The history of the memory term of the stress. */
-      const MemoryHistory<dim> &memory;
-      /**
-       * Whether the time step is above the memory rule's stability limit
-       * (allowed by 'time/allow unstable time step').
-       */
-      bool memory_rule_unstable;
-    };
+    using State = ProblemState<dim>;
 
     State
     state() const
@@ -359,28 +261,21 @@ namespace hemicontact
 
   private:
     /** @name setup.cc */
-    /** Dofs, constraints, constant matrices, contact nodes, AMG modes. */
+    /**
+     * Dofs, constraints (hanging nodes, u = 0 on Gamma_1), constant
+     * matrices, contact nodes (collect_contact_nodes()) with their friction
+     * bounds, AMG modes, the memory's vectors.
+     */
     void
     setup_on_current_mesh();
-    void
-    setup_dofs();
-    void
-    setup_base_constraints();
-    void
-    setup_contact_nodes();
     /**
      * u_0 and w_0 from the data; where the class asks for it, w_0 as the
      * step problem at t_0 with the data u_0 (K = A, b = F_0 - B u_0,
-     * doc/theory.md 9.2).
+     * doc/theory.md 9.2); in the static class with memory, u_0 as the
+     * solution of load value 0, the memory sum's first state (section 11).
      */
     void
     initialize_state();
-    /**
-     * The static class with memory: u_0 = the solution of load value 0,
-     * the first state of the memory sum (doc/theory.md, section 11).
-     */
-    void
-    solve_static_initial_state();
     /**
      * F_b at every contact node from 'data/friction bound' at time @p t,
      * u_nu from the displacement held (static class: from the step's
@@ -401,16 +296,6 @@ namespace hemicontact
      */
     void
     assemble_constant_matrices(const StepMatrixCoefficients &c);
-    /**
-     * The cell matrices of rho M, A and B at @p fe_values (reinit on the
-     * cell; values, gradients and JxW), as assemble_constant_matrices()
-     * adds them up.
-     */
-    void
-    cell_matrices(const FEValues<dim> &fe_values,
-                  FullMatrix<double>  &mass,
-                  FullMatrix<double>  &viscous,
-                  FullMatrix<double>  &elastic) const;
     void
     assemble_load(const double time);
     void
@@ -440,9 +325,6 @@ namespace hemicontact
     /** @name diagnostics.cc */
     void
     update_energy_balance(const bool initial);
-    /** Kinetic rho/2|w_n|^2 and elastic 1/2 a_B(u_{n+1},u_{n+1}) energy now. */
-    std::pair<double, double>
-    stored_energy() const;
     /**
      * Estimate the convexity bound of the step energy for the current
      * friction bounds and warn (or stop, with 'strict convexity check') if
@@ -452,98 +334,6 @@ namespace hemicontact
      */
     void
     check_convexity(const std::string &context = "");
-    /**
-     * check_convexity() again, for time @p t, if a node's alpha_tau exceeds
-     * the value last checked or the contact nodes changed (a new mesh).
-     */
-    void
-    recheck_convexity_if_bounds_grew(const double t);
-
-    /** @name residual_indicator.cc */
-    /** The residual error estimate of the current state, computed. */
-    ErrorEstimate
-    estimate_error() const;
-
-    /** @name wall_admissibility.cc (doc/theory.md 10.2) */
-    /**
-     * Refuse (InputError) initial data that start beyond the law's wall:
-     * u_0 with u_nu > g at a contact node, or in the left-point rule an
-     * initial velocity that carries a node beyond it in the first step,
-     * u_0 + k w_0. Nothing to check without a wall or in the static class.
-     */
-    void
-    require_admissible_initial_state() const;
-    /**
-     * After a mesh transfer: move the displacement the next step holds,
-     * u + StepScheme::held_displacement_offset(k) w, back onto the wall
-     * (wall_position(): g + the wear depth) at every (unconstrained) contact
-     * node beyond it, along the normal.
-     * Returns the number of nodes moved and the largest distance, summed and
-     * maximised over the ranks.
-     */
-    std::pair<unsigned int, double>
-    move_state_onto_wall();
-
-    /** @name stability.cc */
-    /**
-     * Refuse (InputError) a time step above the stability limit of the
-     * left-point rule on the current mesh, unless 'time/allow unstable time
-     * step' is set (then a warning).
-     */
-    void
-    check_time_step_stability();
-    /**
-     * Refuse (InputError) a time step above the stability limit of the
-     * explicit memory rule (memory_stability_check.cc, doc/theory.md
-     * 11.13) for the stress's and the normal response's kernels, unless
-     * 'time/allow unstable time step' is set (then a warning); warn when a
-     * stress kernel's long-term modulus is negative (the model grows).
-     */
-    void
-    check_memory_stability();
-    /**
-     * The largest stable time step on the current mesh, estimated from the
-     * largest eigenvalue of B against A + 2M/k, or infinity if @p k is
-     * stable.
-     */
-    double
-    largest_stable_time_step(const double k);
-
-    /** @name state_projection.cc */
-    /**
-     * The local vectors rho M_K w and B_K u_next of @p cell (reinits
-     * @p fe_values there), from cell_matrices().
-     */
-    void
-    cell_functionals(FEValues<dim>                                 &fe_values,
-                     const typename DoFHandler<dim>::cell_iterator &cell,
-                     const TrilinosWrappers::MPI::Vector           &w,
-                     const TrilinosWrappers::MPI::Vector           &u_next,
-                     Vector<double>                                &m_w,
-                     Vector<double>                                &b_u) const;
-    /**
-     * For 'adaptivity/state transfer = projection': register with the
-     * mesh, before execute_coarsening_and_refinement(), the functionals
-     * rho M w and B u_next (tested with the parent's shape functions) of
-     * every family of cells about to be coarsened. @p w and @p u_next are
-     * ghosted and must live until project_transferred_state().
-     */
-    unsigned int
-    attach_coarsened_functionals(const TrilinosWrappers::MPI::Vector &w,
-                                 const TrilinosWrappers::MPI::Vector &u_next);
-    /**
-     * After the new mesh is set up and @p w, @p u_next are interpolated onto
-     * it (hanging-node values not yet distributed): replace them by the
-     * M-projection of the old w and the a_B-projection of the old u_next, so
-     * that rho M w and B u_next are the same functionals on the new mesh as
-     * on the old (exact where cells were refined or kept, from the attached
-     * integrals where coarsened). The caller distributes the constraints.
-     */
-    void
-    project_transferred_state(const unsigned int             handle,
-                              TrilinosWrappers::MPI::Vector &w,
-                              TrilinosWrappers::MPI::Vector &u_next);
-
     /** @name state_fields.cc */
     /**
      * The one list of the state's fields, with @p history the vectors of
@@ -551,11 +341,6 @@ namespace hemicontact
      */
     std::vector<StateField<dim>>
     state_fields(const std::vector<TrilinosWrappers::MPI::Vector *> &history);
-    /** The branches of @p nodes from a field of the list ("branches"). */
-    void
-    branches_from_field(const TrilinosWrappers::MPI::Vector &field,
-                        std::vector<ContactNode<dim>>       &nodes) const;
-
     /** @name run.cc */
     /**
      * One interval [start, start + k]: a step of size k, or if Newton

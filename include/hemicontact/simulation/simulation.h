@@ -38,7 +38,7 @@ namespace hemicontact
 
     /**
      * Adapt the mesh if it is due after the step just taken
-     * (ContactProblem::adaptation_due()); the solution write in progress
+     * (adaptation_due()); the solution write in progress
      * finishes first and the probes follow the new mesh.
      */
     void
