@@ -22,7 +22,7 @@ set(_dir ${WORKDIR}/${_name})
 file(REMOVE_RECURSE ${_dir})
 file(MAKE_DIRECTORY ${_dir})
 file(WRITE ${_dir}/run.prm "${_text}")
-if(_text MATCHES "set enabled *= *true")
+if(_text MATCHES "subsection manufactured solution[ \t\r\n]+set enabled *= *true")
   # a manufactured-solution study: one level, one step, convergence.csv
   file(APPEND ${_dir}/run.prm "subsection convergence study\n  set type = single\nend\n")
   execute_process(COMMAND ${EXE} run.prm WORKING_DIRECTORY ${_dir}

@@ -145,7 +145,9 @@ namespace hemicontact
     prm.declare_entry("clamped boundary ids",
                       "0",
                       Patterns::List(Patterns::Integer(0, 255)),
-                      "Boundary ids of Gamma_1 (u = 0). Must not be empty.");
+                      "Boundary ids of Gamma_1 (u = 0). Empty only in the "
+                      "dynamic class (a free body: the mass term makes each "
+                      "step coercive).");
     prm.declare_entry("traction boundary ids",
                       "1, 3",
                       Patterns::List(Patterns::Integer(0, 255)),
@@ -166,9 +168,6 @@ namespace hemicontact
     traction_ids = get_id_list(prm, "traction boundary ids");
     contact_ids  = get_id_list(prm, "contact boundary ids");
     prm.leave_subsection();
-    require(!clamped_ids.empty(),
-            "boundary: 'clamped boundary ids' is empty; the clamped part "
-            "Gamma_1 must have positive measure (Korn's inequality).");
     require(!contact_ids.empty(),
             "boundary: 'contact boundary ids' is empty; the contact part "
             "Gamma_3 must have positive measure.");
@@ -613,6 +612,7 @@ namespace hemicontact
     RelaxationParameters::declare(prm);
     NormalMemoryParameters::declare(prm);
     WearParameters::declare(prm);
+    TemperatureParameters::declare(prm);
     NonlinearSolverParameters::declare(prm);
     LinearSolverParameters::declare(prm);
     OutputParameters::declare(prm);
@@ -635,6 +635,7 @@ namespace hemicontact
     relaxation.parse(prm);
     normal_memory.parse(prm);
     wear.parse(prm, dimension);
+    temperature.parse(prm, dimension);
     nonlinear_solver.parse(prm);
     linear_solver.parse(prm);
     output.parse(prm);

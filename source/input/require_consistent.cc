@@ -63,6 +63,45 @@ namespace hemicontact
                 "value solved again on a new mesh would add its state "
                 "to the history twice (doc/theory.md, section 11.8).");
     }
+    /**
+     * What 'temperature' works with (doc/theory.md, section 13): theta as
+     * data in the static class only, no manufactured solution, no error
+     * estimate.
+     */
+    void
+    require_temperature_usable(const Parameters &parameters)
+    {
+      const TemperatureParameters &temperature = parameters.temperature;
+      if (!temperature.enabled)
+        return;
+      const bool is_static =
+        parameters.problem.problem_class == ProblemClass::static_;
+      require(!is_static || !temperature.given_temperature.empty(),
+              "temperature: the static class takes theta as data (a "
+              "thermal load, no heat equation): set 'temperature/given "
+              "temperature' to theta(x, y[, z], t).");
+      require(is_static || temperature.given_temperature.empty(),
+              "temperature: 'given temperature' is the static class's "
+              "theta; the dynamic and the quasistatic class solve the heat "
+              "equation from 'initial temperature'. Leave 'given "
+              "temperature' empty.");
+      require(!parameters.manufactured.enabled,
+              "temperature: 'temperature/enabled = true' does not work with "
+              "'manufactured solution/enabled = true': the derived data "
+              "have no temperature (the manufactured (u, theta) studies are "
+              "programs of their own, doc/verification.md).");
+      require(!parameters.output.error_estimate,
+              "temperature: 'temperature/enabled = true' does not work with "
+              "'output/error estimate = true': the estimate (doc/theory.md, "
+              "section 12) has no heat term and no thermal stress. Set "
+              "'output/error estimate = false'.");
+      for (const unsigned int id : temperature.flux_ids)
+        require(parameters.boundary.part(id) != BoundaryPart::contact,
+                "temperature: boundary id " + std::to_string(id) +
+                  " is in 'heat flux boundary ids' and in 'contact "
+                  "boundary ids'; on Gamma_3 the contact heat law holds "
+                  "('exchange coefficient', 'frictional heat fraction').");
+    }
   } // namespace
 
   void
@@ -77,6 +116,13 @@ namespace hemicontact
     // what the problem class uses of the material (doc/theory.md 9.2)
     const MaterialParameters &material      = parameters.material;
     const ProblemClass        problem_class = parameters.problem.problem_class;
+    require(!parameters.boundary.clamped_ids.empty() ||
+              problem_class == ProblemClass::dynamic,
+            "boundary: 'clamped boundary ids' is empty; the quasistatic and "
+            "the static class need a clamped part Gamma_1 of positive "
+            "measure (Korn's inequality: without it their step operator "
+            "vanishes on rigid motions). The dynamic class allows a free "
+            "body, its mass term makes every step coercive.");
     if (problem_class == ProblemClass::dynamic)
       require(material.density > 0,
               "material: 'density' = " + std::to_string(material.density) +
@@ -249,5 +295,6 @@ namespace hemicontact
         NormalMemoryKernel(parameters.normal_memory, parameters.data.constants)
           .require_finite(parameters.time.end_time / n_steps, n_steps);
       }
+    require_temperature_usable(parameters);
   }
 } // namespace hemicontact

@@ -118,11 +118,22 @@ namespace hemicontact
       extra.push_back("s_tau");
     if (wear)
       extra.push_back("wear");
+    // with temperature (13.2): theta, the heat exchanged into the body
+    // k_e (theta_F - theta) and the frictional heat gamma |sigma_tau . w_tau|
+    std::vector<NodeHeat> heat;
+    if (s.heat)
+      {
+        heat = s.heat->contact_heat(
+          s.time, s, s.added_fields.vector(HeatModel<dim>::field_name));
+        for (const char *name :
+             {"temperature", "exchanged_heat", "frictional_heat"})
+          extra.push_back(name);
+      }
     const unsigned int width =
       dim + dim + 1 + 2 + dim + 2 + dim + 3 + 2 + 1 + extra.size();
     std::vector<double> rows;
-    for (const ContactNode<dim> &node : s.contact_nodes)
-      if (node.locally_owned)
+    for (unsigned int i = 0; i < s.contact_nodes.size(); ++i)
+      if (const ContactNode<dim> &node = s.contact_nodes[i]; node.locally_owned)
         {
           Tensor<1, dim> w, traction;
           for (unsigned int c = 0; c < dim; ++c)
@@ -173,6 +184,12 @@ namespace hemicontact
             rows.push_back(s.memory.contact_memory().slip()[node.dofs[0]]);
           if (wear)
             rows.push_back(s.memory.contact_memory().wear()[node.dofs[0]]);
+          if (s.heat)
+            {
+              rows.push_back(heat[i].temperature);
+              rows.push_back(heat[i].exchanged());
+              rows.push_back(heat[i].frictional_power);
+            }
         }
 
     const std::vector<std::vector<double>> gathered =

@@ -390,6 +390,8 @@ namespace hemicontact
         if (has_holds)
           line << ", at breakpoint/wall " << s.n_at_breakpoint << "/"
                << s.n_at_wall;
+        if (state.heat)
+          line << ", heat content " << state.heat->balance().heat_content;
         if (s.adapted)
           line << "\n  adapted: "
                << state.discretization.triangulation->n_global_active_cells()
@@ -430,6 +432,8 @@ namespace hemicontact
         if (has_holds)
           line << "  breakpoint/wall " << s.n_at_breakpoint << "/"
                << s.n_at_wall;
+        if (state.heat)
+          line << "  heat " << state.heat->balance().heat_content;
       }
     if (parameters.output.terminal != TerminalOutput::quiet)
       pcout << line.str() << std::endl;

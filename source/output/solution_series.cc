@@ -10,6 +10,7 @@
 #include <hemicontact/problem/error_indicators.h>
 
 #include <cerrno>
+#include <list>
 #include <sstream>
 
 namespace hemicontact
@@ -60,6 +61,39 @@ namespace hemicontact
           }
       return result;
     }
+
+    /**
+     * The scalar nodal field @p f (on a space of its own) on w and u's
+     * space of @p state: its value at each vertex in the vertex's first
+     * component, 0 in the others.
+     */
+    template <int dim>
+    TrilinosWrappers::MPI::Vector
+    first_component_at_nodes(const StateField<dim>   &f,
+                             const ProblemState<dim> &state)
+    {
+      TrilinosWrappers::MPI::Vector field(*f.space->owned,
+                                          *f.space->relevant,
+                                          state.mpi_communicator);
+      field = *f.vector;
+      TrilinosWrappers::MPI::Vector result(state.locally_owned_dofs,
+                                           state.mpi_communicator);
+      for (const auto &cell : state.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const typename DoFHandler<dim>::active_cell_iterator other(
+              &cell->get_triangulation(),
+              cell->level(),
+              cell->index(),
+              f.space->dof_handler);
+            for (const unsigned int v : cell->vertex_indices())
+              if (const auto i = cell->vertex_dof_index(v, 0);
+                  state.locally_owned_dofs.is_element(i))
+                result[i] = field[other->vertex_dof_index(v, 0)];
+          }
+      result.compress(VectorOperation::insert);
+      return result;
+    }
   } // namespace
 
   template <int dim>
@@ -78,9 +112,17 @@ namespace hemicontact
         // (state_fields.cc), then the memory's nodal values
         const std::vector<StateField<dim>> state_fields = problem.fields();
         std::vector<typename NodalHdf5Writer<dim>::Field> fields;
+        // the scalar nodal fields of other spaces (the temperature), their
+        // value at each node in its first component
+        std::list<TrilinosWrappers::MPI::Vector> on_nodes;
         for (const StateField<dim> &f : state_fields)
           if (f.written && f.space->dof_handler == &state.dof_handler)
             fields.push_back({f.name, f.vector});
+          else if (f.written && f.layout == FieldLayout::scalar_nodal)
+            {
+              on_nodes.push_back(first_component_at_nodes(f, state));
+              fields.push_back({f.name, &on_nodes.back()});
+            }
         // N_i nu_i, the memory's part of the traction (doc/theory.md 11.9)
         if (state.memory.contact_memory().normal_active())
           fields.push_back(
@@ -209,6 +251,12 @@ namespace hemicontact
                                      xyz[j],
                                    memory_stress[c++]);
       }
+    // the thermal part -c_e theta of the stress and the heat flux
+    // (doc/theory.md, section 13)
+    if (state.heat)
+      for (auto &field : state.heat->cell_output(
+             state.added_fields.vector(HeatModel<dim>::field_name)))
+        cell_data.push_back(std::move(field));
     // eta_K of the step written; 0 before the first step
     if (parameters.output.error_estimate)
       {

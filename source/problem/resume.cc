@@ -56,6 +56,8 @@ namespace hemicontact
     memory_rule_unstable =
       check_time_step_limits(state(), preconditioner, timer);
     check_convexity();
+    if (heat)
+      heat->start(added_fields.vector(HeatModel<dim>::field_name));
 
     // the preconditioner as the interrupted run left it (after the checks
     // above, which build AMGs of their own, as at the run's start)

@@ -129,6 +129,16 @@ namespace hemicontact
         scheme.displacement_after_step(displacement, velocity, k);
         if (memory.active())
           memory.commit_step(&velocity, &contact_traction);
+        // the heat step of the staggered scheme (doc/theory.md 13.2)
+        if (heat && !scheme.is_static())
+          {
+            TimerOutput::Scope t(timer, "heat step");
+            heat->heat_step(start + k,
+                            k,
+                            state(),
+                            linear_solver,
+                            added_fields.vector(HeatModel<dim>::field_name));
+          }
         update_energy_balance(/*initial=*/false);
         last_step_length = k;
         return stats;

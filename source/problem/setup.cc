@@ -68,6 +68,15 @@ namespace hemicontact
       memory.measure_slip(scheme.is_static());
     // the wear of the foundation (section 11.12)
     memory.set_static_class(scheme.is_static());
+    // the temperature, one more field of the state (section 13)
+    if (parameters.temperature.enabled)
+      {
+        heat = std::make_unique<HeatModel<dim>>(parameters.temperature,
+                                                parameters.data.constants,
+                                                scheme.is_static(),
+                                                comm);
+        add_field(heat->field(discretization.is_simplex()));
+      }
   }
 
   template <int dim>
@@ -146,6 +155,8 @@ namespace hemicontact
     require(Utilities::MPI::sum(n_owned, mpi_communicator) > 0,
             "boundary: the contact boundary Gamma_3 has no free node (every "
             "node is clamped); check 'contact boundary ids'.");
+    if (heat)
+      heat->reinit(added_fields.space(HeatModel<dim>::field_name), state());
     preconditioner.reinit(dof_handler, *discretization.mapping);
     memory.reinit(dof_handler,
                   *discretization.mapping,
@@ -344,6 +355,8 @@ namespace hemicontact
       }
     energy = EnergyBalance();
     update_energy_balance(/*initial=*/true);
+    if (heat)
+      heat->start(added_fields.vector(HeatModel<dim>::field_name));
   }
 
 #define HEMICONTACT_INSTANTIATE(dim)                               \

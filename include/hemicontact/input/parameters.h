@@ -260,6 +260,53 @@ namespace hemicontact
     parse(ParameterHandler &prm, const unsigned int dimension);
   };
 
+  /**
+   * The subsection 'temperature' (doc/theory.md, section 13): the
+   * temperature theta of the body, sigma = A eps(w) + B eps(u) - c_e theta I,
+   * its heat equation c_theta dtheta/dt - div(K grad theta) = -c_e div w + q
+   * with its boundary conditions and the contact heat law on Gamma_3; in
+   * the static class theta is data.
+   */
+  struct TemperatureParameters
+  {
+    bool enabled = false;
+    /** c_theta(x) > 0, an expression in x, y[, z]. */
+    std::string heat_capacity;
+    /** c_e(x) >= 0, an expression in x, y[, z]. */
+    std::string thermal_stress_coefficient;
+    /**
+     * K: one expression in x, y[, z] (isotropic, K(x) > 0), or dim x dim
+     * numbers by rows (symmetric positive definite).
+     */
+    std::vector<std::string>  conductivity;
+    std::string               initial_temperature;    ///< theta_0(x)
+    std::string               heat_source;            ///< q(x, t)
+    std::vector<unsigned int> prescribed_ids;         ///< theta = theta_D there
+    std::string               prescribed_temperature; ///< theta_D(x, t)
+    std::vector<unsigned int> flux_ids;               ///< K d_nu theta = q_N
+    std::string               heat_flux;              ///< q_N(x, t)
+    /** k_e(x, t, u_nu) >= 0 on Gamma_3. */
+    std::string exchange_coefficient;
+    std::string foundation_temperature; ///< theta_F(x, t)
+    /** gamma in [0, 1]: the fraction of the frictional power that enters. */
+    double frictional_heat_fraction = 0;
+    /** The static class: theta(x, t) as data. */
+    std::string given_temperature;
+
+    /** Whether K is a tensor of numbers (else one expression). */
+    bool
+    anisotropic() const
+    {
+      return conductivity.size() > 1;
+    }
+
+    static void
+    declare(ParameterHandler &prm);
+    /** The entries, checked for a @p dimension x dimension tensor K. */
+    void
+    parse(ParameterHandler &prm, const unsigned int dimension);
+  };
+
   /** Where Newton starts in a step. */
   enum class InitialGuess
   {
@@ -491,6 +538,7 @@ namespace hemicontact
     RelaxationParameters      relaxation;
     NormalMemoryParameters    normal_memory;
     WearParameters            wear;
+    TemperatureParameters     temperature;
     NonlinearSolverParameters nonlinear_solver;
     LinearSolverParameters    linear_solver;
     /** Set from C++ only (tests, benchmarks): see SolverTuning. */

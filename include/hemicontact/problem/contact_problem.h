@@ -29,6 +29,7 @@
 #include <hemicontact/state/added_fields.h>
 #include <hemicontact/state/state_field.h>
 #include <hemicontact/state/state_source.h>
+#include <hemicontact/thermal/heat_model.h>
 
 #include <memory>
 #include <string>
@@ -255,7 +256,9 @@ namespace hemicontact
               step_number,
               n_steps,
               memory,
-              memory_rule_unstable};
+              memory_rule_unstable,
+              heat.get(),
+              added_fields};
     }
     /** @} */
 
@@ -376,6 +379,12 @@ namespace hemicontact
      * check_memory_stability().
      */
     bool memory_rule_unstable = false;
+    /**
+     * The temperature (doc/theory.md, section 13): the field
+     * "temperature" of the state, its load and its heat step; nullptr
+     * without 'temperature/enabled'.
+     */
+    std::unique_ptr<HeatModel<dim>> heat;
 
     Discretization<dim> discretization;
     DoFHandler<dim>     dof_handler;

@@ -16,6 +16,7 @@
 #include <hemicontact/model/kelvin_voigt.h>
 #include <hemicontact/model/step_scheme.h>
 #include <hemicontact/solver/step_preconditioner.h>
+#include <hemicontact/state/added_fields.h>
 
 #include <optional>
 #include <string>
@@ -25,6 +26,9 @@
 namespace hemicontact
 {
   using namespace dealii;
+
+  template <int dim>
+  class HeatModel;
 
   /** The last check of the convexity of the step energy (diagnostics.cc). */
   struct ConvexityCheck
@@ -93,6 +97,10 @@ namespace hemicontact
      * (allowed by 'time/allow unstable time step').
      */
     bool memory_rule_unstable;
+    /** The temperature's model, or nullptr (no 'temperature'). */
+    const HeatModel<dim> *heat;
+    /** The fields added to the state (the temperature among them). */
+    const AddedFields<dim> &added_fields;
   };
 
   /**

@@ -1,0 +1,182 @@
+#pragma once
+
+#include <deal.II/base/function.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <hemicontact/expressions/expression.h>
+#include <hemicontact/input/parameters.h>
+#include <hemicontact/problem/problem_state.h>
+#include <hemicontact/solver/linear_solver.h>
+#include <hemicontact/state/added_fields.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hemicontact
+{
+  /** The heat booked over a run (doc/theory.md, section 13.4). */
+  struct HeatBalance
+  {
+    /** sum_n k sum_i m_i gamma |sigma_tau . w_tau|: frictional heat in. */
+    double frictional_heat = 0;
+    /** sum_n k sum_i m_i k_e (theta_F - theta_n): heat exchanged in. */
+    double exchanged_heat = 0;
+    /** int c_theta theta_n of the last heat step and of theta_0. */
+    double heat_content         = 0;
+    double initial_heat_content = 0;
+    /** CG iterations of the last heat step. */
+    unsigned int linear_iterations = 0;
+  };
+
+  /**
+   * The terms of the contact heat law at one contact node (doc/theory.md,
+   * section 13.2): -K d_nu theta = k_e (theta - theta_F) - gamma |sigma_tau
+   * . w_tau|.
+   */
+  struct NodeHeat
+  {
+    double temperature            = 0; ///< theta_i
+    double exchange_coefficient   = 0; ///< k_e(x_i, t, u_nu,i)
+    double foundation_temperature = 0; ///< theta_F(x_i, t)
+    double frictional_power       = 0; ///< gamma |sigma_tau . w_tau|_i
+
+    /** k_e (theta_F - theta): the heat exchanged into the body per area. */
+    double
+    exchanged() const
+    {
+      return exchange_coefficient * (foundation_temperature - temperature);
+    }
+  };
+
+  /**
+   * The temperature theta of the body (doc/theory.md, section 13): its
+   * field of the state, the thermal stress load (c_e theta, div v) of the
+   * mechanical step and the heat step of the staggered scheme,
+   *
+   *   (c_theta (theta_n - theta_{n-1})/k, eta) + (K grad theta_n, grad eta)
+   *     + sum_i m_i k_e theta_n,i eta_i
+   *   = -(c_e div w_n, eta) + (q, eta) + (q_N, eta)_{Gamma_N}
+   *     + sum_i m_i [k_e theta_F + gamma |sigma_tau . w_tau|]_i eta_i,
+   *
+   * assembled with its constraints (hanging nodes, theta_D) and solved by
+   * CG with AMG. In the static class theta is the data 'given temperature'.
+   */
+  template <int dim>
+  class HeatModel
+  {
+  public:
+    /** The data of @p parameters with the user @p constants. */
+    HeatModel(const TemperatureParameters &parameters,
+              const std::string           &constants,
+              const bool                   static_class,
+              MPI_Comm                     comm);
+
+    /** The name of theta in the state's list of fields. */
+    static constexpr const char *field_name = "temperature";
+
+    /**
+     * The field theta of the state: P1/Q1 (@p simplex: FE_SimplexP(1)),
+     * theta_0 (or the given theta at t = 0), saved, transferred, written.
+     */
+    FieldDefinition<dim>
+    field(const bool simplex) const;
+
+    /**
+     * On a new mesh: theta's space @p theta_space, its sparsity and the
+     * theta dof of each contact node of @p state.
+     */
+    void
+    reinit(const FieldSpace<dim> &theta_space, const ProblemState<dim> &state);
+
+    /**
+     * Add the thermal stress load (c_e theta, div v) to @p load (the
+     * displacement's space of @p state); in the static class @p theta is
+     * set to the given theta at @p t first.
+     */
+    void
+    add_thermal_stress(const double                   t,
+                       const ProblemState<dim>       &state,
+                       TrilinosWrappers::MPI::Vector &theta,
+                       TrilinosWrappers::MPI::Vector &load);
+
+    /**
+     * The heat step at t = @p t with step length @p k: @p theta holds
+     * theta_{n-1} on entry and theta_n on return; w_n, u_n and the nodal
+     * traction from @p state.
+     */
+    void
+    heat_step(const double                   t,
+              const double                   k,
+              const ProblemState<dim>       &state,
+              LinearSolver                  &solver,
+              TrilinosWrappers::MPI::Vector &theta);
+
+    /**
+     * The contact heat law's terms at each contact node of @p state (in
+     * their order) at time @p t, with theta from @p theta (owned entries)
+     * and w, u and the nodal traction from @p state; the one place these
+     * terms are evaluated, for the heat step and the contact CSV.
+     */
+    std::vector<NodeHeat>
+    contact_heat(const double                         t,
+                 const ProblemState<dim>             &state,
+                 const TrilinosWrappers::MPI::Vector &theta) const;
+
+    /**
+     * The cell averages the solution output writes beside stress_*:
+     * thermal_stress = -c_e theta (the stress's part -c_e theta I, which
+     * stress_* leaves out) and heat_flux_x, _y[, _z] = -K grad theta,
+     * with theta from @p theta (owned entries).
+     */
+    std::vector<std::pair<std::string, Vector<float>>>
+    cell_output(const TrilinosWrappers::MPI::Vector &theta) const;
+
+    /** Book int c_theta theta_0 (the start of a run). */
+    void
+    start(const TrilinosWrappers::MPI::Vector &theta);
+
+    const HeatBalance &
+    balance() const
+    {
+      return heat;
+    }
+
+  private:
+    /** The constraints of theta at time @p t: hanging nodes, theta_D(t). */
+    void
+    make_constraints(const double t);
+
+    /** int c_theta theta. */
+    double
+    heat_content(const TrilinosWrappers::MPI::Vector &theta) const;
+
+    TemperatureParameters          parameters;
+    bool                           static_class;
+    MPI_Comm                       mpi_communicator;
+    std::shared_ptr<Function<dim>> heat_capacity;
+    std::shared_ptr<Function<dim>> thermal_stress_coefficient;
+    std::shared_ptr<Function<dim>> conductivity;
+    Tensor<2, dim>                 conductivity_tensor;
+    std::shared_ptr<Function<dim>> initial_temperature;
+    std::shared_ptr<Function<dim>> heat_source;
+    std::shared_ptr<Function<dim>> prescribed_temperature;
+    std::shared_ptr<Function<dim>> heat_flux;
+    std::shared_ptr<Function<dim>> foundation_temperature;
+    std::shared_ptr<Function<dim>> given_temperature;
+    std::unique_ptr<Expression>    exchange_coefficient;
+
+    const FieldSpace<dim>         *space          = nullptr;
+    const Discretization<dim>     *discretization = nullptr;
+    AffineConstraints<double>      constraints;
+    TrilinosWrappers::SparseMatrix matrix;
+    TrilinosWrappers::MPI::Vector  rhs;
+    /** The theta dof at each contact node (in the order of the nodes). */
+    std::vector<types::global_dof_index> node_dofs;
+    HeatBalance                          heat;
+  };
+} // namespace hemicontact

@@ -1,0 +1,567 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <hemicontact/base/exceptions.h>
+#include <hemicontact/expressions/expression_function.h>
+#include <hemicontact/model/problem_data.h>
+#include <hemicontact/thermal/heat_model.h>
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace hemicontact
+{
+  namespace
+  {
+    /** A ghosted copy of @p v on the index sets of @p space. */
+    template <int dim>
+    TrilinosWrappers::MPI::Vector
+    ghosted(const TrilinosWrappers::MPI::Vector &v,
+            const IndexSet                      &owned,
+            const IndexSet                      &relevant,
+            MPI_Comm                             comm)
+    {
+      TrilinosWrappers::MPI::Vector g(owned, relevant, comm);
+      g = v;
+      return g;
+    }
+
+    /** The first error of any rank, thrown on every rank. */
+    void
+    throw_first_error(const std::string &error, MPI_Comm comm)
+    {
+      for (const std::string &message : Utilities::MPI::all_gather(comm, error))
+        if (!message.empty())
+          throw InputError(message);
+    }
+
+    /** "(x, y[, z])" of @p p. */
+    template <int dim>
+    std::string
+    at(const Point<dim> &p)
+    {
+      std::ostringstream s;
+      s << "(";
+      for (unsigned int d = 0; d < dim; ++d)
+        s << (d ? ", " : "") << p[d];
+      s << ")";
+      return s.str();
+    }
+  } // namespace
+
+  template <int dim>
+  HeatModel<dim>::HeatModel(const TemperatureParameters &parameters,
+                            const std::string           &constants,
+                            const bool                   static_class,
+                            MPI_Comm                     comm)
+    : parameters(parameters)
+    , static_class(static_class)
+    , mpi_communicator(comm)
+  {
+    const auto scalar = [&](const std::string &text, const std::string &name) {
+      return std::shared_ptr<Function<dim>>(
+        parse_function<dim>(text, 1, constants, "temperature/" + name));
+    };
+    heat_capacity = scalar(parameters.heat_capacity, "heat capacity");
+    thermal_stress_coefficient = scalar(parameters.thermal_stress_coefficient,
+                                        "thermal stress coefficient");
+    if (parameters.anisotropic())
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          conductivity_tensor[i][j] =
+            std::stod(parameters.conductivity[i * dim + j]);
+    else
+      conductivity = scalar(parameters.conductivity[0], "conductivity");
+    initial_temperature =
+      scalar(parameters.initial_temperature, "initial temperature");
+    heat_source = scalar(parameters.heat_source, "heat source");
+    prescribed_temperature =
+      scalar(parameters.prescribed_temperature, "prescribed temperature");
+    heat_flux = scalar(parameters.heat_flux, "heat flux");
+    foundation_temperature =
+      scalar(parameters.foundation_temperature, "foundation temperature");
+    if (static_class)
+      given_temperature =
+        scalar(parameters.given_temperature, "given temperature");
+    std::vector<std::string> variables =
+      ExpressionFunction<dim>::variable_names();
+    variables.push_back("u_nu");
+    exchange_coefficient =
+      std::make_unique<Expression>(parameters.exchange_coefficient,
+                                   variables,
+                                   parse_constants(constants),
+                                   "temperature/exchange coefficient");
+  }
+
+  template <int dim>
+  FieldDefinition<dim>
+  HeatModel<dim>::field(const bool simplex) const
+  {
+    FieldDefinition<dim> definition;
+    definition.name = field_name;
+    if (simplex)
+      definition.element = std::make_shared<FE_SimplexP<dim>>(1);
+    else
+      definition.element = std::make_shared<FE_Q<dim>>(1);
+    if (static_class)
+      {
+        given_temperature->set_time(0);
+        definition.initial_value = given_temperature;
+      }
+    else
+      definition.initial_value = initial_temperature;
+    definition.layout      = FieldLayout::scalar_nodal;
+    definition.saved       = true;
+    definition.transferred = true;
+    definition.written     = true;
+    return definition;
+  }
+
+  template <int dim>
+  void
+  HeatModel<dim>::make_constraints(const double t)
+  {
+    constraints.clear();
+    constraints.reinit(*space->relevant);
+    DoFTools::make_hanging_node_constraints(*space->dof_handler, constraints);
+    prescribed_temperature->set_time(t);
+    std::map<types::boundary_id, const Function<dim> *> prescribed;
+    for (const unsigned int id : parameters.prescribed_ids)
+      prescribed[id] = prescribed_temperature.get();
+    VectorTools::interpolate_boundary_values(*discretization->mapping,
+                                             *space->dof_handler,
+                                             prescribed,
+                                             constraints);
+    constraints.close();
+  }
+
+  template <int dim>
+  void
+  HeatModel<dim>::reinit(const FieldSpace<dim>   &theta_space,
+                         const ProblemState<dim> &state)
+  {
+    space          = &theta_space;
+    discretization = &state.discretization;
+    make_constraints(state.time);
+    TrilinosWrappers::SparsityPattern sparsity(*space->owned,
+                                               *space->owned,
+                                               *space->relevant,
+                                               mpi_communicator);
+    DoFTools::make_sparsity_pattern(*space->dof_handler,
+                                    sparsity,
+                                    constraints,
+                                    /*keep_constrained_dofs=*/false,
+                                    Utilities::MPI::this_mpi_process(
+                                      mpi_communicator));
+    sparsity.compress();
+    matrix.reinit(sparsity);
+    rhs.reinit(*space->owned, mpi_communicator);
+
+    // the theta dof at the vertex of each contact node
+    std::map<types::global_dof_index, types::global_dof_index> theta_of;
+    for (const auto &cell : state.dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          const typename DoFHandler<dim>::active_cell_iterator theta_cell(
+            &cell->get_triangulation(),
+            cell->level(),
+            cell->index(),
+            space->dof_handler);
+          for (const unsigned int v : cell->vertex_indices())
+            theta_of[cell->vertex_dof_index(v, 0)] =
+              theta_cell->vertex_dof_index(v, 0);
+        }
+    node_dofs.clear();
+    for (const ContactNode<dim> &node : state.contact_nodes)
+      node_dofs.push_back(theta_of.at(node.dofs[0]));
+  }
+
+  template <int dim>
+  void
+  HeatModel<dim>::add_thermal_stress(const double                   t,
+                                     const ProblemState<dim>       &state,
+                                     TrilinosWrappers::MPI::Vector &theta,
+                                     TrilinosWrappers::MPI::Vector &load)
+  {
+    if (static_class)
+      {
+        given_temperature->set_time(t);
+        VectorTools::interpolate(*discretization->mapping,
+                                 *space->dof_handler,
+                                 *given_temperature,
+                                 theta);
+        space->constraints->distribute(theta);
+      }
+    const TrilinosWrappers::MPI::Vector theta_g =
+      ghosted<dim>(theta, *space->owned, *space->relevant, mpi_communicator);
+    const Quadrature<dim> quadrature = discretization->cell_quadrature(2);
+    FEValues<dim>         fe_u(*discretization->mapping,
+                       *discretization->fe,
+                       quadrature,
+                       update_gradients | update_quadrature_points |
+                         update_JxW_values);
+    FEValues<dim>         fe_theta(*discretization->mapping,
+                           space->dof_handler->get_fe(),
+                           quadrature,
+                           update_values);
+    const FEValuesExtractors::Vector     v(0);
+    const unsigned int                   n = fe_u.dofs_per_cell;
+    Vector<double>                       local(n);
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<double> theta_q(quadrature.size()), c_e(quadrature.size());
+    std::string         error;
+    for (const auto &cell : state.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_u.reinit(cell);
+          fe_theta.reinit(typename DoFHandler<dim>::active_cell_iterator(
+            &cell->get_triangulation(),
+            cell->level(),
+            cell->index(),
+            space->dof_handler));
+          fe_theta.get_function_values(theta_g, theta_q);
+          thermal_stress_coefficient->value_list(fe_u.get_quadrature_points(),
+                                                 c_e);
+          local = 0;
+          for (const unsigned int q : fe_u.quadrature_point_indices())
+            {
+              if (!(std::isfinite(c_e[q]) && c_e[q] >= 0) && error.empty())
+                error = "temperature: 'thermal stress coefficient' is " +
+                        std::to_string(c_e[q]) + " at " +
+                        at(fe_u.quadrature_point(q)) +
+                        "; c_e must be a finite number >= 0.";
+              for (unsigned int i = 0; i < n; ++i)
+                local(i) +=
+                  c_e[q] * theta_q[q] * fe_u[v].divergence(i, q) * fe_u.JxW(q);
+            }
+          cell->get_dof_indices(dofs);
+          state.base_constraints.distribute_local_to_global(local, dofs, load);
+        }
+    load.compress(VectorOperation::add);
+    throw_first_error(error, mpi_communicator);
+  }
+
+  template <int dim>
+  double
+  HeatModel<dim>::heat_content(const TrilinosWrappers::MPI::Vector &theta) const
+  {
+    const TrilinosWrappers::MPI::Vector theta_g =
+      ghosted<dim>(theta, *space->owned, *space->relevant, mpi_communicator);
+    const Quadrature<dim> quadrature = discretization->cell_quadrature(2);
+    FEValues<dim>         fe(*discretization->mapping,
+                     space->dof_handler->get_fe(),
+                     quadrature,
+                     update_values | update_quadrature_points |
+                       update_JxW_values);
+    std::vector<double>   theta_q(quadrature.size()), c(quadrature.size());
+    double                sum = 0;
+    for (const auto &cell : space->dof_handler->active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe.reinit(cell);
+          fe.get_function_values(theta_g, theta_q);
+          heat_capacity->value_list(fe.get_quadrature_points(), c);
+          for (const unsigned int q : fe.quadrature_point_indices())
+            sum += c[q] * theta_q[q] * fe.JxW(q);
+        }
+    return Utilities::MPI::sum(sum, mpi_communicator);
+  }
+
+  template <int dim>
+  std::vector<NodeHeat>
+  HeatModel<dim>::contact_heat(const double                         t,
+                               const ProblemState<dim>             &state,
+                               const TrilinosWrappers::MPI::Vector &theta) const
+  {
+    const TrilinosWrappers::MPI::Vector w =
+      ghosted<dim>(state.velocity,
+                   state.locally_owned_dofs,
+                   state.locally_relevant_dofs,
+                   mpi_communicator);
+    const TrilinosWrappers::MPI::Vector u =
+      ghosted<dim>(state.displacement,
+                   state.locally_owned_dofs,
+                   state.locally_relevant_dofs,
+                   mpi_communicator);
+    const TrilinosWrappers::MPI::Vector traction =
+      ghosted<dim>(state.contact_traction,
+                   state.locally_owned_dofs,
+                   state.locally_relevant_dofs,
+                   mpi_communicator);
+    const TrilinosWrappers::MPI::Vector theta_g =
+      ghosted<dim>(theta, *space->owned, *space->relevant, mpi_communicator);
+    foundation_temperature->set_time(t);
+    std::vector<NodeHeat> nodes(state.contact_nodes.size());
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      {
+        const ContactNode<dim> &node = state.contact_nodes[i];
+        if (!space->relevant->is_element(node_dofs[i]))
+          continue;
+        Tensor<1, dim> w_i, u_i, t_i;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            w_i[c] = w[node.dofs[c]];
+            u_i[c] = u[node.dofs[c]];
+            t_i[c] = traction[node.dofs[c]];
+          }
+        std::vector<double> values(node.position.begin_raw(),
+                                   node.position.end_raw());
+        values.push_back(t);
+        values.push_back(u_i * node.normal);
+        const Tensor<1, dim> t_tau    = t_i - (t_i * node.normal) * node.normal;
+        const Tensor<1, dim> w_tau    = w_i - (w_i * node.normal) * node.normal;
+        nodes[i].temperature          = theta_g[node_dofs[i]];
+        nodes[i].exchange_coefficient = exchange_coefficient->evaluate(values);
+        nodes[i].foundation_temperature =
+          foundation_temperature->value(node.position);
+        nodes[i].frictional_power =
+          parameters.frictional_heat_fraction * std::abs(t_tau * w_tau);
+      }
+    return nodes;
+  }
+
+  template <int dim>
+  std::vector<std::pair<std::string, Vector<float>>>
+  HeatModel<dim>::cell_output(const TrilinosWrappers::MPI::Vector &theta) const
+  {
+    const TrilinosWrappers::MPI::Vector theta_g =
+      ghosted<dim>(theta, *space->owned, *space->relevant, mpi_communicator);
+    const unsigned int n_cells =
+      space->dof_handler->get_triangulation().n_active_cells();
+    std::vector<std::pair<std::string, Vector<float>>> fields;
+    fields.emplace_back("thermal_stress", Vector<float>(n_cells));
+    const char *xyz[] = {"x", "y", "z"};
+    for (unsigned int d = 0; d < dim; ++d)
+      fields.emplace_back(std::string("heat_flux_") + xyz[d],
+                          Vector<float>(n_cells));
+    const Quadrature<dim> quadrature = discretization->cell_quadrature(2);
+    FEValues<dim>         fe(*discretization->mapping,
+                     space->dof_handler->get_fe(),
+                     quadrature,
+                     update_values | update_gradients |
+                       update_quadrature_points | update_JxW_values);
+    std::vector<double>   theta_q(quadrature.size()), c_e(quadrature.size()),
+      kappa(quadrature.size());
+    std::vector<Tensor<1, dim>> grad_q(quadrature.size());
+    for (const auto &cell : space->dof_handler->active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe.reinit(cell);
+          fe.get_function_values(theta_g, theta_q);
+          fe.get_function_gradients(theta_g, grad_q);
+          thermal_stress_coefficient->value_list(fe.get_quadrature_points(),
+                                                 c_e);
+          if (conductivity)
+            conductivity->value_list(fe.get_quadrature_points(), kappa);
+          double         volume = 0, stress = 0;
+          Tensor<1, dim> flux;
+          for (const unsigned int q : fe.quadrature_point_indices())
+            {
+              const Tensor<2, dim> K =
+                conductivity ? kappa[q] * unit_symmetric_tensor<dim>() :
+                               conductivity_tensor;
+              stress -= c_e[q] * theta_q[q] * fe.JxW(q);
+              flux -= K * grad_q[q] * fe.JxW(q);
+              volume += fe.JxW(q);
+            }
+          const unsigned int index = cell->active_cell_index();
+          fields[0].second[index]  = stress / volume;
+          for (unsigned int d = 0; d < dim; ++d)
+            fields[1 + d].second[index] = flux[d] / volume;
+        }
+    return fields;
+  }
+
+  template <int dim>
+  void
+  HeatModel<dim>::start(const TrilinosWrappers::MPI::Vector &theta)
+  {
+    heat                      = HeatBalance();
+    heat.initial_heat_content = heat_content(theta);
+    heat.heat_content         = heat.initial_heat_content;
+  }
+
+  template <int dim>
+  void
+  HeatModel<dim>::heat_step(const double                   t,
+                            const double                   k,
+                            const ProblemState<dim>       &state,
+                            LinearSolver                  &solver,
+                            TrilinosWrappers::MPI::Vector &theta)
+  {
+    make_constraints(t);
+    heat_source->set_time(t);
+    heat_flux->set_time(t);
+    foundation_temperature->set_time(t);
+    const IndexSet                     &owned    = state.locally_owned_dofs;
+    const IndexSet                     &relevant = state.locally_relevant_dofs;
+    const TrilinosWrappers::MPI::Vector theta_old =
+      ghosted<dim>(theta, *space->owned, *space->relevant, mpi_communicator);
+    const TrilinosWrappers::MPI::Vector w =
+      ghosted<dim>(state.velocity, owned, relevant, mpi_communicator);
+
+    matrix                               = 0;
+    rhs                                  = 0;
+    const Quadrature<dim>     quadrature = discretization->cell_quadrature(2);
+    const Quadrature<dim - 1> face_quadrature =
+      discretization->face_quadrature(2);
+    const FiniteElement<dim>            &fe = space->dof_handler->get_fe();
+    FEValues<dim>                        fe_theta(*discretization->mapping,
+                           fe,
+                           quadrature,
+                           update_values | update_gradients |
+                             update_quadrature_points | update_JxW_values);
+    FEValues<dim>                        fe_u(*discretization->mapping,
+                       *discretization->fe,
+                       quadrature,
+                       update_gradients);
+    FEFaceValues<dim>                    fe_face(*discretization->mapping,
+                              fe,
+                              face_quadrature,
+                              update_values | update_quadrature_points |
+                                update_JxW_values);
+    const FEValuesExtractors::Vector     v(0);
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    FullMatrix<double>                   local_matrix(n, n);
+    Vector<double>                       local_rhs(n);
+    std::vector<types::global_dof_index> dofs(n);
+    const unsigned int                   n_q = quadrature.size();
+    std::vector<double> theta_q(n_q), div_w(n_q), c_theta(n_q), c_e(n_q),
+      kappa(n_q, 0.), q_src(n_q), q_n(face_quadrature.size());
+    std::string error;
+    const auto  check = [&](const double       value,
+                           const bool         strictly,
+                           const std::string &entry,
+                           const Point<dim>  &p) {
+      if ((std::isfinite(value) && (strictly ? value > 0 : value >= 0)) ||
+          !error.empty())
+        return;
+      error = "temperature: '" + entry + "' is " + std::to_string(value) +
+              " at " + at(p) + "; it must be a finite number " +
+              (strictly ? "> 0." : ">= 0.");
+    };
+    for (const auto &cell : space->dof_handler->active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_theta.reinit(cell);
+          fe_u.reinit(typename DoFHandler<dim>::active_cell_iterator(
+            &cell->get_triangulation(),
+            cell->level(),
+            cell->index(),
+            &state.dof_handler));
+          fe_theta.get_function_values(theta_old, theta_q);
+          fe_u[v].get_function_divergences(w, div_w);
+          const std::vector<Point<dim>> &points =
+            fe_theta.get_quadrature_points();
+          heat_capacity->value_list(points, c_theta);
+          thermal_stress_coefficient->value_list(points, c_e);
+          if (conductivity)
+            conductivity->value_list(points, kappa);
+          heat_source->value_list(points, q_src);
+          local_matrix = 0;
+          local_rhs    = 0;
+          for (const unsigned int q : fe_theta.quadrature_point_indices())
+            {
+              check(c_theta[q], true, "heat capacity", points[q]);
+              if (conductivity)
+                check(kappa[q], true, "conductivity", points[q]);
+              if (!std::isfinite(q_src[q]) && error.empty())
+                error = "temperature: 'heat source' is not a finite number "
+                        "at " +
+                        at(points[q]) + ".";
+              const Tensor<2, dim> K =
+                conductivity ? kappa[q] * unit_symmetric_tensor<dim>() :
+                               conductivity_tensor;
+              const double JxW = fe_theta.JxW(q);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const double         phi_i   = fe_theta.shape_value(i, q);
+                  const Tensor<1, dim> Kgrad_i = K * fe_theta.shape_grad(i, q);
+                  for (unsigned int j = 0; j < n; ++j)
+                    local_matrix(i, j) +=
+                      (c_theta[q] / k * phi_i * fe_theta.shape_value(j, q) +
+                       Kgrad_i * fe_theta.shape_grad(j, q)) *
+                      JxW;
+                  local_rhs(i) += (c_theta[q] / k * theta_q[q] -
+                                   c_e[q] * div_w[q] + q_src[q]) *
+                                  phi_i * JxW;
+                }
+            }
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                std::find(parameters.flux_ids.begin(),
+                          parameters.flux_ids.end(),
+                          cell->face(f)->boundary_id()) !=
+                  parameters.flux_ids.end())
+              {
+                fe_face.reinit(cell, f);
+                heat_flux->value_list(fe_face.get_quadrature_points(), q_n);
+                for (const unsigned int q : fe_face.quadrature_point_indices())
+                  for (unsigned int i = 0; i < n; ++i)
+                    local_rhs(i) +=
+                      q_n[q] * fe_face.shape_value(i, q) * fe_face.JxW(q);
+              }
+          cell->get_dof_indices(dofs);
+          constraints.distribute_local_to_global(
+            local_matrix, local_rhs, dofs, matrix, rhs);
+        }
+
+    // Gamma_3, nodal quadrature: k_e theta_n on the left, k_e theta_F and
+    // the frictional heat on the right (not where theta is prescribed)
+    const std::vector<NodeHeat> nodes      = contact_heat(t, state, theta);
+    double                      frictional = 0;
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      {
+        const ContactNode<dim> &node = state.contact_nodes[i];
+        const auto              d    = node_dofs[i];
+        if (!space->owned->is_element(d) || constraints.is_constrained(d))
+          continue;
+        check(nodes[i].exchange_coefficient,
+              false,
+              "exchange coefficient",
+              node.position);
+        matrix.add(d, d, node.mass * nodes[i].exchange_coefficient);
+        rhs[d] += node.mass * (nodes[i].exchange_coefficient *
+                                 nodes[i].foundation_temperature +
+                               nodes[i].frictional_power);
+        frictional += node.mass * nodes[i].frictional_power;
+      }
+    matrix.compress(VectorOperation::add);
+    rhs.compress(VectorOperation::add);
+    throw_first_error(error, mpi_communicator);
+
+    TrilinosWrappers::PreconditionAMG                 amg;
+    TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
+    amg_data.elliptic              = true;
+    amg_data.higher_order_elements = false;
+    amg.initialize(matrix, amg_data);
+    heat.linear_iterations = solver.solve(matrix, amg, theta, rhs);
+    constraints.distribute(theta);
+
+    const TrilinosWrappers::MPI::Vector theta_new =
+      ghosted<dim>(theta, *space->owned, *space->relevant, mpi_communicator);
+    double exchanged = 0;
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      if (space->owned->is_element(node_dofs[i]) &&
+          !constraints.is_constrained(node_dofs[i]))
+        exchanged +=
+          state.contact_nodes[i].mass * nodes[i].exchange_coefficient *
+          (nodes[i].foundation_temperature - theta_new[node_dofs[i]]);
+    heat.frictional_heat +=
+      k * Utilities::MPI::sum(frictional, mpi_communicator);
+    heat.exchanged_heat += k * Utilities::MPI::sum(exchanged, mpi_communicator);
+    heat.heat_content = heat_content(theta);
+  }
+
+  template class HeatModel<2>;
+  template class HeatModel<3>;
+} // namespace hemicontact
