@@ -163,7 +163,9 @@ namespace hemicontact
                                     Utilities::MPI::this_mpi_process(
                                       mpi_communicator));
     sparsity.compress();
+    operator_matrix.reinit(sparsity);
     matrix.reinit(sparsity);
+    operator_step_length = 0;
     rhs.reinit(*space->owned, mpi_communicator);
 
     // the theta dof at the vertex of each contact node
@@ -183,6 +185,76 @@ namespace hemicontact
     node_dofs.clear();
     for (const ContactNode<dim> &node : state.contact_nodes)
       node_dofs.push_back(theta_of.at(node.dofs[0]));
+    cache_coefficients();
+  }
+
+  template <int dim>
+  void
+  HeatModel<dim>::cache_coefficients()
+  {
+    const Quadrature<dim> quadrature = discretization->cell_quadrature(2);
+    const unsigned int    n_q        = quadrature.size();
+    const unsigned int    n_cells =
+      space->dof_handler->get_triangulation().n_active_cells();
+    FEValues<dim> fe(*discretization->mapping,
+                     space->dof_handler->get_fe(),
+                     quadrature,
+                     update_values | update_quadrature_points |
+                       update_JxW_values);
+    coefficients.c_theta.assign(n_cells * n_q, 0.);
+    coefficients.c_e.assign(n_cells * n_q, 0.);
+    coefficients.kappa.assign(n_cells * n_q, 0.);
+    // summed over the owned cells' dofs by compress(), as a load is
+    TrilinosWrappers::MPI::Vector weights(*space->owned, mpi_communicator);
+    std::vector<double>           c_theta(n_q), c_e(n_q), kappa(n_q);
+    const unsigned int            n = fe.dofs_per_cell;
+    Vector<double>                local(n);
+    std::vector<types::global_dof_index> dofs(n);
+    std::string                          error;
+    const auto                           check = [&](const double       value,
+                           const bool         strictly,
+                           const std::string &entry,
+                           const Point<dim>  &p) {
+      if ((std::isfinite(value) && (strictly ? value > 0 : value >= 0)) ||
+          !error.empty())
+        return;
+      error = "temperature: '" + entry + "' is " + std::to_string(value) +
+              " at " + at(p) + "; it must be a finite number " +
+              (strictly ? "> 0." : ">= 0.");
+    };
+    for (const auto &cell : space->dof_handler->active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe.reinit(cell);
+          const std::vector<Point<dim>> &points = fe.get_quadrature_points();
+          heat_capacity->value_list(points, c_theta);
+          thermal_stress_coefficient->value_list(points, c_e);
+          if (conductivity)
+            conductivity->value_list(points, kappa);
+          const std::size_t first = cell->active_cell_index() * n_q;
+          local                   = 0;
+          for (const unsigned int q : fe.quadrature_point_indices())
+            {
+              check(c_theta[q], true, "heat capacity", points[q]);
+              check(c_e[q], false, "thermal stress coefficient", points[q]);
+              if (conductivity)
+                check(kappa[q], true, "conductivity", points[q]);
+              coefficients.c_theta[first + q] = c_theta[q];
+              coefficients.c_e[first + q]     = c_e[q];
+              coefficients.kappa[first + q]   = kappa[q];
+              for (unsigned int i = 0; i < n; ++i)
+                local(i) += c_theta[q] * fe.shape_value(i, q) * fe.JxW(q);
+            }
+          // every dof its share, hanging ones included, so that
+          // sum_j weight_j theta_j = int c_theta theta for a theta that
+          // meets the constraints
+          cell->get_dof_indices(dofs);
+          weights.add(dofs, local);
+        }
+    weights.compress(VectorOperation::add);
+    capacity_weights.reinit(*space->owned, mpi_communicator);
+    capacity_weights = weights;
+    throw_first_error(error, mpi_communicator);
   }
 
   template <int dim>
@@ -200,6 +272,7 @@ namespace hemicontact
                                  *given_temperature,
                                  theta);
         space->constraints->distribute(theta);
+        heat.heat_content = heat_content(theta);
       }
     const TrilinosWrappers::MPI::Vector theta_g =
       ghosted<dim>(theta, *space->owned, *space->relevant, mpi_communicator);
@@ -217,8 +290,7 @@ namespace hemicontact
     const unsigned int                   n = fe_u.dofs_per_cell;
     Vector<double>                       local(n);
     std::vector<types::global_dof_index> dofs(n);
-    std::vector<double> theta_q(quadrature.size()), c_e(quadrature.size());
-    std::string         error;
+    std::vector<double>                  theta_q(quadrature.size());
     for (const auto &cell : state.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -229,51 +301,24 @@ namespace hemicontact
             cell->index(),
             space->dof_handler));
           fe_theta.get_function_values(theta_g, theta_q);
-          thermal_stress_coefficient->value_list(fe_u.get_quadrature_points(),
-                                                 c_e);
+          const double *c_e =
+            &coefficients.c_e[cell->active_cell_index() * quadrature.size()];
           local = 0;
           for (const unsigned int q : fe_u.quadrature_point_indices())
-            {
-              if (!(std::isfinite(c_e[q]) && c_e[q] >= 0) && error.empty())
-                error = "temperature: 'thermal stress coefficient' is " +
-                        std::to_string(c_e[q]) + " at " +
-                        at(fe_u.quadrature_point(q)) +
-                        "; c_e must be a finite number >= 0.";
-              for (unsigned int i = 0; i < n; ++i)
-                local(i) +=
-                  c_e[q] * theta_q[q] * fe_u[v].divergence(i, q) * fe_u.JxW(q);
-            }
+            for (unsigned int i = 0; i < n; ++i)
+              local(i) +=
+                c_e[q] * theta_q[q] * fe_u[v].divergence(i, q) * fe_u.JxW(q);
           cell->get_dof_indices(dofs);
           state.base_constraints.distribute_local_to_global(local, dofs, load);
         }
     load.compress(VectorOperation::add);
-    throw_first_error(error, mpi_communicator);
   }
 
   template <int dim>
   double
   HeatModel<dim>::heat_content(const TrilinosWrappers::MPI::Vector &theta) const
   {
-    const TrilinosWrappers::MPI::Vector theta_g =
-      ghosted<dim>(theta, *space->owned, *space->relevant, mpi_communicator);
-    const Quadrature<dim> quadrature = discretization->cell_quadrature(2);
-    FEValues<dim>         fe(*discretization->mapping,
-                     space->dof_handler->get_fe(),
-                     quadrature,
-                     update_values | update_quadrature_points |
-                       update_JxW_values);
-    std::vector<double>   theta_q(quadrature.size()), c(quadrature.size());
-    double                sum = 0;
-    for (const auto &cell : space->dof_handler->active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe.reinit(cell);
-          fe.get_function_values(theta_g, theta_q);
-          heat_capacity->value_list(fe.get_quadrature_points(), c);
-          for (const unsigned int q : fe.quadrature_point_indices())
-            sum += c[q] * theta_q[q] * fe.JxW(q);
-        }
-    return Utilities::MPI::sum(sum, mpi_communicator);
+    return capacity_weights * theta;
   }
 
   template <int dim>
@@ -409,7 +454,11 @@ namespace hemicontact
     const TrilinosWrappers::MPI::Vector w =
       ghosted<dim>(state.velocity, owned, relevant, mpi_communicator);
 
-    matrix                               = 0;
+    // the operator c_theta/k M + K and its AMG: once per mesh and step
+    // length (the contact's k_e term is added to a copy each step)
+    const bool new_operator = (k != operator_step_length);
+    if (new_operator)
+      operator_matrix = 0;
     rhs                                  = 0;
     const Quadrature<dim>     quadrature = discretization->cell_quadrature(2);
     const Quadrature<dim - 1> face_quadrature =
@@ -435,8 +484,8 @@ namespace hemicontact
     Vector<double>                       local_rhs(n);
     std::vector<types::global_dof_index> dofs(n);
     const unsigned int                   n_q = quadrature.size();
-    std::vector<double> theta_q(n_q), div_w(n_q), c_theta(n_q), c_e(n_q),
-      kappa(n_q, 0.), q_src(n_q), q_n(face_quadrature.size());
+    std::vector<double>                  theta_q(n_q), div_w(n_q), q_src(n_q),
+      q_n(face_quadrature.size());
     std::string error;
     const auto  check = [&](const double       value,
                            const bool         strictly,
@@ -462,18 +511,22 @@ namespace hemicontact
           fe_u[v].get_function_divergences(w, div_w);
           const std::vector<Point<dim>> &points =
             fe_theta.get_quadrature_points();
-          heat_capacity->value_list(points, c_theta);
-          thermal_stress_coefficient->value_list(points, c_e);
-          if (conductivity)
-            conductivity->value_list(points, kappa);
+          const std::size_t first   = cell->active_cell_index() * n_q;
+          const double     *c_theta = &coefficients.c_theta[first];
+          const double     *c_e     = &coefficients.c_e[first];
+          const double     *kappa   = &coefficients.kappa[first];
           heat_source->value_list(points, q_src);
+          cell->get_dof_indices(dofs);
+          // the cell matrix: for the operator, or for the inhomogeneity of
+          // theta_D on this cell
+          bool with_matrix = new_operator;
+          for (const auto dof : dofs)
+            with_matrix =
+              with_matrix || constraints.is_inhomogeneously_constrained(dof);
           local_matrix = 0;
           local_rhs    = 0;
           for (const unsigned int q : fe_theta.quadrature_point_indices())
             {
-              check(c_theta[q], true, "heat capacity", points[q]);
-              if (conductivity)
-                check(kappa[q], true, "conductivity", points[q]);
               if (!std::isfinite(q_src[q]) && error.empty())
                 error = "temperature: 'heat source' is not a finite number "
                         "at " +
@@ -484,13 +537,17 @@ namespace hemicontact
               const double JxW = fe_theta.JxW(q);
               for (unsigned int i = 0; i < n; ++i)
                 {
-                  const double         phi_i   = fe_theta.shape_value(i, q);
-                  const Tensor<1, dim> Kgrad_i = K * fe_theta.shape_grad(i, q);
-                  for (unsigned int j = 0; j < n; ++j)
-                    local_matrix(i, j) +=
-                      (c_theta[q] / k * phi_i * fe_theta.shape_value(j, q) +
-                       Kgrad_i * fe_theta.shape_grad(j, q)) *
-                      JxW;
+                  const double phi_i = fe_theta.shape_value(i, q);
+                  if (with_matrix)
+                    {
+                      const Tensor<1, dim> Kgrad_i =
+                        K * fe_theta.shape_grad(i, q);
+                      for (unsigned int j = 0; j < n; ++j)
+                        local_matrix(i, j) +=
+                          (c_theta[q] / k * phi_i * fe_theta.shape_value(j, q) +
+                           Kgrad_i * fe_theta.shape_grad(j, q)) *
+                          JxW;
+                    }
                   local_rhs(i) += (c_theta[q] / k * theta_q[q] -
                                    c_e[q] * div_w[q] + q_src[q]) *
                                   phi_i * JxW;
@@ -510,10 +567,25 @@ namespace hemicontact
                     local_rhs(i) +=
                       q_n[q] * fe_face.shape_value(i, q) * fe_face.JxW(q);
               }
-          cell->get_dof_indices(dofs);
-          constraints.distribute_local_to_global(
-            local_matrix, local_rhs, dofs, matrix, rhs);
+          if (new_operator)
+            constraints.distribute_local_to_global(local_matrix,
+                                                   dofs,
+                                                   operator_matrix);
+          constraints.distribute_local_to_global(local_rhs,
+                                                 dofs,
+                                                 rhs,
+                                                 local_matrix);
         }
+    if (new_operator)
+      {
+        operator_matrix.compress(VectorOperation::add);
+        TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
+        amg_data.elliptic              = true;
+        amg_data.higher_order_elements = false;
+        amg.initialize(operator_matrix, amg_data);
+        operator_step_length = k;
+      }
+    matrix.copy_from(operator_matrix);
 
     // Gamma_3, nodal quadrature: k_e theta_n on the left, k_e theta_F and
     // the frictional heat on the right (not where theta is prescribed)
@@ -539,11 +611,6 @@ namespace hemicontact
     rhs.compress(VectorOperation::add);
     throw_first_error(error, mpi_communicator);
 
-    TrilinosWrappers::PreconditionAMG                 amg;
-    TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
-    amg_data.elliptic              = true;
-    amg_data.higher_order_elements = false;
-    amg.initialize(matrix, amg_data);
     heat.linear_iterations = solver.solve(matrix, amg, theta, rhs);
     constraints.distribute(theta);
 

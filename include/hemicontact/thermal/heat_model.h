@@ -2,6 +2,7 @@
 
 #include <deal.II/base/function.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
@@ -64,7 +65,8 @@ namespace hemicontact
    *     + sum_i m_i [k_e theta_F + gamma |sigma_tau . w_tau|]_i eta_i,
    *
    * assembled with its constraints (hanging nodes, theta_D) and solved by
-   * CG with AMG. In the static class theta is the data 'given temperature'.
+   * CG with the AMG of c_theta/k M + K, built once per mesh and step
+   * length. In the static class theta is the data 'given temperature'.
    */
   template <int dim>
   class HeatModel
@@ -151,6 +153,14 @@ namespace hemicontact
     void
     make_constraints(const double t);
 
+    /**
+     * c_theta, c_e and K (isotropic) at each quadrature point of each
+     * locally owned cell, and the weights int c_theta phi_j; each checked
+     * (finite, c_theta > 0, c_e >= 0, K > 0). On a new mesh.
+     */
+    void
+    cache_coefficients();
+
     /** int c_theta theta. */
     double
     heat_content(const TrilinosWrappers::MPI::Vector &theta) const;
@@ -170,11 +180,25 @@ namespace hemicontact
     std::shared_ptr<Function<dim>> given_temperature;
     std::unique_ptr<Expression>    exchange_coefficient;
 
-    const FieldSpace<dim>         *space          = nullptr;
-    const Discretization<dim>     *discretization = nullptr;
-    AffineConstraints<double>      constraints;
+    const FieldSpace<dim>     *space          = nullptr;
+    const Discretization<dim> *discretization = nullptr;
+    AffineConstraints<double>  constraints;
+    /** c_theta/k M + K for the step length operator_step_length. */
+    TrilinosWrappers::SparseMatrix operator_matrix;
+    double                         operator_step_length = 0;
+    /** The AMG of operator_matrix, the heat step's preconditioner. */
+    TrilinosWrappers::PreconditionAMG amg;
+    /** operator_matrix plus the contact's sum_i m_i k_e,i at the step. */
     TrilinosWrappers::SparseMatrix matrix;
     TrilinosWrappers::MPI::Vector  rhs;
+    /** The coefficients at the quadrature points, by cell (x only). */
+    struct CellCoefficients
+    {
+      /** Values at cell active_cell_index * n_q + q. */
+      std::vector<double> c_theta, c_e, kappa;
+    } coefficients;
+    /** int c_theta phi_j for every owned theta dof j. */
+    TrilinosWrappers::MPI::Vector capacity_weights;
     /** The theta dof at each contact node (in the order of the nodes). */
     std::vector<types::global_dof_index> node_dofs;
     HeatBalance                          heat;
