@@ -56,6 +56,27 @@ namespace hemicontact
       s << ")";
       return s.str();
     }
+
+    /**
+     * The first bad coefficient into @p error (if it is still empty): the
+     * entry @p entry is @p value at @p p, not a finite number > 0
+     * (@p strictly) or >= 0.
+     */
+    template <int dim>
+    void
+    check_coefficient(std::string       &error,
+                      const double       value,
+                      const bool         strictly,
+                      const std::string &entry,
+                      const Point<dim>  &p)
+    {
+      if ((std::isfinite(value) && (strictly ? value > 0 : value >= 0)) ||
+          !error.empty())
+        return;
+      error = "temperature: '" + entry + "' is " + std::to_string(value) +
+              " at " + at(p) + "; it must be a finite number " +
+              (strictly ? "> 0." : ">= 0.");
+    }
   } // namespace
 
   template <int dim>
@@ -211,17 +232,6 @@ namespace hemicontact
     Vector<double>                local(n);
     std::vector<types::global_dof_index> dofs(n);
     std::string                          error;
-    const auto                           check = [&](const double       value,
-                           const bool         strictly,
-                           const std::string &entry,
-                           const Point<dim>  &p) {
-      if ((std::isfinite(value) && (strictly ? value > 0 : value >= 0)) ||
-          !error.empty())
-        return;
-      error = "temperature: '" + entry + "' is " + std::to_string(value) +
-              " at " + at(p) + "; it must be a finite number " +
-              (strictly ? "> 0." : ">= 0.");
-    };
     for (const auto &cell : space->dof_handler->active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -235,10 +245,13 @@ namespace hemicontact
           local                   = 0;
           for (const unsigned int q : fe.quadrature_point_indices())
             {
-              check(c_theta[q], true, "heat capacity", points[q]);
-              check(c_e[q], false, "thermal stress coefficient", points[q]);
+              check_coefficient(
+                error, c_theta[q], true, "heat capacity", points[q]);
+              check_coefficient(
+                error, c_e[q], false, "thermal stress coefficient", points[q]);
               if (conductivity)
-                check(kappa[q], true, "conductivity", points[q]);
+                check_coefficient(
+                  error, kappa[q], true, "conductivity", points[q]);
               coefficients.c_theta[first + q] = c_theta[q];
               coefficients.c_e[first + q]     = c_e[q];
               coefficients.kappa[first + q]   = kappa[q];
@@ -487,17 +500,6 @@ namespace hemicontact
     std::vector<double>                  theta_q(n_q), div_w(n_q), q_src(n_q),
       q_n(face_quadrature.size());
     std::string error;
-    const auto  check = [&](const double       value,
-                           const bool         strictly,
-                           const std::string &entry,
-                           const Point<dim>  &p) {
-      if ((std::isfinite(value) && (strictly ? value > 0 : value >= 0)) ||
-          !error.empty())
-        return;
-      error = "temperature: '" + entry + "' is " + std::to_string(value) +
-              " at " + at(p) + "; it must be a finite number " +
-              (strictly ? "> 0." : ">= 0.");
-    };
     for (const auto &cell : space->dof_handler->active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -597,10 +599,11 @@ namespace hemicontact
         const auto              d    = node_dofs[i];
         if (!space->owned->is_element(d) || constraints.is_constrained(d))
           continue;
-        check(nodes[i].exchange_coefficient,
-              false,
-              "exchange coefficient",
-              node.position);
+        check_coefficient(error,
+                          nodes[i].exchange_coefficient,
+                          false,
+                          "exchange coefficient",
+                          node.position);
         matrix.add(d, d, node.mass * nodes[i].exchange_coefficient);
         rhs[d] += node.mass * (nodes[i].exchange_coefficient *
                                  nodes[i].foundation_temperature +
