@@ -33,4 +33,14 @@ namespace hemicontact
       }
     return numbers;
   }
+
+  std::vector<unsigned int>
+  get_id_list(const dealii::ParameterHandler &prm, const std::string &entry)
+  {
+    std::vector<unsigned int> ids;
+    for (const int i : dealii::Utilities::string_to_int(
+           dealii::Utilities::split_string_list(prm.get(entry), ',')))
+      ids.push_back(static_cast<unsigned int>(i));
+    return ids;
+  }
 } // namespace hemicontact

@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/input/number_list.h>
 #include <hemicontact/input/parameters.h>
 #include <hemicontact/input/selection.h>
 
@@ -54,16 +55,6 @@ namespace hemicontact
       {"progress", TerminalOutput::progress},
       {"quiet", TerminalOutput::quiet},
       {"test", TerminalOutput::test}};
-
-    std::vector<unsigned int>
-    get_id_list(ParameterHandler &prm, const std::string &key)
-    {
-      std::vector<unsigned int> ids;
-      for (const int i : Utilities::string_to_int(
-             Utilities::split_string_list(prm.get(key), ',')))
-        ids.push_back(static_cast<unsigned int>(i));
-      return ids;
-    }
   } // namespace
 
   void

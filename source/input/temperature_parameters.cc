@@ -17,17 +17,6 @@ namespace hemicontact
 {
   namespace
   {
-    /** The boundary ids of @p entry (entered subsection), each 0..255. */
-    std::vector<unsigned int>
-    get_ids(const ParameterHandler &prm, const std::string &entry)
-    {
-      std::vector<unsigned int> ids;
-      for (const std::string &item :
-           Utilities::split_string_list(prm.get(entry)))
-        ids.push_back(Utilities::string_to_int(item));
-      return ids;
-    }
-
     /** @p text as a number if it is one (else NaN, an expression). */
     double
     number_or_nan(const std::string &text)
@@ -148,9 +137,9 @@ namespace hemicontact
     conductivity        = Utilities::split_string_list(prm.get("conductivity"));
     initial_temperature = prm.get("initial temperature");
     heat_source         = prm.get("heat source");
-    prescribed_ids      = get_ids(prm, "prescribed temperature boundary ids");
+    prescribed_ids = get_id_list(prm, "prescribed temperature boundary ids");
     prescribed_temperature       = prm.get("prescribed temperature");
-    flux_ids                     = get_ids(prm, "heat flux boundary ids");
+    flux_ids                     = get_id_list(prm, "heat flux boundary ids");
     heat_flux                    = prm.get("heat flux");
     exchange_coefficient         = prm.get("exchange coefficient");
     foundation_temperature       = prm.get("foundation temperature");

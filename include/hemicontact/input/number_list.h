@@ -16,4 +16,11 @@ namespace hemicontact
   get_number_list(const dealii::ParameterHandler &prm,
                   const std::string              &subsection,
                   const std::string              &entry);
+
+  /**
+   * The comma-separated boundary ids of the entry @p entry (of the
+   * subsection entered already; its pattern checks each is 0..255).
+   */
+  std::vector<unsigned int>
+  get_id_list(const dealii::ParameterHandler &prm, const std::string &entry);
 } // namespace hemicontact
