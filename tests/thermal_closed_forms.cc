@@ -175,10 +175,11 @@ end
     out() << "(b) Robin contact: mean theta(1) = " << theta
           << ", lumped first mode " << lumped << ", within 2e-4: "
           << (std::abs(theta - lumped) < 2e-4 ? "yes" : "no") << std::endl;
-    const HeatBalance &h = problem->state().heat->balance();
+    const HeatBalance   &h = problem->state().heat->balance();
+    const EnergyBalance &e = problem->state().energy;
     out() << "    heat content gained = exchanged heat to 1e-8: "
           << (std::abs(h.heat_content - h.initial_heat_content -
-                       h.exchanged_heat) < 1e-8 * h.exchanged_heat ?
+                       e.exchanged_heat) < 1e-8 * e.exchanged_heat ?
                 "yes" :
                 "no")
           << std::endl;
@@ -187,7 +188,7 @@ end
   // (c) frictional heating, no exchange: a block dragged over the
   // foundation with Tresca friction
   {
-    const auto         problem = run(R"(
+    const auto           problem = run(R"(
 subsection boundary
   set traction boundary ids = 3
 end
@@ -204,12 +205,13 @@ subsection temperature
   set frictional heat fraction = 0.8
 end
 )");
-    const HeatBalance &h       = problem->state().heat->balance();
-    const double       gained  = h.heat_content - h.initial_heat_content;
+    const HeatBalance   &h       = problem->state().heat->balance();
+    const double         gained  = h.heat_content - h.initial_heat_content;
+    const EnergyBalance &e       = problem->state().energy;
     out() << "(c) frictional heating: heat gained " << gained
-          << ", frictional heat " << h.frictional_heat << ", equal to 1e-8: "
-          << (h.frictional_heat > 0 && std::abs(gained - h.frictional_heat) <
-                                         1e-8 * h.frictional_heat ?
+          << ", frictional heat " << e.frictional_heat << ", equal to 1e-8: "
+          << (e.frictional_heat > 0 && std::abs(gained - e.frictional_heat) <
+                                         1e-8 * e.frictional_heat ?
                 "yes" :
                 "no")
           << std::endl;

@@ -15,11 +15,13 @@
 # errors against the run with time step K on the same mesh instead of the
 # manufactured solution ('convergence study/reference time step',
 # doc/verification.md) and appends -reference to the directory.
+# HEMICONTACT=PATH runs that program instead of build/hemicontact.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 case_name=$1; type=$2; levels=$3; refinement=$4; time_step=$5; np=${6:-1}
 class=${CLASS:-}; scheme=${SCHEME:-}; estimate=${ESTIMATE:-false}
 reference=${REFERENCE:-}
+program=${HEMICONTACT:-$root/build/hemicontact}
 out="$root/results/$case_name-$type"
 if [ -n "$class$scheme" ]; then
   out="$out-${class:-dynamic}-${scheme:-left point}"
@@ -42,8 +44,8 @@ mkdir -p "$out"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 start=$(date +%s)
 if [ "$np" -gt 1 ]; then
-  mpirun -np "$np" "$root/build/hemicontact" "$out/study.prm" | tee "$out/study.log"
+  mpirun -np "$np" "$program" "$out/study.prm" | tee "$out/study.log"
 else
-  "$root/build/hemicontact" "$out/study.prm" | tee "$out/study.log"
+  "$program" "$out/study.prm" | tee "$out/study.log"
 fi
 echo "wall time: $(( $(date +%s) - start )) s" | tee -a "$out/study.log"

@@ -65,8 +65,8 @@ namespace hemicontact
     }
     /**
      * What 'temperature' works with (doc/theory.md, section 13): theta as
-     * data in the static class only, no manufactured solution, no error
-     * estimate.
+     * data in the static class only, a manufactured solution in the
+     * velocity classes (without a reference run), no error estimate.
      */
     void
     require_temperature_usable(const Parameters &parameters)
@@ -85,11 +85,19 @@ namespace hemicontact
               "theta; the dynamic and the quasistatic class solve the heat "
               "equation from 'initial temperature'. Leave 'given "
               "temperature' empty.");
-      require(!parameters.manufactured.enabled,
-              "temperature: 'temperature/enabled = true' does not work with "
-              "'manufactured solution/enabled = true': the derived data "
-              "have no temperature (the manufactured (u, theta) studies are "
-              "programs of their own, doc/verification.md).");
+      require(!parameters.manufactured.enabled || !is_static,
+              "temperature: 'temperature/enabled = true' with 'manufactured "
+              "solution/enabled = true' works in the dynamic and the "
+              "quasistatic class, where theta solves the heat equation "
+              "(doc/theory.md 13.6); the static class's theta is data. Set "
+              "'problem/class' to dynamic or quasistatic, or 'temperature/"
+              "enabled = false'.");
+      require(!parameters.manufactured.enabled ||
+                parameters.study.reference_time_step == 0,
+              "temperature: 'convergence study/reference time step' does not "
+              "work with 'temperature/enabled = true': the reference run "
+              "keeps u and w, not theta. Set it to 0 (the errors against "
+              "the manufactured solution).");
       require(!parameters.output.error_estimate,
               "temperature: 'temperature/enabled = true' does not work with "
               "'output/error estimate = true': the estimate (doc/theory.md, "

@@ -64,6 +64,18 @@ namespace hemicontact
                       "'dimension' expressions (doc/parameters.md, "
                       "Expressions) separated by ';'; should satisfy "
                       "|lambda*| < F_b.");
+    prm.declare_entry("exact temperature",
+                      "0",
+                      Patterns::Anything(),
+                      "theta(x,t) with 'temperature/enabled = true' "
+                      "(dynamic and quasistatic class): an expression "
+                      "(doc/parameters.md, Expressions) in x, y, z, t and "
+                      "the data constants. The initial and the prescribed "
+                      "temperature, the heat source, the heat flux and a "
+                      "heat source on Gamma_3 are derived from it (exact "
+                      "derivatives, doc/theory.md 13.6); the coefficients "
+                      "of subsection 'temperature' are kept, and the error "
+                      "E_theta is computed.");
     prm.leave_subsection();
   }
 
@@ -75,6 +87,7 @@ namespace hemicontact
     exact_displacement    = prm.get("exact displacement");
     normal_multiplier     = prm.get("normal multiplier");
     tangential_multiplier = prm.get("tangential multiplier");
+    exact_temperature     = prm.get("exact temperature");
     prm.leave_subsection();
   }
 

@@ -75,10 +75,17 @@ namespace hemicontact
       HC_ESTIMATE("estimate_jumps", estimate_jumps),
       HC_ESTIMATE("estimate_neumann", estimate_neumann),
       HC_ESTIMATE("estimate_contact", estimate_contact),
-      StepColumn{"estimate_time", [](std::ostream &out, const S &s, const E &) {
+      StepColumn{"estimate_time",
+                 [](std::ostream &out, const S &s, const E &) {
                    if (s.time_estimated)
                      out << s.estimate_time;
-                 }}};
+                 }},
+      HC_COLUMN("thermal_energy", e.thermal),
+      HC_COLUMN("thermal_dissipation", e.thermal_dissipation),
+      HC_COLUMN("heat_supply", e.heat_supply),
+      HC_COLUMN("thermal_coupling_work", e.thermal_coupling_work),
+      HC_COLUMN("frictional_heat", e.frictional_heat),
+      HC_COLUMN("exchanged_heat", e.exchanged_heat)};
 #undef HC_COLUMN
 #undef HC_ESTIMATE
     return columns;

@@ -98,8 +98,9 @@ namespace hemicontact
     AssertThrow(tria != nullptr,
                 ExcMessage("adaptivity needs a p4est (hypercube) mesh"));
 
-    std::tie(stats.kinetic_before_adaptation, stats.elastic_before_adaptation) =
-      stored_energy(state());
+    const StoredEnergy before       = stored_energy(state());
+    stats.kinetic_before_adaptation = before.kinetic;
+    stats.elastic_before_adaptation = before.elastic;
     // mark: thresholds from all indicators, sorted, so the same on any
     // number of ranks (see marking_thresholds())
     const Vector<float> indicators = refinement_indicators(*this);
@@ -230,14 +231,14 @@ namespace hemicontact
             << "); moved back onto it" << std::endl;
     old_velocity = velocity;
 
-    std::tie(stats.kinetic_after_adaptation, stats.elastic_after_adaptation) =
-      stored_energy(state());
-    stats.adapted  = true;
-    energy.kinetic = stats.kinetic_after_adaptation;
-    energy.elastic = stats.elastic_after_adaptation;
-    energy.transfer_change +=
-      stats.kinetic_after_adaptation + stats.elastic_after_adaptation -
-      stats.kinetic_before_adaptation - stats.elastic_before_adaptation;
+    const StoredEnergy after       = stored_energy(state());
+    stats.kinetic_after_adaptation = after.kinetic;
+    stats.elastic_after_adaptation = after.elastic;
+    stats.adapted                  = true;
+    energy.kinetic                 = after.kinetic;
+    energy.elastic                 = after.elastic;
+    energy.thermal                 = after.thermal;
+    energy.transfer_change += after.change_from(before);
     // a finer mesh may have a smaller stability limit
     memory_rule_unstable =
       check_time_step_limits(state(), preconditioner, timer);

@@ -102,7 +102,7 @@ namespace hemicontact
   } // namespace
 
   template <int dim>
-  std::pair<double, double>
+  StoredEnergy
   stored_energy(const ProblemState<dim> &state)
   {
     const AffineConstraints<double> &base_constraints = state.base_constraints;
@@ -123,7 +123,13 @@ namespace hemicontact
     state.mass_matrix.vmult(tmp, w);
     const double kinetic = scheme.kinetic_energy(w * tmp);
     state.elastic_matrix.vmult(tmp, u_next);
-    return {kinetic, 0.5 * (u_next * tmp)};
+    StoredEnergy stored;
+    stored.kinetic = kinetic;
+    stored.elastic = 0.5 * (u_next * tmp);
+    if (state.heat && !scheme.is_static())
+      stored.thermal = state.heat->stored_heat(
+        state.added_fields.vector(HeatModel<dim>::field_name));
+    return stored;
   }
 
   template <int dim>
@@ -157,7 +163,10 @@ namespace hemicontact
           energy.memory_work = 0.5 * (memory.step_functional() * w);
         return;
       }
-    std::tie(energy.kinetic, energy.elastic) = stored_energy(state());
+    const StoredEnergy stored = stored_energy(state());
+    energy.kinetic            = stored.kinetic;
+    energy.elastic            = stored.elastic;
+    energy.thermal            = stored.thermal;
     if (initial)
       {
         energy.initial_energy = energy.total_energy();
@@ -385,11 +394,11 @@ namespace hemicontact
     return context.str();
   }
 
-#define HEMICONTACT_INSTANTIATE(dim)                                           \
-  template void ContactProblem<dim>::update_energy_balance(const bool);        \
-  template std::pair<double, double> stored_energy(const ProblemState<dim> &); \
-  template void ContactProblem<dim>::check_convexity(const std::string &);     \
-  template std::optional<std::string> convexity_recheck(                       \
+#define HEMICONTACT_INSTANTIATE(dim)                                            \
+  template void         ContactProblem<dim>::update_energy_balance(const bool); \
+  template StoredEnergy stored_energy(const ProblemState<dim> &);               \
+  template void ContactProblem<dim>::check_convexity(const std::string &);      \
+  template std::optional<std::string> convexity_recheck(                        \
     const ProblemState<dim> &, const double);
 
   HEMICONTACT_INSTANTIATE(2)

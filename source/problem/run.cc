@@ -130,16 +130,19 @@ namespace hemicontact
         if (memory.active())
           memory.commit_step(&velocity, &contact_traction);
         // the heat step of the staggered scheme (doc/theory.md 13.2)
+        HeatStepEnergy heat_terms;
         if (heat && !scheme.is_static())
           {
             TimerOutput::Scope t(timer, "heat step");
-            heat->heat_step(start + k,
-                            k,
-                            state(),
-                            linear_solver,
-                            added_fields.vector(HeatModel<dim>::field_name));
+            heat_terms =
+              heat->heat_step(start + k,
+                              k,
+                              state(),
+                              linear_solver,
+                              added_fields.vector(HeatModel<dim>::field_name));
           }
         update_energy_balance(/*initial=*/false);
+        book_heat_step(energy, heat_terms);
         last_step_length = k;
         return stats;
       }
@@ -187,13 +190,14 @@ namespace hemicontact
     // everything that depends on k: the step matrix rho/k M + A, its AMG
     // and the stored energy, whose elastic part is that of u_n + k w_n: the
     // change of k changes E_n by itself, booked like a mesh transfer
-    const std::pair<double, double> before = stored_energy(state());
-    time_step                              = k;
+    const StoredEnergy before = stored_energy(state());
+    time_step                 = k;
     assemble_constant_matrices(scheme.step_matrix(time_step));
     preconditioner.clear();
-    std::tie(energy.kinetic, energy.elastic) = stored_energy(state());
-    energy.transfer_change +=
-      energy.kinetic + energy.elastic - before.first - before.second;
+    const StoredEnergy after = stored_energy(state());
+    energy.kinetic           = after.kinetic;
+    energy.elastic           = after.elastic;
+    energy.transfer_change += after.change_from(before);
   }
 
 #define HEMICONTACT_INSTANTIATE(dim)                               \

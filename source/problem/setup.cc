@@ -74,6 +74,7 @@ namespace hemicontact
         heat = std::make_unique<HeatModel<dim>>(parameters.temperature,
                                                 parameters.data.constants,
                                                 scheme.is_static(),
+                                                this->data.heat,
                                                 comm);
         add_field(heat->field(discretization.is_simplex()));
       }

@@ -13,6 +13,7 @@
 #include <hemicontact/expressions/expression_function.h>
 #include <hemicontact/model/problem_data.h>
 #include <hemicontact/thermal/heat_model.h>
+#include <hemicontact/thermal/heat_step_values.h>
 
 #include <cmath>
 #include <map>
@@ -83,6 +84,7 @@ namespace hemicontact
   HeatModel<dim>::HeatModel(const TemperatureParameters &parameters,
                             const std::string           &constants,
                             const bool                   static_class,
+                            const HeatData<dim>         &derived,
                             MPI_Comm                     comm)
     : parameters(parameters)
     , static_class(static_class)
@@ -121,6 +123,14 @@ namespace hemicontact
                                    variables,
                                    parse_constants(constants),
                                    "temperature/exchange coefficient");
+    if (derived.initial_temperature)
+      initial_temperature = derived.initial_temperature;
+    if (derived.heat_source)
+      heat_source = derived.heat_source;
+    if (derived.prescribed_temperature)
+      prescribed_temperature = derived.prescribed_temperature;
+    normal_heat_flux    = derived.heat_flux;
+    contact_heat_source = derived.contact_heat_source;
   }
 
   template <int dim>
@@ -151,9 +161,14 @@ namespace hemicontact
   void
   HeatModel<dim>::make_constraints(const double t)
   {
-    constraints.clear();
-    constraints.reinit(*space->relevant);
-    DoFTools::make_hanging_node_constraints(*space->dof_handler, constraints);
+    // each made anew: a closed AffineConstraints takes no more lines
+    for (AffineConstraints<double> *c : {&hanging_constraints, &constraints})
+      {
+        c->clear();
+        c->reinit(*space->relevant);
+        DoFTools::make_hanging_node_constraints(*space->dof_handler, *c);
+      }
+    hanging_constraints.close();
     prescribed_temperature->set_time(t);
     std::map<types::boundary_id, const Function<dim> *> prescribed;
     for (const unsigned int id : parameters.prescribed_ids)
@@ -449,7 +464,7 @@ namespace hemicontact
   }
 
   template <int dim>
-  void
+  HeatStepEnergy
   HeatModel<dim>::heat_step(const double                   t,
                             const double                   k,
                             const ProblemState<dim>       &state,
@@ -472,45 +487,25 @@ namespace hemicontact
     const bool new_operator = (k != operator_step_length);
     if (new_operator)
       operator_matrix = 0;
-    rhs                                  = 0;
-    const Quadrature<dim>     quadrature = discretization->cell_quadrature(2);
-    const Quadrature<dim - 1> face_quadrature =
-      discretization->face_quadrature(2);
+    rhs                                     = 0;
     const FiniteElement<dim>            &fe = space->dof_handler->get_fe();
-    FEValues<dim>                        fe_theta(*discretization->mapping,
-                           fe,
-                           quadrature,
-                           update_values | update_gradients |
-                             update_quadrature_points | update_JxW_values);
-    FEValues<dim>                        fe_u(*discretization->mapping,
-                       *discretization->fe,
-                       quadrature,
-                       update_gradients);
-    FEFaceValues<dim>                    fe_face(*discretization->mapping,
-                              fe,
-                              face_quadrature,
-                              update_values | update_quadrature_points |
-                                update_JxW_values);
-    const FEValuesExtractors::Vector     v(0);
-    const unsigned int                   n = fe.n_dofs_per_cell();
+    HeatStepValues<dim>                  values(*discretization, fe);
+    FEValues<dim>                       &fe_theta = values.theta;
+    FEFaceValues<dim>                   &fe_face  = values.face;
+    const std::vector<double>           &div_w    = values.div_w;
+    const unsigned int                   n        = fe.n_dofs_per_cell();
     FullMatrix<double>                   local_matrix(n, n);
     Vector<double>                       local_rhs(n);
     std::vector<types::global_dof_index> dofs(n);
-    const unsigned int                   n_q = quadrature.size();
-    std::vector<double>                  theta_q(n_q), div_w(n_q), q_src(n_q),
-      q_n(face_quadrature.size());
+    const unsigned int                   n_q = values.quadrature.size();
+    std::vector<double>                  theta_q(n_q), q_src(n_q),
+      q_n(values.face_quadrature.size());
     std::string error;
     for (const auto &cell : space->dof_handler->active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          fe_theta.reinit(cell);
-          fe_u.reinit(typename DoFHandler<dim>::active_cell_iterator(
-            &cell->get_triangulation(),
-            cell->level(),
-            cell->index(),
-            &state.dof_handler));
+          values.reinit(cell, state.dof_handler, w);
           fe_theta.get_function_values(theta_old, theta_q);
-          fe_u[v].get_function_divergences(w, div_w);
           const std::vector<Point<dim>> &points =
             fe_theta.get_quadrature_points();
           const std::size_t first   = cell->active_cell_index() * n_q;
@@ -556,14 +551,10 @@ namespace hemicontact
                 }
             }
           for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary() &&
-                std::find(parameters.flux_ids.begin(),
-                          parameters.flux_ids.end(),
-                          cell->face(f)->boundary_id()) !=
-                  parameters.flux_ids.end())
+            if (on_flux_boundary(cell, f))
               {
                 fe_face.reinit(cell, f);
-                heat_flux->value_list(fe_face.get_quadrature_points(), q_n);
+                boundary_heat_flux(fe_face, t, q_n);
                 for (const unsigned int q : fe_face.quadrature_point_indices())
                   for (unsigned int i = 0; i < n; ++i)
                     local_rhs(i) +=
@@ -591,8 +582,7 @@ namespace hemicontact
 
     // Gamma_3, nodal quadrature: k_e theta_n on the left, k_e theta_F and
     // the frictional heat on the right (not where theta is prescribed)
-    const std::vector<NodeHeat> nodes      = contact_heat(t, state, theta);
-    double                      frictional = 0;
+    const std::vector<NodeHeat> nodes = contact_heat(t, state, theta);
     for (unsigned int i = 0; i < nodes.size(); ++i)
       {
         const ContactNode<dim> &node = state.contact_nodes[i];
@@ -608,7 +598,9 @@ namespace hemicontact
         rhs[d] += node.mass * (nodes[i].exchange_coefficient *
                                  nodes[i].foundation_temperature +
                                nodes[i].frictional_power);
-        frictional += node.mass * nodes[i].frictional_power;
+        if (contact_heat_source)
+          rhs[d] +=
+            node.mass * contact_heat_source(node.position, node.normal, t);
       }
     matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
@@ -619,17 +611,49 @@ namespace hemicontact
 
     const TrilinosWrappers::MPI::Vector theta_new =
       ghosted<dim>(theta, *space->owned, *space->relevant, mpi_communicator);
-    double exchanged = 0;
-    for (unsigned int i = 0; i < nodes.size(); ++i)
-      if (space->owned->is_element(node_dofs[i]) &&
-          !constraints.is_constrained(node_dofs[i]))
-        exchanged +=
-          state.contact_nodes[i].mass * nodes[i].exchange_coefficient *
-          (nodes[i].foundation_temperature - theta_new[node_dofs[i]]);
-    heat.frictional_heat +=
-      k * Utilities::MPI::sum(frictional, mpi_communicator);
-    heat.exchanged_heat += k * Utilities::MPI::sum(exchanged, mpi_communicator);
     heat.heat_content = heat_content(theta);
+    return step_energy(t, k, state, w, theta_old, theta_new, nodes);
+  }
+
+  template <int dim>
+  void
+  HeatModel<dim>::boundary_heat_flux(const FEFaceValues<dim> &fe_face,
+                                     const double             t,
+                                     std::vector<double>     &q_n) const
+  {
+    heat_flux->value_list(fe_face.get_quadrature_points(), q_n);
+    if (normal_heat_flux)
+      for (const unsigned int q : fe_face.quadrature_point_indices())
+        q_n[q] = normal_heat_flux(fe_face.quadrature_point(q),
+                                  fe_face.normal_vector(q),
+                                  t);
+  }
+
+  template <int dim>
+  double
+  HeatModel<dim>::stored_heat(const TrilinosWrappers::MPI::Vector &theta) const
+  {
+    const TrilinosWrappers::MPI::Vector theta_ghosted =
+      ghosted<dim>(theta, *space->owned, *space->relevant, mpi_communicator);
+    const Quadrature<dim> quadrature = discretization->cell_quadrature(2);
+    FEValues<dim>         fe(*discretization->mapping,
+                     space->dof_handler->get_fe(),
+                     quadrature,
+                     update_values | update_JxW_values);
+    std::vector<double>   theta_q(quadrature.size());
+    double                stored = 0;
+    for (const auto &cell : space->dof_handler->active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe.reinit(cell);
+          fe.get_function_values(theta_ghosted, theta_q);
+          const double *c_theta =
+            &coefficients
+               .c_theta[cell->active_cell_index() * quadrature.size()];
+          for (const unsigned int q : fe.quadrature_point_indices())
+            stored += 0.5 * c_theta[q] * theta_q[q] * theta_q[q] * fe.JxW(q);
+        }
+    return Utilities::MPI::sum(stored, mpi_communicator);
   }
 
   template class HeatModel<2>;

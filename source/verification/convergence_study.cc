@@ -8,6 +8,7 @@
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/output/output_file.h>
 #include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/thermal/heat_model.h>
 #include <hemicontact/verification/convergence_study.h>
 #include <hemicontact/verification/manufactured_smoothness.h>
 #include <hemicontact/verification/manufactured_solution.h>
@@ -32,18 +33,25 @@ namespace hemicontact
       double w_L2 = 0, w_V = 0, w_H1 = 0, u_V = 0, u_H1 = 0;
       /** |||e|||^2 of the step's unknown (doc/theory.md 12.1) */
       double energy = 0;
+      /** theta(t) - theta_h in L2 and in the H1 seminorm (with a
+       *  manufactured temperature, doc/theory.md 13.6) */
+      bool   with_temperature = false;
+      double theta_L2 = 0, theta_H1 = 0;
 
       /** The sums over the processes of the locally owned cells' parts. */
       StepErrors
       sum(MPI_Comm comm) const
       {
         StepErrors e;
-        e.w_L2   = Utilities::MPI::sum(w_L2, comm);
-        e.w_V    = Utilities::MPI::sum(w_V, comm);
-        e.w_H1   = Utilities::MPI::sum(w_H1, comm);
-        e.u_V    = Utilities::MPI::sum(u_V, comm);
-        e.u_H1   = Utilities::MPI::sum(u_H1, comm);
-        e.energy = Utilities::MPI::sum(energy, comm);
+        e.w_L2             = Utilities::MPI::sum(w_L2, comm);
+        e.w_V              = Utilities::MPI::sum(w_V, comm);
+        e.w_H1             = Utilities::MPI::sum(w_H1, comm);
+        e.u_V              = Utilities::MPI::sum(u_V, comm);
+        e.u_H1             = Utilities::MPI::sum(u_H1, comm);
+        e.energy           = Utilities::MPI::sum(energy, comm);
+        e.with_temperature = with_temperature;
+        e.theta_L2         = Utilities::MPI::sum(theta_L2, comm);
+        e.theta_H1         = Utilities::MPI::sum(theta_H1, comm);
         return e;
       }
     };
@@ -79,6 +87,50 @@ namespace hemicontact
       const StepMatrixCoefficients    c;
       const bool                      on_u;
     };
+
+    /** The squared L2 and H1-seminorm errors of theta_h at time @p t
+     *  into @p e (owned cells; the quadrature of step_errors()). */
+    template <int dim>
+    void
+    add_temperature_errors(const ContactProblem<dim>       &problem,
+                           const ManufacturedSolution<dim> &exact,
+                           const double                     t,
+                           MPI_Comm                         comm,
+                           StepErrors                      &e)
+    {
+      const char            *name  = HeatModel<dim>::field_name;
+      const FieldSpace<dim> &space = problem.state().added_fields.space(name);
+      TrilinosWrappers::MPI::Vector theta(*space.owned, *space.relevant, comm);
+      theta                        = problem.state().added_fields.vector(name);
+      const FiniteElement<dim> &fe = space.dof_handler->get_fe();
+      const Quadrature<dim>     quadrature =
+        fe.reference_cell().template get_gauss_type_quadrature<dim>(3);
+      FEValues<dim>       fe_values(*problem.state().discretization.mapping,
+                              fe,
+                              quadrature,
+                              update_values | update_gradients |
+                                update_quadrature_points | update_JxW_values);
+      std::vector<double> theta_h(quadrature.size());
+      std::vector<Tensor<1, dim>> grad_theta_h(quadrature.size());
+      e.with_temperature = true;
+      for (const auto &cell : space.dof_handler->active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            fe_values.get_function_values(theta, theta_h);
+            fe_values.get_function_gradients(theta, grad_theta_h);
+            const auto ex =
+              exact.temperature_values(fe_values.get_quadrature_points(), t);
+            for (const unsigned int q : fe_values.quadrature_point_indices())
+              {
+                e.theta_L2 +=
+                  std::pow(ex[q].theta - theta_h[q], 2) * fe_values.JxW(q);
+                e.theta_H1 +=
+                  (ex[q].grad_theta - grad_theta_h[q]).norm_square() *
+                  fe_values.JxW(q);
+              }
+          }
+    }
 
     /** @p relevant: the locally relevant dofs of the problem's mesh;
      *  @p cache: the exact fields' spatial part at its quadrature points. */
@@ -141,6 +193,8 @@ namespace hemicontact
                 e.energy += energy(gu, gw) * JxW;
               }
           }
+      if (exact.has_temperature())
+        add_temperature_errors(problem, exact, t, comm, e);
       return e.sum(comm);
     }
 
@@ -250,7 +304,10 @@ namespace hemicontact
       double       sum_time       = 0;
       bool         time_estimated = false;
       unsigned int newton = 0, max_newton = 0, n_steps = 0, max_dofs = 0;
-      double       branch[7] = {0, 0, 0, 0, 0, 0, 0};
+      /** k sum_n |theta(t_n) - theta_n|_H1^2 */
+      double sum_theta_H1     = 0;
+      bool   with_temperature = false;
+      double branch[7]        = {0, 0, 0, 0, 0, 0, 0};
 
       /** Add step @p s (of length @p k) with its errors @p e. */
       void
@@ -262,6 +319,12 @@ namespace hemicontact
         sum_V += k * e.w_V;
         sum_V_H1 += k * e.w_H1;
         sum_energy += k * e.energy;
+        if (e.with_temperature)
+          {
+            with_temperature = true;
+            errors.E_theta   = std::max(errors.E_theta, std::sqrt(e.theta_L2));
+            sum_theta_H1 += k * e.theta_H1;
+          }
         if (s.estimated)
           {
             estimated = true;
@@ -299,14 +362,16 @@ namespace hemicontact
       result() const
       {
         LevelResult r;
-        r.n_steps         = n_steps;
-        r.errors          = errors;
-        r.errors.E_V      = std::sqrt(sum_V);
-        r.errors.E_V_H1   = std::sqrt(sum_V_H1);
-        r.errors.E_energy = std::sqrt(sum_energy);
-        r.estimated       = estimated;
-        r.estimate        = std::sqrt(sum_estimate);
-        r.effectivity     = r.estimate / r.errors.E_energy;
+        r.n_steps           = n_steps;
+        r.errors            = errors;
+        r.errors.E_V        = std::sqrt(sum_V);
+        r.errors.E_V_H1     = std::sqrt(sum_V_H1);
+        r.errors.E_energy   = std::sqrt(sum_energy);
+        r.with_temperature  = with_temperature;
+        r.errors.E_theta_H1 = std::sqrt(sum_theta_H1);
+        r.estimated         = estimated;
+        r.estimate          = std::sqrt(sum_estimate);
+        r.effectivity       = r.estimate / r.errors.E_energy;
         for (unsigned int t = 0; t < 4; ++t)
           r.estimate_terms[t] = std::sqrt(sum_terms[t]);
         r.time_estimated = time_estimated;
@@ -469,7 +534,7 @@ namespace hemicontact
              "share_stick,share_slip,mean_dofs,max_dofs,step_wall_seconds,"
              "E_energy,estimate,effectivity,estimate_interior,estimate_jumps,"
              "estimate_neumann,estimate_contact,estimate_time,"
-             "effectivity_total\n";
+             "effectivity_total,E_theta,E_theta_H1\n";
     }
 
     std::string
@@ -498,6 +563,11 @@ namespace hemicontact
       // the time indicator's columns: velocity classes only
       if (r.time_estimated)
         csv << "," << r.estimate_time << "," << r.effectivity_total;
+      else
+        csv << ",,";
+      // the temperature's: with a manufactured temperature only
+      if (r.with_temperature)
+        csv << "," << e.E_theta << "," << e.E_theta_H1;
       else
         csv << ",,";
       csv << "\n";
@@ -546,6 +616,11 @@ namespace hemicontact
       table.add_value("E_u", r.errors.E_u);
       table.add_value("E_V(H1)", r.errors.E_V_H1);
       table.add_value("E_u(H1)", r.errors.E_u_H1);
+      if (r.with_temperature)
+        {
+          table.add_value("E_theta", r.errors.E_theta);
+          table.add_value("E_theta(H1)", r.errors.E_theta_H1);
+        }
       table.add_value("newton", r.mean_newton_iterations);
       if (r.estimated)
         {
@@ -571,9 +646,14 @@ namespace hemicontact
                  const unsigned int n_levels,
                  const bool         against_dofs,
                  const bool         with_estimate,
-                 const bool         with_time_estimate)
+                 const bool         with_time_estimate,
+                 const bool         with_temperature)
     {
-      for (const char *column : {"E_H", "E_V", "E_u", "E_V(H1)", "E_u(H1)"})
+      std::vector<const char *> columns = {
+        "E_H", "E_V", "E_u", "E_V(H1)", "E_u(H1)"};
+      if (with_temperature)
+        columns.insert(columns.end(), {"E_theta", "E_theta(H1)"});
+      for (const char *column : columns)
         {
           table.set_scientific(column, true);
           table.set_precision(column, 3);
@@ -717,7 +797,8 @@ namespace hemicontact
                  n_levels,
                  against_dofs,
                  parameters.output.error_estimate,
-                 results.back().time_estimated);
+                 results.back().time_estimated,
+                 results.back().with_temperature);
     if (verbose)
       {
         if (against_dofs)

@@ -4,6 +4,7 @@
 
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/verification/manufactured_solution.h>
+#include <hemicontact/verification/tape_at_points.h>
 
 #include <cmath>
 
@@ -11,13 +12,6 @@ namespace hemicontact
 {
   namespace
   {
-    std::vector<std::string>
-    variable_names(const int dim)
-    {
-      return dim == 2 ? std::vector<std::string>{"x", "y", "t"} :
-                        std::vector<std::string>{"x", "y", "z", "t"};
-    }
-
     std::vector<Expression>
     parse_vector(const std::string                   &text,
                  const int                            dim,
@@ -33,7 +27,7 @@ namespace hemicontact
       std::vector<Expression> result;
       for (const std::string &part : parts)
         result.emplace_back(part,
-                            variable_names(dim),
+                            space_time_variables(dim),
                             constants,
                             "manufactured solution/" + name);
       return result;
@@ -57,7 +51,7 @@ namespace hemicontact
       parse_vector(m.exact_displacement, dim, constants, "exact displacement");
     normal_multiplier =
       std::make_unique<Expression>(m.normal_multiplier,
-                                   variable_names(dim),
+                                   space_time_variables(dim),
                                    constants,
                                    "manufactured solution/normal multiplier");
     tangential_multiplier = parse_vector(m.tangential_multiplier,
@@ -77,6 +71,8 @@ namespace hemicontact
                                              parameters.data.constants);
     for (int c = 0; c < dim; ++c)
       displacement_rate.push_back(displacement[c].derivative(dim));
+    if (parameters.temperature.enabled)
+      temperature = std::make_unique<ManufacturedTemperature<dim>>(parameters);
 
     // the derivatives, once: t is variable number dim; in the static class
     // the laws see u itself, which takes the place of w (doc/theory.md 9.7)
@@ -149,30 +145,6 @@ namespace hemicontact
 
   namespace
   {
-    /** @p tape at every point of @p points at time @p t: n_outputs()
-     *  results per point (through @p cache unless it is null). */
-    template <int dim>
-    std::vector<double>
-    evaluate_tape(const ExpressionTape          &tape,
-                  const std::vector<Point<dim>> &points,
-                  const double                   t,
-                  SpatialCache                  *cache = nullptr)
-    {
-      std::vector<double> at(points.size() * (dim + 1));
-      for (unsigned int p = 0; p < points.size(); ++p)
-        {
-          for (int i = 0; i < dim; ++i)
-            at[p * (dim + 1) + i] = points[p][i];
-          at[p * (dim + 1) + dim] = t;
-        }
-      std::vector<double> r(points.size() * tape.n_outputs());
-      if (cache)
-        cache->evaluate(at.data(), dim + 1, points.size(), r.data());
-      else
-        tape.evaluate(at.data(), dim + 1, points.size(), r.data());
-      return r;
-    }
-
     /** u, w, grad u, grad w from the outputs of the fields tape. */
     template <int dim>
     void
@@ -401,6 +373,13 @@ namespace hemicontact
         unpack_second_derivatives(r.data() + p * force_tape->n_outputs(), v);
         forces[p] = inertia_density * v.w_dot - v.div_sigma - memory[p];
       }
+    // sigma's -c_e theta I: -Div sigma gains grad(c_e theta)
+    if (temperature)
+      {
+        const auto theta = temperature->evaluate(points, t);
+        for (unsigned int p = 0; p < points.size(); ++p)
+          forces[p] += theta[p].grad_thermal_stress;
+      }
     return forces;
   }
 
@@ -439,12 +418,34 @@ namespace hemicontact
                                               const Tensor<1, dim> &normal,
                                               const double          t) const
   {
-    return (stress(evaluate_fields(p, t)) + memory_stress(p, t)) * normal;
+    return (stress(evaluate_fields(p, t)) + memory_stress(p, t)) * normal -
+           thermal_stress(p, t) * normal;
   }
 
   template <int dim>
-  Tensor<1, dim>
-  ManufacturedSolution<dim>::contact_traction(const Point<dim>     &p,
+  double
+  ManufacturedSolution<dim>::thermal_stress(const Point<dim> &p,
+                                            const double      t) const
+  {
+    if (!temperature)
+      return 0;
+    const auto theta = temperature->evaluate(std::vector<Point<dim>>{p}, t);
+    return theta[0].c_e * theta[0].theta;
+  }
+
+  template <int dim>
+  std::vector<typename ManufacturedTemperature<dim>::Values>
+  ManufacturedSolution<dim>::temperature_values(
+    const std::vector<Point<dim>> &points,
+    const double                   t) const
+  {
+    Assert(temperature, ExcInternalError());
+    return temperature->evaluate(points, t);
+  }
+
+  template <int dim>
+  typename ManufacturedSolution<dim>::ContactResponse
+  ManufacturedSolution<dim>::contact_response(const Point<dim>     &p,
                                               const Tensor<1, dim> &normal,
                                               const double          t) const
   {
@@ -490,8 +491,18 @@ namespace hemicontact
     else
       xi_t = friction.response(bound, w_t.norm()) * w_t / w_t.norm();
 
-    return (stress(v) + memory_stress(p, t)) * normal +
-           (xi_n + n_memory) * normal + xi_t;
+    return {v, xi_n + n_memory, xi_t};
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  ManufacturedSolution<dim>::contact_traction(const Point<dim>     &p,
+                                              const Tensor<1, dim> &normal,
+                                              const double          t) const
+  {
+    const ContactResponse r = contact_response(p, normal, t);
+    return (stress(r.v) + memory_stress(p, t)) * normal -
+           thermal_stress(p, t) * normal + r.pressure * normal + r.xi_tau;
   }
 
   template <int dim>
@@ -576,7 +587,83 @@ namespace hemicontact
       [this](const Point<dim> &p, const Tensor<1, dim> &n, double t) {
         return contact_traction(p, n, t);
       };
+    if (temperature)
+      data.heat = make_heat_data();
     return data;
+  }
+
+  template <int dim>
+  HeatData<dim>
+  ManufacturedSolution<dim>::make_heat_data() const
+  {
+    /** The scalar fields of the heat data. */
+    enum class Kind
+    {
+      initial_temperature, ///< theta(x, 0)
+      temperature,         ///< theta(x, t)
+      heat_source          ///< q(x, t)
+    };
+    class Field : public Function<dim>
+    {
+    public:
+      Field(const ManufacturedSolution<dim> &m, const Kind kind)
+        : Function<dim>(1)
+        , m(m)
+        , kind(kind)
+      {}
+      void
+      value_list(const std::vector<Point<dim>> &points,
+                 std::vector<double>           &values,
+                 const unsigned int) const override
+      {
+        const double t =
+          kind == Kind::initial_temperature ? 0. : this->get_time();
+        if (kind == Kind::heat_source)
+          {
+            // c_e div w with the exact w
+            const std::vector<Values> v = m.evaluate_fields(points, t);
+            std::vector<double>       div_w(points.size());
+            for (unsigned int p = 0; p < points.size(); ++p)
+              div_w[p] = trace(v[p].grad_w);
+            values = m.temperature->heat_source(points, div_w, t);
+            return;
+          }
+        const auto theta = m.temperature->evaluate(points, t);
+        for (unsigned int p = 0; p < points.size(); ++p)
+          values[p] = theta[p].theta;
+      }
+      double
+      value(const Point<dim> &p, const unsigned int) const override
+      {
+        std::vector<double> v(1);
+        value_list({p}, v, 0);
+        return v[0];
+      }
+
+    private:
+      const ManufacturedSolution<dim> &m;
+      const Kind                       kind;
+    };
+
+    HeatData<dim> heat;
+    heat.initial_temperature =
+      std::make_shared<Field>(*this, Kind::initial_temperature);
+    heat.prescribed_temperature =
+      std::make_shared<Field>(*this, Kind::temperature);
+    heat.heat_source = std::make_shared<Field>(*this, Kind::heat_source);
+    heat.heat_flux =
+      [this](const Point<dim> &p, const Tensor<1, dim> &n, double t) {
+        return temperature->normal_flux(p, n, t);
+      };
+    // g_3 with the exact u_nu and |xi_tau . w_tau| of the friction law
+    heat.contact_heat_source =
+      [this](const Point<dim> &p, const Tensor<1, dim> &n, double t) {
+        const ContactResponse r     = contact_response(p, n, t);
+        const Tensor<1, dim>  w_tau = r.v.w - (r.v.w * n) * n;
+        return temperature->contact_heat_source(
+          p, n, t, r.v.u * n, std::abs(r.xi_tau * w_tau));
+      };
+    return heat;
   }
 
   template class ManufacturedSolution<2>;

@@ -38,8 +38,8 @@ body, checksum = text[:cut], text[cut:]
 tokens = body.split(' ')
 # 22 serialization::archive V 0 1 step k n_steps 0 0 count item_version
 # 0 0 (length name value) per energy term ...
-assert tokens[10] == '10' and tokens[15] == 'kinetic', tokens[:16]
-tokens[10] = '9'
+assert tokens[15] == 'kinetic', tokens[:16]
+tokens[10] = str(int(tokens[10]) - 1)
 del tokens[14:17]
 body = ' '.join(tokens)
 if len(sys.argv) > 2:

@@ -423,6 +423,8 @@ namespace hemicontact
     std::string exact_displacement;    ///< dim expressions in x, y, z, t
     std::string normal_multiplier;     ///< s* in (0, a) where w_nu = 0
     std::string tangential_multiplier; ///< lambda* (|.| < F_b) where w_tau = 0
+    /** theta(x, t) with 'temperature/enabled' (doc/theory.md 13.6) */
+    std::string exact_temperature;
 
     static void
     declare(ParameterHandler &prm);

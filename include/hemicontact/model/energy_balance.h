@@ -51,11 +51,30 @@ namespace hemicontact
      * load value of the static class; 0 without memory.
      */
     double memory_work = 0;
+    /**
+     * The temperature's terms (doc/theory.md 13.4), zero without one: the
+     * heat step tested with theta_n. thermal = 1/2 c_theta |theta_n|^2;
+     * thermal_dissipation = sum k (K grad theta_n, grad theta_n) (its
+     * numerical dissipation 1/2 c_theta |theta_n - theta_{n-1}|^2 is in
+     * numerical_dissipation); heat_supply = sum k (heat sources, theta_n)
+     * with the prescribed temperature's boundary heat; thermal_coupling_work
+     * = -sum k (c_e div w_n, theta_n), which with the thermal stress's work
+     * in external_work leaves the staggering's sum k (c_e (theta_{n-1} -
+     * theta_n), div w_n).
+     */
+    double thermal = 0, thermal_dissipation = 0, heat_supply = 0,
+           thermal_coupling_work = 0;
+    /**
+     * The heat booked (doc/theory.md 13.4): sum k sum_i m_i gamma
+     * |sigma_tau . w_tau|_i (frictional) and sum k sum_i m_i k_e,i
+     * (theta_F - theta_n)_i (exchanged), both into the body.
+     */
+    double frictional_heat = 0, exchanged_heat = 0;
 
     double
     total_energy() const
     {
-      return kinetic + elastic;
+      return kinetic + elastic + thermal;
     }
 
     /** E_n - E_0 + dissipations - work: zero up to solver tolerance. */
@@ -66,23 +85,25 @@ namespace hemicontact
                        viscous_dissipation + friction_dissipation +
                        damping_dissipation + numerical_dissipation -
                        external_work;
-      return memory_work == 0. ? d : d + memory_work;
+      const double thermal_terms =
+        thermal_dissipation - heat_supply - thermal_coupling_work;
+      // the terms a run without them has are added only where they are,
+      // so that such a run's defect is the same number
+      return (memory_work == 0. ? d : d + memory_work) +
+             (thermal_terms == 0. ? 0. : thermal_terms);
     }
 
     /**
-     * The energy put into the body: |E_0| + |sum k <f_n, w_n>| + |transfer
-     * changes| (+ |memory work|, which a kernel may turn into energy put
-     * in). A stable run holds at most about this much (the dissipations of
-     * the laws and the viscosity are non-negative), so it is the scale the
-     * defect is measured against: an energy that explodes cannot hide its
-     * own round-off in it.
+     * The energy put into the body: data_energy() (+ |memory work|, which
+     * a kernel may turn into energy put in). A stable run holds at most about
+     * this much (the dissipations of the laws and the viscosity are
+     * non-negative), so it is the scale the defect is measured against: an
+     * energy that explodes cannot hide its own round-off in it.
      */
     double
     supplied_energy() const
     {
-      const double e = std::abs(initial_energy) + std::abs(external_work) +
-                       std::abs(transfer_change);
-      return memory_work == 0. ? e : e + std::abs(memory_work);
+      return data_energy() + std::abs(memory_work);
     }
 
     /** The defect relative to the energy supplied. */
@@ -101,7 +122,8 @@ namespace hemicontact
 
     /**
      * The energy the data put into the body: |E_0| + |sum k <f_n, w_n>| +
-     * |transfer changes|, without the memory's work, which an unstable
+     * |transfer changes| (+ |heat supply| + |thermal coupling work| with a
+     * temperature), without the memory's work, which an unstable
      * memory rule inflates with the energy it creates (doc/theory.md
      * 11.13).
      */
@@ -109,7 +131,8 @@ namespace hemicontact
     data_energy() const
     {
       return std::abs(initial_energy) + std::abs(external_work) +
-             std::abs(transfer_change);
+             std::abs(transfer_change) + std::abs(heat_supply) +
+             std::abs(thermal_coupling_work);
     }
 
     /** E_n relative to data_energy(). */
@@ -139,7 +162,13 @@ namespace hemicontact
       {"external_work", &E::external_work},
       {"numerical_dissipation", &E::numerical_dissipation},
       {"transfer_change", &E::transfer_change},
-      {"memory_work", &E::memory_work}};
+      {"memory_work", &E::memory_work},
+      {"thermal", &E::thermal},
+      {"thermal_dissipation", &E::thermal_dissipation},
+      {"heat_supply", &E::heat_supply},
+      {"thermal_coupling_work", &E::thermal_coupling_work},
+      {"frictional_heat", &E::frictional_heat},
+      {"exchanged_heat", &E::exchanged_heat}};
     return terms;
   }
 } // namespace hemicontact

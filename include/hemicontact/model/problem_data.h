@@ -18,6 +18,26 @@ namespace hemicontact
   using namespace dealii;
 
   /**
+   * The heat data a manufactured solution derives (doc/theory.md 13.6):
+   * those set replace the expressions of the 'temperature' subsection.
+   */
+  template <int dim>
+  struct HeatData
+  {
+    /** theta_0, q and theta_D (time from set_time()) */
+    std::shared_ptr<Function<dim>> initial_temperature, heat_source,
+      prescribed_temperature;
+    /** A scalar that depends on the outward normal: (point, normal, t). */
+    using NormalScalar =
+      std::function<double(const Point<dim> &, const Tensor<1, dim> &, double)>;
+    /** q_N on the flux ids */
+    NormalScalar heat_flux;
+    /** A heat source on Gamma_3, by nodal quadrature as the contact heat
+     *  law's terms */
+    NormalScalar contact_heat_source;
+  };
+
+  /**
    * The data of the contact problem as Function objects: f0, f2, f3 and
    * the initial fields (dim components each), and the friction bound F_b
    * (an expression that may depend on the normal displacement). Built from the
@@ -43,6 +63,8 @@ namespace hemicontact
       Tensor<1, dim>(const Point<dim> &, const Tensor<1, dim> &, double)>;
     NormalTraction surface_traction_with_normal;
     NormalTraction contact_traction_with_normal;
+    /** The derived heat data (none without a manufactured temperature). */
+    HeatData<dim> heat;
 
     /** The time last passed to set_time(). */
     double time = 0;

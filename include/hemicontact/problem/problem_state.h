@@ -116,12 +116,27 @@ namespace hemicontact
            state.step_number < state.n_steps;
   }
 
-  /**
-   * The stored energy now: kinetic rho/2 |w_n|^2 and elastic
-   * 1/2 a_B(u, u), u the displacement held after step n (diagnostics.cc).
-   */
+  /** The energy stored in the state (doc/theory.md 9.3, 13.4). */
+  struct StoredEnergy
+  {
+    double kinetic = 0; ///< rho/2 |w_n|^2
+    double elastic = 0; ///< 1/2 a_B(u, u), u held after step n
+    /** 1/2 c_theta |theta_n|^2 in the velocity classes' heat equation */
+    double thermal = 0;
+
+    /** The change from @p before (in the order of the terms, so that a
+     *  run without temperature books the same number as it always has). */
+    double
+    change_from(const StoredEnergy &before) const
+    {
+      return kinetic + elastic + thermal - before.kinetic - before.elastic -
+             before.thermal;
+    }
+  };
+
+  /** The stored energy now (diagnostics.cc). */
   template <int dim>
-  std::pair<double, double>
+  StoredEnergy
   stored_energy(const ProblemState<dim> &state);
 
   /**

@@ -24,7 +24,7 @@ namespace hemicontact
      * (doc/outputs.md, "Checkpoints"); a file of another is refused with
      * its number.
      */
-    static constexpr unsigned int current_format_version = 1;
+    static constexpr unsigned int current_format_version = 2;
     /** The format of the file read (its class version). */
     unsigned int format_version = current_format_version;
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deal.II/base/function.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -9,10 +10,13 @@
 
 #include <hemicontact/expressions/expression.h>
 #include <hemicontact/input/parameters.h>
+#include <hemicontact/model/energy_balance.h>
+#include <hemicontact/model/problem_data.h>
 #include <hemicontact/problem/problem_state.h>
 #include <hemicontact/solver/linear_solver.h>
 #include <hemicontact/state/added_fields.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <utility>
@@ -20,13 +24,42 @@
 
 namespace hemicontact
 {
-  /** The heat booked over a run (doc/theory.md, section 13.4). */
+  /**
+   * The heat step n tested with theta_n, times k (doc/theory.md, section
+   * 13.4): with HeatModel::stored_heat() S, S(theta_n) - S(theta_{n-1}) +
+   * numerical + dissipation = supply + coupling up to the solver
+   * tolerance.
+   */
+  struct HeatStepEnergy
+  {
+    double numerical   = 0; ///< 1/2 c_theta |theta_n - theta_{n-1}|^2
+    double dissipation = 0; ///< k (K grad theta_n, grad theta_n)
+    /** k (q, theta_n) + k (q_N, theta_n)_{Gamma_N} + k sum_i m_i [k_e
+     *  (theta_F - theta_n) + gamma |sigma_tau . w_tau| (+ g_3)]_i theta_n,i
+     *  + the heat of the prescribed temperature's boundary */
+    double supply   = 0;
+    double coupling = 0; ///< -k (c_e div w_n, theta_n)
+    /** k sum_i m_i gamma |sigma_tau . w_tau|_i: the frictional heat in */
+    double frictional_heat = 0;
+    /** k sum_i m_i k_e,i (theta_F - theta_n)_i: the heat exchanged in */
+    double exchanged_heat = 0;
+  };
+
+  /** Add the terms of heat step @p step to the sums of @p energy. */
+  inline void
+  book_heat_step(EnergyBalance &energy, const HeatStepEnergy &step)
+  {
+    energy.numerical_dissipation += step.numerical;
+    energy.thermal_dissipation += step.dissipation;
+    energy.heat_supply += step.supply;
+    energy.thermal_coupling_work += step.coupling;
+    energy.frictional_heat += step.frictional_heat;
+    energy.exchanged_heat += step.exchanged_heat;
+  }
+
+  /** What the heat model reports of the run (doc/theory.md, section 13.4). */
   struct HeatBalance
   {
-    /** sum_n k sum_i m_i gamma |sigma_tau . w_tau|: frictional heat in. */
-    double frictional_heat = 0;
-    /** sum_n k sum_i m_i k_e (theta_F - theta_n): heat exchanged in. */
-    double exchanged_heat = 0;
     /** int c_theta theta_n of the last heat step and of theta_0. */
     double heat_content         = 0;
     double initial_heat_content = 0;
@@ -72,10 +105,12 @@ namespace hemicontact
   class HeatModel
   {
   public:
-    /** The data of @p parameters with the user @p constants. */
+    /** The data of @p parameters with the user @p constants; those of
+     *  @p derived that are set replace them (a manufactured solution). */
     HeatModel(const TemperatureParameters &parameters,
               const std::string           &constants,
               const bool                   static_class,
+              const HeatData<dim>         &derived,
               MPI_Comm                     comm);
 
     /** The name of theta in the state's list of fields. */
@@ -109,9 +144,9 @@ namespace hemicontact
     /**
      * The heat step at t = @p t with step length @p k: @p theta holds
      * theta_{n-1} on entry and theta_n on return; w_n, u_n and the nodal
-     * traction from @p state.
+     * traction from @p state. Returns the step's energy terms.
      */
-    void
+    HeatStepEnergy
     heat_step(const double                   t,
               const double                   k,
               const ProblemState<dim>       &state,
@@ -138,6 +173,11 @@ namespace hemicontact
     std::vector<std::pair<std::string, Vector<float>>>
     cell_output(const TrilinosWrappers::MPI::Vector &theta) const;
 
+    /** 1/2 int c_theta theta^2 of @p theta (owned entries), with the
+     *  quadrature of the heat step's capacity term. */
+    double
+    stored_heat(const TrilinosWrappers::MPI::Vector &theta) const;
+
     /** Book int c_theta theta_0 (the start of a run). */
     void
     start(const TrilinosWrappers::MPI::Vector &theta);
@@ -161,6 +201,41 @@ namespace hemicontact
     void
     cache_coefficients();
 
+    /**
+     * The terms of the heat step at @p t of length @p k tested with
+     * theta_n = @p theta_new, from theta_{n-1} = @p theta_old and w_n =
+     * @p w (all ghosted) and the contact heat law's terms @p nodes;
+     * the heat of the prescribed temperature's boundary from the residual
+     * of its rows (heat_step_energy.cc).
+     */
+    HeatStepEnergy
+    step_energy(const double                         t,
+                const double                         k,
+                const ProblemState<dim>             &state,
+                const TrilinosWrappers::MPI::Vector &w,
+                const TrilinosWrappers::MPI::Vector &theta_old,
+                const TrilinosWrappers::MPI::Vector &theta_new,
+                const std::vector<NodeHeat>         &nodes) const;
+
+    /** q_N at the quadrature points of @p fe_face (a face of a heat flux
+     *  id) at time @p t into @p q_n. */
+    void
+    boundary_heat_flux(const FEFaceValues<dim> &fe_face,
+                       const double             t,
+                       std::vector<double>     &q_n) const;
+
+    /** Whether face @p f of @p cell is on a heat flux id. */
+    template <typename Cell>
+    bool
+    on_flux_boundary(const Cell &cell, const unsigned int f) const
+    {
+      return cell->face(f)->at_boundary() &&
+             std::find(parameters.flux_ids.begin(),
+                       parameters.flux_ids.end(),
+                       cell->face(f)->boundary_id()) !=
+               parameters.flux_ids.end();
+    }
+
     /** int c_theta theta. */
     double
     heat_content(const TrilinosWrappers::MPI::Vector &theta) const;
@@ -179,10 +254,13 @@ namespace hemicontact
     std::shared_ptr<Function<dim>> foundation_temperature;
     std::shared_ptr<Function<dim>> given_temperature;
     std::unique_ptr<Expression>    exchange_coefficient;
+    /** q_N and the Gamma_3 heat source of a manufactured solution */
+    typename HeatData<dim>::NormalScalar normal_heat_flux, contact_heat_source;
 
     const FieldSpace<dim>     *space          = nullptr;
     const Discretization<dim> *discretization = nullptr;
-    AffineConstraints<double>  constraints;
+    /** The hanging nodes' constraints, and those with theta_D. */
+    AffineConstraints<double> hanging_constraints, constraints;
     /** c_theta/k M + K for the step length operator_step_length. */
     TrilinosWrappers::SparseMatrix operator_matrix;
     double                         operator_step_length = 0;

@@ -15,7 +15,8 @@ namespace hemicontact
    * The errors of doc/theory.md section 5 for one run against a manufactured
    * solution, with e_n = w(t_n) - w_n and ||v||_V = ||eps(v)||_L2:
    * E_H = max_n ||e_n||_L2, E_V = (k sum_n ||e_n||_V^2)^{1/2},
-   * E_u = max_n ||u(t_n) - u_n||_V, and the same in the H1 seminorm.
+   * E_u = max_n ||u(t_n) - u_n||_V, and the same in the H1 seminorm; with
+   * a temperature also E_theta and E_theta_H1.
    */
   struct ErrorNorms
   {
@@ -31,6 +32,12 @@ namespace hemicontact
      * (doc/theory.md 12.1).
      */
     double E_energy = 0;
+    /**
+     * With a manufactured temperature (doc/theory.md 13.6): E_theta =
+     * max_n ||theta(t_n) - theta_n||_L2 and E_theta_H1 = (k sum_n
+     * |theta(t_n) - theta_n|_H1^2)^{1/2}.
+     */
+    double E_theta = 0, E_theta_H1 = 0;
   };
 
   /** One level of a convergence study. */
@@ -48,6 +55,8 @@ namespace hemicontact
     double       mean_dofs = 0;
     unsigned int max_dofs  = 0;
     ErrorNorms   errors;
+    /** Whether errors has E_theta and E_theta_H1. */
+    bool         with_temperature       = false;
     double       mean_newton_iterations = 0;
     unsigned int max_newton_iterations  = 0;
     double       wall_seconds           = 0;

@@ -17,6 +17,7 @@
 #include <hemicontact/model/kelvin_voigt.h>
 #include <hemicontact/model/problem_data.h>
 #include <hemicontact/model/step_scheme.h>
+#include <hemicontact/verification/manufactured_temperature.h>
 
 #include <memory>
 #include <vector>
@@ -47,6 +48,10 @@ namespace hemicontact
    * ds, and the contact pressure p_nu of the bound is xi_nu + N; a bound in
    * s_tau reads the exact slip S(t) = int_0^t |du_tau/ds| ds (the same
    * quadrature; doc/theory.md 11.11).
+   *
+   * With 'temperature/enabled', theta(x, t) of 'exact temperature'
+   * (ManufacturedTemperature) adds the thermal stress -c_e theta I to
+   * sigma in f0, f2 and f3, and gives the heat data (doc/theory.md 13.6).
    */
   template <int dim>
   class ManufacturedSolution
@@ -142,14 +147,51 @@ namespace hemicontact
                      const Tensor<1, dim> &normal,
                      const double          t) const;
 
+    /** Whether the solution has a temperature (ManufacturedTemperature). */
+    bool
+    has_temperature() const
+    {
+      return temperature != nullptr;
+    }
+
+    /** theta and its derivatives at @p points at @p t (has_temperature()). */
+    std::vector<typename ManufacturedTemperature<dim>::Values>
+    temperature_values(const std::vector<Point<dim>> &points,
+                       const double                   t) const;
+
     /**
-     * The problem data: derived f0, f2, f3, u0, w0 and the friction bound
-     * of the parameter file. The returned data refer to this object.
+     * The problem data: derived f0, f2, f3, u0, w0, the friction bound
+     * of the parameter file and, with a temperature, the heat data. The
+     * returned data refer to this object.
      */
     ProblemData<dim>
     make_problem_data() const;
 
   private:
+    /** The exact fields and the multipliers at a point of Gamma_3. */
+    struct ContactResponse
+    {
+      Values v;
+      /** xi_nu + N: the normal multiplier with the normal memory */
+      double pressure = 0;
+      /** xi_tau */
+      Tensor<1, dim> xi_tau;
+    };
+
+    /** The response at (@p p, @p t) with the outward @p normal. */
+    ContactResponse
+    contact_response(const Point<dim>     &p,
+                     const Tensor<1, dim> &normal,
+                     const double          t) const;
+
+    /** c_e theta at (@p p, @p t); zero without a temperature. */
+    double
+    thermal_stress(const Point<dim> &p, const double t) const;
+
+    /** The heat data of make_problem_data(). */
+    HeatData<dim>
+    make_heat_data() const;
+
     /** w_dot and Div sigma from the force tape's outputs at @p r. */
     void
     unpack_second_derivatives(const double *r, Values &v) const;
@@ -194,5 +236,7 @@ namespace hemicontact
     std::unique_ptr<NormalMemoryKernel> normal_memory;
     /** du_c/dt (also in the static class, where w is u), for the slip. */
     std::vector<Expression> displacement_rate;
+    /** theta, or null without 'temperature/enabled'. */
+    std::unique_ptr<ManufacturedTemperature<dim>> temperature;
   };
 } // namespace hemicontact
