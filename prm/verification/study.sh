@@ -15,12 +15,14 @@
 # errors against the run with time step K on the same mesh instead of the
 # manufactured solution ('convergence study/reference time step',
 # doc/verification.md) and appends -reference to the directory.
+# COUPLING=iterated sets 'temperature/coupling' (doc/theory.md 13.2) and
+# appends -iterated to the directory.
 # HEMICONTACT=PATH runs that program instead of build/hemicontact.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 case_name=$1; type=$2; levels=$3; refinement=$4; time_step=$5; np=${6:-1}
 class=${CLASS:-}; scheme=${SCHEME:-}; estimate=${ESTIMATE:-false}
-reference=${REFERENCE:-}
+reference=${REFERENCE:-}; coupling=${COUPLING:-}
 program=${HEMICONTACT:-$root/build/hemicontact}
 out="$root/results/$case_name-$type"
 if [ -n "$class$scheme" ]; then
@@ -29,6 +31,7 @@ if [ -n "$class$scheme" ]; then
 fi
 [ "$estimate" != true ] || out="$out-estimate"
 [ -z "$reference" ] || out="$out-reference"
+[ -z "$coupling" ] || out="$out-$coupling"
 mkdir -p "$out"
 {
   cat "$root/prm/verification/$case_name.prm"
@@ -40,6 +43,7 @@ mkdir -p "$out"
   [ -z "$scheme" ] || printf 'subsection problem\n  set time scheme = %s\nend\n' "$scheme"
   [ "$estimate" != true ] || printf 'subsection output\n  set error estimate = true\nend\n'
   [ -z "$reference" ] || printf 'subsection convergence study\n  set reference time step = %s\nend\n' "$reference"
+  [ -z "$coupling" ] || printf 'subsection temperature\n  set coupling = %s\nend\n' "$coupling"
 } > "$out/study.prm"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 start=$(date +%s)

@@ -98,6 +98,12 @@ namespace hemicontact
               "work with 'temperature/enabled = true': the reference run "
               "keeps u and w, not theta. Set it to 0 (the errors against "
               "the manufactured solution).");
+      require(!is_static ||
+                temperature.coupling == TemperatureCoupling::staggered,
+              "temperature: 'coupling = iterated' couples the mechanical "
+              "step with the heat equation of the dynamic and the "
+              "quasistatic class; the static class's theta is data. Set "
+              "'temperature/coupling = staggered'.");
       require(!parameters.output.error_estimate,
               "temperature: 'temperature/enabled = true' does not work with "
               "'output/error estimate = true': the estimate (doc/theory.md, "

@@ -123,6 +123,29 @@ namespace hemicontact
       "The static class: theta(x, y[, z], t) as data (a thermal load); the "
       "heat equation's entries are not used there. Empty in the dynamic "
       "and the quasistatic class.");
+    prm.declare_entry(
+      "coupling",
+      "staggered",
+      Patterns::Selection("staggered|iterated"),
+      "How the mechanical and the heat step meet at each time step "
+      "(doc/theory.md 13.2): 'staggered', each once, the mechanical step "
+      "with theta_{n-1} in its load; 'iterated', the mechanical step again "
+      "with the last theta_n and the heat step again from theta_{n-1}, "
+      "until the relative change of (w_n, theta_n) between two passes is "
+      "at most 'coupling tolerance' (the monolithic backward Euler scheme).");
+    prm.declare_entry("coupling tolerance",
+                      "1e-10",
+                      Patterns::Double(0),
+                      "'coupling = iterated': the relative change of w_n and "
+                      "of theta_n (l2 norms) between two passes that ends "
+                      "the iteration.");
+    prm.declare_entry(
+      "coupling iterations",
+      "20",
+      Patterns::Integer(2),
+      "'coupling = iterated': the most passes of the mechanical step per "
+      "time step; a step that needs more is retried with k/2, as after a "
+      "Newton failure ('nonlinear solver/time step halvings').");
     prm.leave_subsection();
   }
 
@@ -145,7 +168,16 @@ namespace hemicontact
     foundation_temperature       = prm.get("foundation temperature");
     const std::string gamma_text = prm.get("frictional heat fraction");
     given_temperature            = prm.get("given temperature");
+    coupling                     = prm.get("coupling") == "iterated" ?
+                                     TemperatureCoupling::iterated :
+                                     TemperatureCoupling::staggered;
+    coupling_tolerance           = prm.get_double("coupling tolerance");
+    coupling_iterations          = prm.get_integer("coupling iterations");
     prm.leave_subsection();
+    require(coupling_tolerance > 0,
+            "temperature: 'coupling tolerance' must be positive (the "
+            "relative change of (w_n, theta_n) that ends the iterated "
+            "coupling).");
 
     frictional_heat_fraction = number_or_nan(gamma_text);
     require(std::isfinite(frictional_heat_fraction) &&

@@ -85,7 +85,8 @@ namespace hemicontact
       HC_COLUMN("heat_supply", e.heat_supply),
       HC_COLUMN("thermal_coupling_work", e.thermal_coupling_work),
       HC_COLUMN("frictional_heat", e.frictional_heat),
-      HC_COLUMN("exchanged_heat", e.exchanged_heat)};
+      HC_COLUMN("exchanged_heat", e.exchanged_heat),
+      HC_COLUMN("coupling_passes", s.coupling_passes)};
 #undef HC_COLUMN
 #undef HC_ESTIMATE
     return columns;

@@ -3,6 +3,7 @@
 
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/problem/error_indicators.h>
+#include <hemicontact/thermal/coupling_iteration.h>
 
 #include <algorithm>
 #include <functional>
@@ -127,20 +128,48 @@ namespace hemicontact
         StepStatistics stats =
           solve_with_bound(start + k, pressure, wall_length, false);
         scheme.displacement_after_step(displacement, velocity, k);
-        if (memory.active())
-          memory.commit_step(&velocity, &contact_traction);
-        // the heat step of the staggered scheme (doc/theory.md 13.2)
+        // the heat step, staggered or iterated with the mechanical step
+        // (doc/theory.md 13.2)
         HeatStepEnergy heat_terms;
         if (heat && !scheme.is_static())
           {
-            TimerOutput::Scope t(timer, "heat step");
-            heat_terms =
-              heat->heat_step(start + k,
-                              k,
-                              state(),
-                              linear_solver,
-                              added_fields.vector(HeatModel<dim>::field_name));
+            TrilinosWrappers::MPI::Vector &theta =
+              added_fields.vector(HeatModel<dim>::field_name);
+            const auto heat_step = [&]() {
+              TimerOutput::Scope t(timer, "heat step");
+              return heat->heat_step(
+                start + k, k, state(), linear_solver, theta);
+            };
+            const auto undo_mechanical_step = [&]() {
+              scheme.undo_displacement_after_step(displacement, velocity, k);
+            };
+            const auto redo_mechanical_step = [&]() {
+              undo_mechanical_step();
+              assemble_load(start + k);
+              assemble_step_rhs();
+              const StepStatistics again =
+                solve_with_bound(start + k, pressure, wall_length, false);
+              scheme.displacement_after_step(displacement, velocity, k);
+              const unsigned int newton = stats.newton_iterations,
+                                 linear = stats.linear_iterations,
+                                 bound  = stats.bound_iterations;
+              stats                     = again;
+              stats.newton_iterations += newton;
+              stats.linear_iterations += linear;
+              stats.bound_iterations += bound;
+            };
+            unsigned int passes   = 0;
+            heat_terms            = couple_heat_step(parameters.temperature,
+                                          velocity,
+                                          theta,
+                                          heat_step,
+                                          redo_mechanical_step,
+                                          undo_mechanical_step,
+                                          passes);
+            stats.coupling_passes = passes;
           }
+        if (memory.active())
+          memory.commit_step(&velocity, &contact_traction);
         update_energy_balance(/*initial=*/false);
         book_heat_step(energy, heat_terms);
         last_step_length = k;
@@ -180,6 +209,7 @@ namespace hemicontact
     second.line_search_reductions += first.line_search_reductions;
     second.time_step_halvings += 1 + first.time_step_halvings;
     second.bound_iterations += first.bound_iterations;
+    second.coupling_passes += first.coupling_passes;
     return second;
   }
 

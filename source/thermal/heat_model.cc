@@ -203,6 +203,8 @@ namespace hemicontact
     matrix.reinit(sparsity);
     operator_step_length = 0;
     rhs.reinit(*space->owned, mpi_communicator);
+    source_load.reinit(*space->owned, mpi_communicator);
+    coupling_load.reinit(*space->owned, mpi_communicator);
 
     // the theta dof at the vertex of each contact node
     std::map<types::global_dof_index, types::global_dof_index> theta_of;
@@ -222,6 +224,8 @@ namespace hemicontact
     for (const ContactNode<dim> &node : state.contact_nodes)
       node_dofs.push_back(theta_of.at(node.dofs[0]));
     cache_coefficients();
+    if (!static_class)
+      assemble_energy_matrices();
   }
 
   template <int dim>
@@ -487,15 +491,19 @@ namespace hemicontact
     const bool new_operator = (k != operator_step_length);
     if (new_operator)
       operator_matrix = 0;
-    rhs                                     = 0;
-    const FiniteElement<dim>            &fe = space->dof_handler->get_fe();
-    HeatStepValues<dim>                  values(*discretization, fe);
-    FEValues<dim>                       &fe_theta = values.theta;
-    FEFaceValues<dim>                   &fe_face  = values.face;
-    const std::vector<double>           &div_w    = values.div_w;
-    const unsigned int                   n        = fe.n_dofs_per_cell();
-    FullMatrix<double>                   local_matrix(n, n);
-    Vector<double>                       local_rhs(n);
+    rhs                           = 0;
+    source_load                   = 0;
+    coupling_load                 = 0;
+    const FiniteElement<dim>  &fe = space->dof_handler->get_fe();
+    HeatStepValues<dim>        values(*discretization, fe);
+    FEValues<dim>             &fe_theta = values.theta;
+    FEFaceValues<dim>         &fe_face  = values.face;
+    const std::vector<double> &div_w    = values.div_w;
+    const unsigned int         n        = fe.n_dofs_per_cell();
+    FullMatrix<double>         local_matrix(n, n);
+    Vector<double>             local_rhs(n);
+    // the parts of the right-hand side the energy identity tests alone
+    Vector<double>                       local_source(n), local_coupling(n);
     std::vector<types::global_dof_index> dofs(n);
     const unsigned int                   n_q = values.quadrature.size();
     std::vector<double>                  theta_q(n_q), q_src(n_q),
@@ -520,8 +528,10 @@ namespace hemicontact
           for (const auto dof : dofs)
             with_matrix =
               with_matrix || constraints.is_inhomogeneously_constrained(dof);
-          local_matrix = 0;
-          local_rhs    = 0;
+          local_matrix   = 0;
+          local_rhs      = 0;
+          local_source   = 0;
+          local_coupling = 0;
           for (const unsigned int q : fe_theta.quadrature_point_indices())
             {
               if (!std::isfinite(q_src[q]) && error.empty())
@@ -548,6 +558,8 @@ namespace hemicontact
                   local_rhs(i) += (c_theta[q] / k * theta_q[q] -
                                    c_e[q] * div_w[q] + q_src[q]) *
                                   phi_i * JxW;
+                  local_source(i) += q_src[q] * phi_i * JxW;
+                  local_coupling(i) -= c_e[q] * div_w[q] * phi_i * JxW;
                 }
             }
           for (const unsigned int f : cell->face_indices())
@@ -557,8 +569,12 @@ namespace hemicontact
                 boundary_heat_flux(fe_face, t, q_n);
                 for (const unsigned int q : fe_face.quadrature_point_indices())
                   for (unsigned int i = 0; i < n; ++i)
-                    local_rhs(i) +=
-                      q_n[q] * fe_face.shape_value(i, q) * fe_face.JxW(q);
+                    {
+                      const double flux =
+                        q_n[q] * fe_face.shape_value(i, q) * fe_face.JxW(q);
+                      local_rhs(i) += flux;
+                      local_source(i) += flux;
+                    }
               }
           if (new_operator)
             constraints.distribute_local_to_global(local_matrix,
@@ -568,6 +584,12 @@ namespace hemicontact
                                                  dofs,
                                                  rhs,
                                                  local_matrix);
+          hanging_constraints.distribute_local_to_global(local_source,
+                                                         dofs,
+                                                         source_load);
+          hanging_constraints.distribute_local_to_global(local_coupling,
+                                                         dofs,
+                                                         coupling_load);
         }
     if (new_operator)
       {
@@ -604,15 +626,15 @@ namespace hemicontact
       }
     matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
+    source_load.compress(VectorOperation::add);
+    coupling_load.compress(VectorOperation::add);
     throw_first_error(error, mpi_communicator);
 
+    const TrilinosWrappers::MPI::Vector theta_before(theta);
     heat.linear_iterations = solver.solve(matrix, amg, theta, rhs);
     constraints.distribute(theta);
-
-    const TrilinosWrappers::MPI::Vector theta_new =
-      ghosted<dim>(theta, *space->owned, *space->relevant, mpi_communicator);
     heat.heat_content = heat_content(theta);
-    return step_energy(t, k, state, w, theta_old, theta_new, nodes);
+    return step_energy(t, k, state, theta_before, theta, nodes);
   }
 
   template <int dim>
@@ -627,33 +649,6 @@ namespace hemicontact
         q_n[q] = normal_heat_flux(fe_face.quadrature_point(q),
                                   fe_face.normal_vector(q),
                                   t);
-  }
-
-  template <int dim>
-  double
-  HeatModel<dim>::stored_heat(const TrilinosWrappers::MPI::Vector &theta) const
-  {
-    const TrilinosWrappers::MPI::Vector theta_ghosted =
-      ghosted<dim>(theta, *space->owned, *space->relevant, mpi_communicator);
-    const Quadrature<dim> quadrature = discretization->cell_quadrature(2);
-    FEValues<dim>         fe(*discretization->mapping,
-                     space->dof_handler->get_fe(),
-                     quadrature,
-                     update_values | update_JxW_values);
-    std::vector<double>   theta_q(quadrature.size());
-    double                stored = 0;
-    for (const auto &cell : space->dof_handler->active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe.reinit(cell);
-          fe.get_function_values(theta_ghosted, theta_q);
-          const double *c_theta =
-            &coefficients
-               .c_theta[cell->active_cell_index() * quadrature.size()];
-          for (const unsigned int q : fe.quadrature_point_indices())
-            stored += 0.5 * c_theta[q] * theta_q[q] * theta_q[q] * fe.JxW(q);
-        }
-    return Utilities::MPI::sum(stored, mpi_communicator);
   }
 
   template class HeatModel<2>;

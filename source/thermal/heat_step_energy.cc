@@ -1,150 +1,170 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/lac/vector.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <hemicontact/thermal/heat_model.h>
-#include <hemicontact/thermal/heat_step_values.h>
-
-#include <algorithm>
 
 namespace hemicontact
 {
+  template <int dim>
+  void
+  HeatModel<dim>::assemble_energy_matrices()
+  {
+    TrilinosWrappers::SparsityPattern sparsity(*space->owned,
+                                               *space->owned,
+                                               *space->relevant,
+                                               mpi_communicator);
+    DoFTools::make_sparsity_pattern(*space->dof_handler,
+                                    sparsity,
+                                    hanging_constraints,
+                                    /*keep_constrained_dofs=*/false,
+                                    Utilities::MPI::this_mpi_process(
+                                      mpi_communicator));
+    sparsity.compress();
+    capacity_matrix.reinit(sparsity);
+    conductivity_matrix.reinit(sparsity);
+
+    // the Gauss rule and the coefficients of the heat step's matrix
+    const Quadrature<dim> quadrature = discretization->cell_quadrature(2);
+    FEValues<dim>         fe(*discretization->mapping,
+                     space->dof_handler->get_fe(),
+                     quadrature,
+                     update_values | update_gradients | update_JxW_values);
+    const unsigned int    n   = fe.dofs_per_cell;
+    const unsigned int    n_q = quadrature.size();
+    FullMatrix<double>    capacity(n, n), conduction(n, n);
+    std::vector<types::global_dof_index> dofs(n);
+    for (const auto &cell : space->dof_handler->active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe.reinit(cell);
+          const std::size_t first   = cell->active_cell_index() * n_q;
+          const double     *c_theta = &coefficients.c_theta[first];
+          const double     *kappa   = &coefficients.kappa[first];
+          capacity                  = 0;
+          conduction                = 0;
+          for (const unsigned int q : fe.quadrature_point_indices())
+            {
+              const Tensor<2, dim> K =
+                conductivity ? kappa[q] * unit_symmetric_tensor<dim>() :
+                               conductivity_tensor;
+              for (unsigned int i = 0; i < n; ++i)
+                for (unsigned int j = 0; j < n; ++j)
+                  {
+                    capacity(i, j) += c_theta[q] * fe.shape_value(i, q) *
+                                      fe.shape_value(j, q) * fe.JxW(q);
+                    conduction(i, j) += (K * fe.shape_grad(i, q)) *
+                                        fe.shape_grad(j, q) * fe.JxW(q);
+                  }
+            }
+          cell->get_dof_indices(dofs);
+          hanging_constraints.distribute_local_to_global(capacity,
+                                                         dofs,
+                                                         capacity_matrix);
+          hanging_constraints.distribute_local_to_global(conduction,
+                                                         dofs,
+                                                         conductivity_matrix);
+        }
+    capacity_matrix.compress(VectorOperation::add);
+    conductivity_matrix.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  TrilinosWrappers::MPI::Vector
+  HeatModel<dim>::without_hanging(
+    const TrilinosWrappers::MPI::Vector &theta) const
+  {
+    TrilinosWrappers::MPI::Vector v(*space->owned, mpi_communicator);
+    v = theta;
+    for (const auto i : *space->owned)
+      if (hanging_constraints.is_constrained(i))
+        v[i] = 0;
+    return v;
+  }
+
+  template <int dim>
+  double
+  HeatModel<dim>::stored_heat(const TrilinosWrappers::MPI::Vector &theta) const
+  {
+    const TrilinosWrappers::MPI::Vector v = without_hanging(theta);
+    TrilinosWrappers::MPI::Vector       Cv(*space->owned, mpi_communicator);
+    capacity_matrix.vmult(Cv, v);
+    return 0.5 * (v * Cv);
+  }
+
   template <int dim>
   HeatStepEnergy
   HeatModel<dim>::step_energy(const double                         t,
                               const double                         k,
                               const ProblemState<dim>             &state,
-                              const TrilinosWrappers::MPI::Vector &w,
                               const TrilinosWrappers::MPI::Vector &theta_old,
                               const TrilinosWrappers::MPI::Vector &theta_new,
                               const std::vector<NodeHeat>         &nodes) const
   {
-    // the dofs where theta_n = theta_D: their rows' residual is the heat
-    // that the prescribed temperature puts in, tested with theta_n
-    const auto prescribed = [&](const types::global_dof_index i) {
-      return constraints.is_constrained(i) &&
-             !hanging_constraints.is_constrained(i);
-    };
-    const FiniteElement<dim>  &fe = space->dof_handler->get_fe();
-    HeatStepValues<dim>        values(*discretization, fe);
-    FEValues<dim>             &fe_theta = values.theta;
-    FEFaceValues<dim>         &fe_face  = values.face;
-    const std::vector<double> &div_w    = values.div_w;
-    const unsigned int         n        = fe.n_dofs_per_cell();
-    const unsigned int         n_q      = values.quadrature.size();
-    std::vector<double>        theta_n(n_q), theta_o(n_q), q_src(n_q),
-      q_n(values.face_quadrature.size()),
-      theta_face(values.face_quadrature.size());
-    std::vector<Tensor<1, dim>>          grad_theta(n_q);
-    std::vector<types::global_dof_index> dofs(n);
-    Vector<double>                       local_residual(n);
-    TrilinosWrappers::MPI::Vector residual(*space->owned, mpi_communicator);
+    const TrilinosWrappers::MPI::Vector theta = without_hanging(theta_new);
+    TrilinosWrappers::MPI::Vector       change(theta);
+    change -= without_hanging(theta_old);
+    TrilinosWrappers::MPI::Vector C_change(*space->owned, mpi_communicator),
+      K_theta(*space->owned, mpi_communicator);
+    capacity_matrix.vmult(C_change, change);
+    conductivity_matrix.vmult(K_theta, theta);
 
     HeatStepEnergy e;
-    for (const auto &cell : space->dof_handler->active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          values.reinit(cell, state.dof_handler, w);
-          fe_theta.get_function_values(theta_new, theta_n);
-          fe_theta.get_function_values(theta_old, theta_o);
-          fe_theta.get_function_gradients(theta_new, grad_theta);
-          heat_source->value_list(fe_theta.get_quadrature_points(), q_src);
-          cell->get_dof_indices(dofs);
-          // the residual reaches a prescribed row from a cell with a
-          // prescribed dof or a hanging one (through its masters)
-          const bool with_residual =
-            std::any_of(dofs.begin(), dofs.end(), [&](const auto i) {
-              return constraints.is_constrained(i);
-            });
-          const std::size_t first   = cell->active_cell_index() * n_q;
-          const double     *c_theta = &coefficients.c_theta[first];
-          const double     *c_e     = &coefficients.c_e[first];
-          const double     *kappa   = &coefficients.kappa[first];
-          local_residual            = 0;
-          for (const unsigned int q : fe_theta.quadrature_point_indices())
-            {
-              const Tensor<1, dim> K_grad =
-                (conductivity ? kappa[q] * unit_symmetric_tensor<dim>() :
-                                conductivity_tensor) *
-                grad_theta[q];
-              const double JxW = fe_theta.JxW(q);
-              const double rate =
-                c_theta[q] * (theta_n[q] - theta_o[q]) / k; // c_theta dtheta
-              e.numerical += 0.5 * k * rate * (theta_n[q] - theta_o[q]) * JxW;
-              e.dissipation += k * (K_grad * grad_theta[q]) * JxW;
-              e.coupling -= k * c_e[q] * div_w[q] * theta_n[q] * JxW;
-              e.supply += k * q_src[q] * theta_n[q] * JxW;
-              if (with_residual)
-                for (unsigned int i = 0; i < n; ++i)
-                  local_residual(i) += ((rate + c_e[q] * div_w[q] - q_src[q]) *
-                                          fe_theta.shape_value(i, q) +
-                                        K_grad * fe_theta.shape_grad(i, q)) *
-                                       JxW;
-            }
-          for (const unsigned int f : cell->face_indices())
-            if (on_flux_boundary(cell, f))
-              {
-                fe_face.reinit(cell, f);
-                boundary_heat_flux(fe_face, t, q_n);
-                fe_face.get_function_values(theta_new, theta_face);
-                for (const unsigned int q : fe_face.quadrature_point_indices())
-                  {
-                    e.supply += k * q_n[q] * theta_face[q] * fe_face.JxW(q);
-                    if (with_residual)
-                      for (unsigned int i = 0; i < n; ++i)
-                        local_residual(i) -=
-                          q_n[q] * fe_face.shape_value(i, q) * fe_face.JxW(q);
-                  }
-              }
-          if (with_residual)
-            hanging_constraints.distribute_local_to_global(local_residual,
-                                                           dofs,
-                                                           residual);
-        }
-    residual.compress(VectorOperation::add);
+    e.numerical   = 0.5 * (change * C_change);
+    e.dissipation = k * (theta * K_theta);
+    e.supply      = k * (source_load * theta);
+    e.coupling    = k * (coupling_load * theta);
 
     // Gamma_3 by nodal quadrature, where the heat step has the law's terms
+    double on_contact = 0, frictional = 0, exchanged = 0;
     for (unsigned int i = 0; i < nodes.size(); ++i)
       {
         const auto d = node_dofs[i];
         if (!space->owned->is_element(d) || constraints.is_constrained(d))
           continue;
-        const ContactNode<dim> &node      = state.contact_nodes[i];
-        const double            theta_i   = theta_new[d];
-        const double            exchanged = nodes[i].exchange_coefficient *
-                                 (nodes[i].foundation_temperature - theta_i);
-        double source = exchanged + nodes[i].frictional_power;
+        const ContactNode<dim> &node = state.contact_nodes[i];
+        const double            into = nodes[i].exchange_coefficient *
+                            (nodes[i].foundation_temperature - theta[d]);
+        double source = into + nodes[i].frictional_power;
         if (contact_heat_source)
           source += contact_heat_source(node.position, node.normal, t);
-        e.supply += k * node.mass * source * theta_i;
-        e.frictional_heat += k * node.mass * nodes[i].frictional_power;
-        e.exchanged_heat += k * node.mass * exchanged;
+        on_contact += k * node.mass * source * theta[d];
+        frictional += k * node.mass * nodes[i].frictional_power;
+        exchanged += k * node.mass * into;
       }
+    // the rows where theta_n = theta_D: their residual k r = C (theta_n -
+    // theta_{n-1}) + k K theta_n - k (loads), the heat the prescribed
+    // temperature puts in, tested with theta_n (the other rows' residual
+    // is the solver's)
+    TrilinosWrappers::MPI::Vector residual(C_change);
+    residual.add(k, K_theta, -k, source_load);
+    residual.add(-k, coupling_load);
+    double prescribed = 0;
     for (const auto i : *space->owned)
-      if (prescribed(i))
-        e.supply += k * residual[i] * theta_new[i];
+      if (constraints.is_constrained(i) &&
+          !hanging_constraints.is_constrained(i))
+        prescribed += residual[i] * theta[i];
 
-    const auto sum = [&](double &x) {
-      x = Utilities::MPI::sum(x, mpi_communicator);
-    };
-    for (double *x : {&e.numerical,
-                      &e.dissipation,
-                      &e.supply,
-                      &e.coupling,
-                      &e.frictional_heat,
-                      &e.exchanged_heat})
-      sum(*x);
+    e.supply += Utilities::MPI::sum(on_contact + prescribed, mpi_communicator);
+    e.frictional_heat = Utilities::MPI::sum(frictional, mpi_communicator);
+    e.exchanged_heat  = Utilities::MPI::sum(exchanged, mpi_communicator);
     return e;
   }
 
-#define HEMICONTACT_INSTANTIATE(dim)                   \
-  template HeatStepEnergy HeatModel<dim>::step_energy( \
-    const double,                                      \
-    const double,                                      \
-    const ProblemState<dim> &,                         \
-    const TrilinosWrappers::MPI::Vector &,             \
-    const TrilinosWrappers::MPI::Vector &,             \
-    const TrilinosWrappers::MPI::Vector &,             \
+#define HEMICONTACT_INSTANTIATE(dim)                                      \
+  template void   HeatModel<dim>::assemble_energy_matrices();             \
+  template double HeatModel<dim>::stored_heat(                            \
+    const TrilinosWrappers::MPI::Vector &) const;                         \
+  template TrilinosWrappers::MPI::Vector HeatModel<dim>::without_hanging( \
+    const TrilinosWrappers::MPI::Vector &) const;                         \
+  template HeatStepEnergy HeatModel<dim>::step_energy(                    \
+    const double,                                                         \
+    const double,                                                         \
+    const ProblemState<dim> &,                                            \
+    const TrilinosWrappers::MPI::Vector &,                                \
+    const TrilinosWrappers::MPI::Vector &,                                \
     const std::vector<NodeHeat> &) const;
   HEMICONTACT_INSTANTIATE(2)
   HEMICONTACT_INSTANTIATE(3)

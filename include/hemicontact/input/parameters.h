@@ -267,6 +267,13 @@ namespace hemicontact
    * with its boundary conditions and the contact heat law on Gamma_3; in
    * the static class theta is data.
    */
+  /** How the mechanical and the heat step meet at a time step. */
+  enum class TemperatureCoupling
+  {
+    staggered, ///< each once, the mechanical step with theta_{n-1}
+    iterated   ///< both repeated until (w_n, theta_n) no longer change
+  };
+
   struct TemperatureParameters
   {
     bool enabled = false;
@@ -291,7 +298,12 @@ namespace hemicontact
     /** gamma in [0, 1]: the fraction of the frictional power that enters. */
     double frictional_heat_fraction = 0;
     /** The static class: theta(x, t) as data. */
-    std::string given_temperature;
+    std::string         given_temperature;
+    TemperatureCoupling coupling = TemperatureCoupling::staggered;
+    /** iterated: the relative change of (w_n, theta_n) that ends it */
+    double coupling_tolerance = 1e-10;
+    /** iterated: the most passes of the mechanical step per time step */
+    unsigned int coupling_iterations = 20;
 
     /** Whether K is a tensor of numbers (else one expression). */
     bool

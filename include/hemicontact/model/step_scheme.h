@@ -201,6 +201,16 @@ namespace hemicontact
       else if (the_scheme == TimeScheme::implicit)
         u.add(k, velocity);
     }
+    /** Take displacement_after_step() back (velocity classes). */
+    template <class VectorType>
+    void
+    undo_displacement_after_step(VectorType       &u,
+                                 const VectorType &velocity,
+                                 const double      k) const
+    {
+      if (the_scheme == TimeScheme::implicit)
+        u.add(-k, velocity);
+    }
 
     /**
      * The displacement held after step n (doc/theory.md 9.3) is

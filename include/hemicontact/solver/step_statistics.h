@@ -22,8 +22,12 @@ namespace hemicontact
     unsigned int time_step_halvings     = 0; ///< sub-steps added after failures
     /** Fixed-point iterations on the friction bound (doc/theory.md 9.8). */
     unsigned int bound_iterations = 0;
-    unsigned int n_cells          = 0; ///< of the mesh the step ran on
-    unsigned int n_dofs           = 0;
+    /** Passes of the mechanical step with a temperature (1: staggered;
+     *  more with 'temperature/coupling = iterated', doc/theory.md 13.2);
+     *  0 without the heat equation. */
+    unsigned int coupling_passes = 0;
+    unsigned int n_cells         = 0; ///< of the mesh the step ran on
+    unsigned int n_dofs          = 0;
     /** @name Mesh adaptation after this step (all zero if none) */
     bool   adapted                   = false;
     double kinetic_before_adaptation = 0;

@@ -203,19 +203,28 @@ namespace hemicontact
 
     /**
      * The terms of the heat step at @p t of length @p k tested with
-     * theta_n = @p theta_new, from theta_{n-1} = @p theta_old and w_n =
-     * @p w (all ghosted) and the contact heat law's terms @p nodes;
-     * the heat of the prescribed temperature's boundary from the residual
-     * of its rows (heat_step_energy.cc).
+     * theta_n = @p theta_new from theta_{n-1} = @p theta_old (owned
+     * entries, both meeting the constraints), by the energy matrices, the
+     * step's source_load and coupling_load and the contact heat law's
+     * terms @p nodes; the heat of the prescribed temperature's boundary
+     * from the residual of its rows (heat_step_energy.cc).
      */
     HeatStepEnergy
     step_energy(const double                         t,
                 const double                         k,
                 const ProblemState<dim>             &state,
-                const TrilinosWrappers::MPI::Vector &w,
                 const TrilinosWrappers::MPI::Vector &theta_old,
                 const TrilinosWrappers::MPI::Vector &theta_new,
                 const std::vector<NodeHeat>         &nodes) const;
+
+    /** capacity_matrix and conductivity_matrix on a new mesh. */
+    void
+    assemble_energy_matrices();
+
+    /** @p theta with its hanging nodes' entries zero: the products with
+     *  the condensed energy matrices are then those of the function. */
+    TrilinosWrappers::MPI::Vector
+    without_hanging(const TrilinosWrappers::MPI::Vector &theta) const;
 
     /** q_N at the quadrature points of @p fe_face (a face of a heat flux
      *  id) at time @p t into @p q_n. */
@@ -269,6 +278,14 @@ namespace hemicontact
     /** operator_matrix plus the contact's sum_i m_i k_e,i at the step. */
     TrilinosWrappers::SparseMatrix matrix;
     TrilinosWrappers::MPI::Vector  rhs;
+    /**
+     * The energy identity's (doc/theory.md 13.4): int c_theta phi_i phi_j
+     * and int K grad phi_i . grad phi_j with the hanging nodes condensed
+     * (not theta_D), once per mesh; the step's loads (q, eta) + (q_N,
+     * eta)_{Gamma_N} and -(c_e div w_n, eta), condensed alike.
+     */
+    TrilinosWrappers::SparseMatrix capacity_matrix, conductivity_matrix;
+    TrilinosWrappers::MPI::Vector  source_load, coupling_load;
     /** The coefficients at the quadrature points, by cell (x only). */
     struct CellCoefficients
     {
