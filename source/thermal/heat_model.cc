@@ -182,23 +182,33 @@ namespace hemicontact
 
   template <int dim>
   void
+  HeatModel<dim>::make_sparsity(
+    const AffineConstraints<double>   &with,
+    TrilinosWrappers::SparsityPattern &sparsity) const
+  {
+    sparsity.reinit(*space->owned,
+                    *space->owned,
+                    *space->relevant,
+                    mpi_communicator);
+    DoFTools::make_sparsity_pattern(*space->dof_handler,
+                                    sparsity,
+                                    with,
+                                    /*keep_constrained_dofs=*/false,
+                                    Utilities::MPI::this_mpi_process(
+                                      mpi_communicator));
+    sparsity.compress();
+  }
+
+  template <int dim>
+  void
   HeatModel<dim>::reinit(const FieldSpace<dim>   &theta_space,
                          const ProblemState<dim> &state)
   {
     space          = &theta_space;
     discretization = &state.discretization;
     make_constraints(state.time);
-    TrilinosWrappers::SparsityPattern sparsity(*space->owned,
-                                               *space->owned,
-                                               *space->relevant,
-                                               mpi_communicator);
-    DoFTools::make_sparsity_pattern(*space->dof_handler,
-                                    sparsity,
-                                    constraints,
-                                    /*keep_constrained_dofs=*/false,
-                                    Utilities::MPI::this_mpi_process(
-                                      mpi_communicator));
-    sparsity.compress();
+    TrilinosWrappers::SparsityPattern sparsity;
+    make_sparsity(constraints, sparsity);
     operator_matrix.reinit(sparsity);
     matrix.reinit(sparsity);
     operator_step_length = 0;

@@ -1,5 +1,4 @@
 #include <deal.II/base/mpi.h>
-#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
@@ -12,17 +11,8 @@ namespace hemicontact
   void
   HeatModel<dim>::assemble_energy_matrices()
   {
-    TrilinosWrappers::SparsityPattern sparsity(*space->owned,
-                                               *space->owned,
-                                               *space->relevant,
-                                               mpi_communicator);
-    DoFTools::make_sparsity_pattern(*space->dof_handler,
-                                    sparsity,
-                                    hanging_constraints,
-                                    /*keep_constrained_dofs=*/false,
-                                    Utilities::MPI::this_mpi_process(
-                                      mpi_communicator));
-    sparsity.compress();
+    TrilinosWrappers::SparsityPattern sparsity;
+    make_sparsity(hanging_constraints, sparsity);
     capacity_matrix.reinit(sparsity);
     conductivity_matrix.reinit(sparsity);
 

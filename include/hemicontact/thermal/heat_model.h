@@ -5,6 +5,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
@@ -216,6 +217,11 @@ namespace hemicontact
                 const TrilinosWrappers::MPI::Vector &theta_old,
                 const TrilinosWrappers::MPI::Vector &theta_new,
                 const std::vector<NodeHeat>         &nodes) const;
+
+    /** The sparsity of theta's matrices condensed by @p with. */
+    void
+    make_sparsity(const AffineConstraints<double>   &with,
+                  TrilinosWrappers::SparsityPattern &sparsity) const;
 
     /** capacity_matrix and conductivity_matrix on a new mesh. */
     void
