@@ -392,6 +392,8 @@ namespace hemicontact
                << s.n_at_wall;
         if (state.heat)
           line << ", heat content " << state.heat->balance().heat_content;
+        if (s.coupling_passes > 1)
+          line << ", coupling passes " << s.coupling_passes;
         if (s.adapted)
           line << "\n  adapted: "
                << state.discretization.triangulation->n_global_active_cells()
@@ -434,6 +436,8 @@ namespace hemicontact
                << s.n_at_wall;
         if (state.heat)
           line << "  heat " << state.heat->balance().heat_content;
+        if (s.coupling_passes > 1)
+          line << "  coupling passes " << s.coupling_passes;
       }
     if (parameters.output.terminal != TerminalOutput::quiet)
       pcout << line.str() << std::endl;
