@@ -5,6 +5,7 @@
 //     to the stress-free strain e = c_e theta / (2 (lambda + mu)) in each
 //     direction (plane strain), theta the final mean temperature; the heat
 //     equation's -c_e div w lowers theta to theta_0 - 2 c_e e / c_theta;
+//     in 3D e = c_e theta / (2 mu + 3 lambda), theta_0 - 3 c_e e / c_theta;
 // (b) a body at rest with theta_0 = 0 and a Robin contact at theta_F = 1
 //     warms as the 1D heat equation says: for a small Biot number
 //     Bi = k_e H / K, the mean follows the lumped backward Euler
@@ -29,13 +30,22 @@ using namespace hemicontact;
 
 namespace
 {
-  const std::string common = R"(
-set dimension = 2
-subsection geometry
-  set upper right corner = 1, 1
-  set subdivisions       = 1, 1
-  set global refinements = 3
-end
+  /** The unit square (refined 3 times) or cube (2 times), contact on
+   *  y = 0 (id 2), then the rest of common_rest. */
+  std::string
+  common(const int dim)
+  {
+    return dim == 2 ? "set dimension = 2\nsubsection geometry\n"
+                      "  set upper right corner = 1, 1\n"
+                      "  set subdivisions = 1, 1\n"
+                      "  set global refinements = 3\nend\n" :
+                      "set dimension = 3\nsubsection geometry\n"
+                      "  set upper right corner = 1, 1, 1\n"
+                      "  set subdivisions = 1, 1, 1\n"
+                      "  set global refinements = 2\nend\n";
+  }
+
+  const std::string common_rest = R"(
 subsection boundary
   set clamped boundary ids  =
   set traction boundary ids =
@@ -66,16 +76,19 @@ subsection output
 end
 )";
 
-  /** The problem of common + @p text, run to its end. */
-  std::unique_ptr<ContactProblem<2>>
+  /** The problem of common + @p text in @p dim dimensions, run to its
+   *  end. */
+  template <int dim = 2>
+  std::unique_ptr<ContactProblem<dim>>
   run(const std::string &text)
   {
     ParameterHandler prm;
     const Parameters parameters =
-      read_parameters_from_string(prm, common + text);
-    auto problem = std::make_unique<ContactProblem<2>>(parameters,
-                                                       create_contact_laws(prm),
-                                                       MPI_COMM_WORLD);
+      read_parameters_from_string(prm, common(dim) + common_rest + text);
+    auto problem =
+      std::make_unique<ContactProblem<dim>>(parameters,
+                                            create_contact_laws(prm),
+                                            MPI_COMM_WORLD);
     problem->setup();
     while (!problem->finished())
       problem->advance();
@@ -83,10 +96,11 @@ end
   }
 
   /** The mean of the nodal values of @p v's component @p c where x_c = @p at. */
+  template <int dim>
   double
-  mean_on(const ContactProblem<2> &problem,
-          const unsigned int       c,
-          const double             at)
+  mean_on(const ContactProblem<dim> &problem,
+          const unsigned int         c,
+          const double               at)
   {
     const auto                    state = problem.state();
     TrilinosWrappers::MPI::Vector u(state.locally_owned_dofs,
@@ -150,6 +164,39 @@ end
                   std::abs(theta - (1 - 2 * 0.5 * e_x)) < 1e-3 ?
                 "yes" :
                 "no")
+          << std::endl;
+  }
+
+  // (a) in 3D: e = c_e theta / (2 mu + 3 lambda), theta = theta_0 -
+  // 3 c_e e / c_theta
+  {
+    const auto   problem = run<3>(R"(
+subsection time
+  set end time  = 12
+  set time step = 0.05
+end
+subsection problem
+  set time scheme = implicit
+end
+subsection temperature
+  set enabled                    = true
+  set thermal stress coefficient = 0.5
+  set initial temperature        = 1
+end
+)");
+    const double theta   = problem->state().heat->balance().heat_content;
+    double       worst   = 0;
+    for (unsigned int c = 0; c < 3; ++c)
+      worst =
+        std::max(worst,
+                 std::abs((mean_on(*problem, c, 1) - mean_on(*problem, c, 0)) /
+                            (0.5 * theta / (2 * 1 + 3 * 1)) -
+                          1));
+    const double e_x = mean_on(*problem, 0, 1) - mean_on(*problem, 0, 0);
+    out() << "(a) in 3D: strain/e - 1 in each direction below 1e-3: "
+          << (worst < 1e-3 ? "yes" : "no")
+          << "; theta = theta_0 - 3 c_e e_x / c_theta to 1e-3: "
+          << (std::abs(theta - (1 - 3 * 0.5 * e_x)) < 1e-3 ? "yes" : "no")
           << std::endl;
   }
 
