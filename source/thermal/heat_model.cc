@@ -453,9 +453,7 @@ namespace hemicontact
           Tensor<1, dim> flux;
           for (const unsigned int q : fe.quadrature_point_indices())
             {
-              const Tensor<2, dim> K =
-                conductivity ? kappa[q] * unit_symmetric_tensor<dim>() :
-                               conductivity_tensor;
+              const Tensor<2, dim> K = conductivity_at(kappa[q]);
               stress -= c_e[q] * theta_q[q] * fe.JxW(q);
               flux -= K * grad_q[q] * fe.JxW(q);
               volume += fe.JxW(q);
@@ -548,10 +546,8 @@ namespace hemicontact
                 error = "temperature: 'heat source' is not a finite number "
                         "at " +
                         at(points[q]) + ".";
-              const Tensor<2, dim> K =
-                conductivity ? kappa[q] * unit_symmetric_tensor<dim>() :
-                               conductivity_tensor;
-              const double JxW = fe_theta.JxW(q);
+              const Tensor<2, dim> K   = conductivity_at(kappa[q]);
+              const double         JxW = fe_theta.JxW(q);
               for (unsigned int i = 0; i < n; ++i)
                 {
                   const double phi_i = fe_theta.shape_value(i, q);

@@ -37,9 +37,7 @@ namespace hemicontact
           conduction                = 0;
           for (const unsigned int q : fe.quadrature_point_indices())
             {
-              const Tensor<2, dim> K =
-                conductivity ? kappa[q] * unit_symmetric_tensor<dim>() :
-                               conductivity_tensor;
+              const Tensor<2, dim> K = conductivity_at(kappa[q]);
               for (unsigned int i = 0; i < n; ++i)
                 for (unsigned int j = 0; j < n; ++j)
                   {

@@ -9,6 +9,7 @@
 #include <hemicontact/output/output_file.h>
 #include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/thermal/heat_model.h>
+#include <hemicontact/verification/convergence_report.h>
 #include <hemicontact/verification/convergence_study.h>
 #include <hemicontact/verification/manufactured_smoothness.h>
 #include <hemicontact/verification/manufactured_solution.h>
@@ -499,192 +500,6 @@ namespace hemicontact
       return result;
     }
 
-    /**
-     * Check that convergence.csv can be written in the output directory
-     * (created if needed) without touching an earlier study's file.
-     */
-    void
-    require_writable_csv(const Parameters &parameters, MPI_Comm comm)
-    {
-      require_usable_output_directory(parameters.output.directory, comm);
-      std::string error;
-      if (Utilities::MPI::this_mpi_process(comm) == 0)
-        {
-          const std::string probe =
-            parameters.output.directory + "/convergence.csv.tmp";
-          std::error_code ec;
-          std::filesystem::create_directories(parameters.output.directory, ec);
-          if (ec || !std::ofstream(probe))
-            error = "output: cannot write convergence.csv in '" +
-                    parameters.output.directory + "'.";
-          std::filesystem::remove(probe, ec);
-        }
-      error = Utilities::MPI::broadcast(comm, error, 0);
-      require(error.empty(), error);
-    }
-
-    /** The header of convergence.csv. */
-    std::string
-    csv_header()
-    {
-      // new columns go at the end: readers select columns by name or position
-      return "level,h,k,n_dofs,n_steps,E_H,E_V,E_u,E_V_H1,E_u_H1,"
-             "mean_newton_iterations,max_newton_iterations,wall_seconds,"
-             "share_separating,share_normal_stick,share_damped,"
-             "share_stick,share_slip,mean_dofs,max_dofs,step_wall_seconds,"
-             "E_energy,estimate,effectivity,estimate_interior,estimate_jumps,"
-             "estimate_neumann,estimate_contact,estimate_time,"
-             "effectivity_total,E_theta,E_theta_H1\n";
-    }
-
-    std::string
-    csv_row(const unsigned int level, const LevelResult &r)
-    {
-      const ErrorNorms  &e = r.errors;
-      std::ostringstream csv;
-      csv << std::setprecision(10) << level << "," << r.h << "," << r.k << ","
-          << r.n_dofs << "," << r.n_steps << "," << e.E_H << "," << e.E_V << ","
-          << e.E_u << "," << e.E_V_H1 << "," << e.E_u_H1 << ","
-          << r.mean_newton_iterations << "," << r.max_newton_iterations << ","
-          << r.wall_seconds;
-      for (const double share : r.branch_share)
-        csv << "," << share;
-      csv << "," << r.mean_dofs << "," << r.max_dofs << ","
-          << r.step_wall_seconds << "," << e.E_energy;
-      // the estimate's columns are empty without 'output/error estimate'
-      if (r.estimated)
-        {
-          csv << "," << r.estimate << "," << r.effectivity;
-          for (const double term : r.estimate_terms)
-            csv << "," << term;
-        }
-      else
-        csv << ",,,,,,";
-      // the time indicator's columns: velocity classes only
-      if (r.time_estimated)
-        csv << "," << r.estimate_time << "," << r.effectivity_total;
-      else
-        csv << ",,";
-      // the temperature's: with a manufactured temperature only
-      if (r.with_temperature)
-        csv << "," << e.E_theta << "," << e.E_theta_H1;
-      else
-        csv << ",,";
-      csv << "\n";
-      return csv.str();
-    }
-
-    void
-    print_branch_shares(const unsigned int level, const LevelResult &r)
-    {
-      const double *share = r.branch_share;
-      std::cout << "level " << level << ": " << r.n_steps
-                << " steps, share of (node, step) pairs: separating "
-                << std::fixed << std::setprecision(3) << share[0]
-                << ", normal stick " << share[1] << ", damped " << share[2];
-      if (r.breakpoint_share > 0 || r.wall_share > 0)
-        std::cout << ", at a breakpoint " << r.breakpoint_share
-                  << ", at the wall " << r.wall_share;
-      std::cout << ", stick " << share[3] << ", slip " << share[4]
-                << std::defaultfloat << std::endl;
-    }
-
-    /**
-     * One row of the table; an adaptive study has the mean and maximum dofs
-     * over the steps instead of the final mesh's.
-     */
-    void
-    add_table_row(ConvergenceTable  &table,
-                  const unsigned int level,
-                  const LevelResult &r,
-                  const bool         adaptive)
-    {
-      table.add_value("level", level);
-      table.add_value("h", r.h);
-      table.add_value("k", r.k);
-      if (adaptive)
-        {
-          table.add_value("mean dofs",
-                          static_cast<unsigned int>(std::round(r.mean_dofs)));
-          table.add_value("max dofs", r.max_dofs);
-        }
-      else
-        table.add_value("dofs", r.n_dofs);
-      table.add_value("steps", r.n_steps);
-      table.add_value("E_H", r.errors.E_H);
-      table.add_value("E_V", r.errors.E_V);
-      table.add_value("E_u", r.errors.E_u);
-      table.add_value("E_V(H1)", r.errors.E_V_H1);
-      table.add_value("E_u(H1)", r.errors.E_u_H1);
-      if (r.with_temperature)
-        {
-          table.add_value("E_theta", r.errors.E_theta);
-          table.add_value("E_theta(H1)", r.errors.E_theta_H1);
-        }
-      table.add_value("newton", r.mean_newton_iterations);
-      if (r.estimated)
-        {
-          table.add_value("E_energy", r.errors.E_energy);
-          table.add_value("estimate", r.estimate);
-          table.add_value("effectivity", r.effectivity);
-        }
-      if (r.time_estimated)
-        {
-          table.add_value("estimate_time", r.estimate_time);
-          table.add_value("effectivity_total", r.effectivity_total);
-        }
-    }
-
-    /**
-     * Formats and orders: log2 of the error ratio between levels, or
-     * -log(error ratio) / log(mean dofs ratio) if @p against_dofs (the
-     * table has the column "mean dofs"); the columns of the estimate
-     * @p with_estimate, those of the time indicator @p with_time_estimate.
-     */
-    void
-    format_table(ConvergenceTable  &table,
-                 const unsigned int n_levels,
-                 const bool         against_dofs,
-                 const bool         with_estimate,
-                 const bool         with_time_estimate,
-                 const bool         with_temperature)
-    {
-      std::vector<const char *> columns = {
-        "E_H", "E_V", "E_u", "E_V(H1)", "E_u(H1)"};
-      if (with_temperature)
-        columns.insert(columns.end(), {"E_theta", "E_theta(H1)"});
-      for (const char *column : columns)
-        {
-          table.set_scientific(column, true);
-          table.set_precision(column, 3);
-          if (n_levels > 1 && against_dofs)
-            table.evaluate_convergence_rates(
-              column, "mean dofs", ConvergenceTable::reduction_rate_log2, 1);
-          else if (n_levels > 1)
-            table.evaluate_convergence_rates(
-              column, ConvergenceTable::reduction_rate_log2);
-        }
-      table.set_scientific("h", true);
-      table.set_scientific("k", true);
-      table.set_precision("h", 3);
-      table.set_precision("k", 3);
-      table.set_precision("newton", 2);
-      if (with_estimate)
-        {
-          for (const char *column : {"E_energy", "estimate"})
-            {
-              table.set_scientific(column, true);
-              table.set_precision(column, 3);
-            }
-          table.set_precision("effectivity", 2);
-        }
-      if (with_time_estimate)
-        {
-          table.set_scientific("estimate_time", true);
-          table.set_precision("estimate_time", 3);
-          table.set_precision("effectivity_total", 2);
-        }
-    }
   } // namespace
 
   namespace
@@ -749,8 +564,8 @@ namespace hemicontact
 
     // convergence.csv is replaced (atomically) after each level: an
     // earlier study's file stays until this one has a row of its own
-    require_writable_csv(parameters, comm);
-    std::string csv = csv_header();
+    convergence_report::require_writable_csv(parameters, comm);
+    std::string csv = convergence_report::csv_header();
 
     // a 'k' study against a reference run on its mesh: the reference first
     std::unique_ptr<ReferenceRun> reference;
@@ -782,23 +597,26 @@ namespace hemicontact
         p.output.terminal = TerminalOutput::quiet;
         results.push_back(
           run_level<dim>(p, prm, comm, level == 0, reference.get()));
-        add_table_row(table, level, results.back(), adaptive);
-        csv += csv_row(level, results.back());
+        convergence_report::add_table_row(table,
+                                          level,
+                                          results.back(),
+                                          adaptive);
+        csv += convergence_report::csv_row(level, results.back());
         throw_if_any(root ? write_atomically(parameters.output.directory +
                                                "/convergence.csv",
                                              csv) :
                             "",
                      comm);
         if (verbose)
-          print_branch_shares(level, results.back());
+          convergence_report::print_branch_shares(level, results.back());
       }
 
-    format_table(table,
-                 n_levels,
-                 against_dofs,
-                 parameters.output.error_estimate,
-                 results.back().time_estimated,
-                 results.back().with_temperature);
+    convergence_report::format_table(table,
+                                     n_levels,
+                                     against_dofs,
+                                     parameters.output.error_estimate,
+                                     results.back().time_estimated,
+                                     results.back().with_temperature);
     if (verbose)
       {
         if (against_dofs)

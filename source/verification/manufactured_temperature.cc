@@ -4,6 +4,7 @@
 #include <hemicontact/verification/tape_at_points.h>
 
 #include <cmath>
+#include <utility>
 
 namespace hemicontact
 {
@@ -30,20 +31,18 @@ namespace hemicontact
         expressions.push_back(expressions[2 + i].derivative(j));
     expressions.push_back(
       parse(parameters.heat_capacity, "temperature/heat capacity"));
-    const Expression c_e = parse(parameters.thermal_stress_coefficient,
-                                 "temperature/thermal stress coefficient");
+    Expression c_e = parse(parameters.thermal_stress_coefficient,
+                           "temperature/thermal stress coefficient");
     for (int i = 0; i < dim; ++i)
       expressions.push_back(c_e.derivative(i));
-    expressions.push_back(parse(parameters.thermal_stress_coefficient,
-                                "temperature/thermal stress coefficient"));
+    expressions.push_back(std::move(c_e));
     if (isotropic)
       {
-        const Expression kappa =
+        Expression kappa =
           parse(parameters.conductivity[0], "temperature/conductivity");
         for (int i = 0; i < dim; ++i)
           expressions.push_back(kappa.derivative(i));
-        expressions.push_back(
-          parse(parameters.conductivity[0], "temperature/conductivity"));
+        expressions.push_back(std::move(kappa));
       }
     else
       for (unsigned int i = 0; i < dim; ++i)

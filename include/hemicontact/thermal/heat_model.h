@@ -218,6 +218,15 @@ namespace hemicontact
                 const TrilinosWrappers::MPI::Vector &theta_new,
                 const std::vector<NodeHeat>         &nodes) const;
 
+    /** K at a point where the cached isotropic value is @p kappa (the
+     *  tensor of numbers where K is anisotropic). */
+    Tensor<2, dim>
+    conductivity_at(const double kappa) const
+    {
+      return conductivity ? kappa * unit_symmetric_tensor<dim>() :
+                            conductivity_tensor;
+    }
+
     /** The sparsity of theta's matrices condensed by @p with. */
     void
     make_sparsity(const AffineConstraints<double>   &with,
