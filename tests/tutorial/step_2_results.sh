@@ -5,7 +5,8 @@
 # the output folder and the blank line), what that command prints; the
 # command writes its files into output-block/ as the page says, and the
 # page's count of nodes below the foundation's surface (u_nu > 0) at
-# t = 0.92, when all of them separate (w_nu < 0), is that of these files.
+# t = 0.92, when all of them separate (w_nu < 0), is that of these files;
+# the pages quote the lambda_1 it prints.
 set -euo pipefail
 step2=$1; src=$2; work=$3
 page=$src/tutorial/step-2/doc/results.md
@@ -26,4 +27,13 @@ read -r below largest < <(awk '!/^#/ && $2 == 0 && $1 > 0 && $6 < 0 \
   {n++; if (-$6 > m) m = -$6} END {printf "%d %.3f\n", n, m}' output-block/nodal_00023.txt)
 grep -qF "while $below of the 32 nodes are" "$page" && grep -qF "up to u_ν = $largest" "$page" ||
   { echo "FAIL: at t = 0.92 $below nodes have u_nu > 0, up to $largest: not what $page says"; exit 1; }
-echo "step-2 block output-block prints the $(wc -l < printed.txt) lines its results page shows"
+# The smallness constant lambda_1 of K0 that the introduction and the
+# results quote is the one printed.
+lambda=$(sed -n 's/^alpha_nu = [0-9.]*, lambda_1 = \([0-9.]*\) .*/\1/p' printed.txt)
+[ -n "$lambda" ] || { echo "FAIL: step-2 block prints no lambda_1"; exit 1; }
+for quote in "print it: λ₁ = $lambda > α_ν = 5|intro.md" "finds λ₁ = $lambda for K0|results.md"; do
+  doc=$src/tutorial/step-2/doc/${quote#*|}
+  tr '\n' ' ' < "$doc" | grep -qF -- "${quote%%|*}" ||
+    { echo "FAIL: '${quote%%|*}' is not in $doc"; exit 1; }
+done
+echo "step-2 block output-block prints the $(wc -l < printed.txt) lines its results page shows; lambda_1 = $lambda as the pages quote"

@@ -53,6 +53,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -164,6 +165,12 @@ namespace Step2
     response(const double r) const
     {
       return a + remainder(r);
+    }
+    // The relaxed monotonicity constant $\alpha_\nu = \beta(a - b)$.
+    double
+    alpha() const
+    {
+      return beta * (a - b);
     }
   };
 
@@ -580,7 +587,9 @@ namespace Step2
     // $E_H = \max_n \|w(t_n) - w_n\|_{L^2}$,
     // $E_V = (k \sum_n \|\varepsilon(w(t_n) - w_n)\|_{L^2}^2)^{1/2}$,
     // $E_u = \max_n \|\varepsilon(u(t_n) - u_n)\|_{L^2}$.
-    double       E_H = 0, E_V = 0, E_u = 0;
+    double E_H = 0, E_V = 0, E_u = 0;
+    // $\lambda_1$ of the smallness condition (smallness_constant()).
+    double       lambda_1  = 0;
     double       mesh_size = 0;
     unsigned int n_dofs = 0, n_steps = 0, newton_iterations = 0;
 
@@ -609,6 +618,12 @@ namespace Step2
     solve_linearized(Vector<double> &trial);
     double
     nodal_energy(const Vector<double> &v) const;
+
+    // The constant $\lambda_1$ of the smallness condition of one step:
+    // $J_n$ is strictly convex, and each step has one solution, when
+    // $\alpha_\nu < \lambda_1$.
+    double
+    smallness_constant() const;
 
     const ProblemData<dim> &data;
     const unsigned int      refinements;
@@ -722,7 +737,8 @@ namespace Step2
   // $A$. $B$ acts on $u_n$, which the left-point rule makes known before the
   // step, so it stays on the right-hand side. The constant $\rho/k$ in $K_0$
   // is also why a small enough $k$ makes each step uniquely solvable: it
-  // lifts the smallest eigenvalue of $K_0$ above $\alpha_\nu$. Then the
+  // lifts $\lambda_1$ of the smallness condition above $\alpha_\nu$
+  // (smallness_constant(); like $k^{-1/2}$, not like $1/k$). Then the
   // contact nodes.
   template <int dim>
   void
@@ -1207,6 +1223,64 @@ namespace Step2
       }
   }
 
+  // @sect4{KelvinVoigtContact::smallness_constant}
+  //
+  // step-1's smallness condition with $K_0$ for $K$: $J_n$ is strictly
+  // convex when
+  // @f[
+  //   \alpha_\nu < \lambda_1 = \min_{v \ne 0}
+  //     \frac{v\cdot K_0 v}{\sum_i m_i (v_i\cdot\nu_i)^2},
+  // @f]
+  // the smallest eigenvalue of $K_0 x = \lambda N x$, $N = \sum_i m_i
+  // \nu_i\otimes\nu_i$. We compute it as step-1, step-3 and step-4 do: the
+  // power iteration $x \leftarrow K_0^{-1} N x$ for the largest eigenvalue
+  // $1/\lambda_1$ of $K_0^{-1} N$, one UMFPACK solve per iteration, until
+  // the Rayleigh quotient changes by less than $10^{-12}$ relative. $K_0$
+  // holds $\rho/k\,M$, but $\lambda_1$ does not grow like $\rho/k$: the
+  // lowest mode lives in a layer along $\Gamma_3$ whose depth shrinks with
+  // $k$ (the introduction, "One step is a minimisation").
+  template <int dim>
+  double
+  KelvinVoigtContact<dim>::smallness_constant() const
+  {
+    const auto apply_N = [&](const Vector<double> &v, Vector<double> &Nv) {
+      Nv = 0;
+      for (const ContactNode<dim> &node : contact_nodes)
+        {
+          double v_nu = 0;
+          for (unsigned int c = 0; c < dim; ++c)
+            v_nu += v(node.dofs[c]) * node.normal[c];
+          for (unsigned int c = 0; c < dim; ++c)
+            Nv(node.dofs[c]) = node.mass * v_nu * node.normal[c];
+        }
+    };
+
+    SparseDirectUMFPACK K0_inverse;
+    K0_inverse.initialize(step_matrix);
+    Vector<double> x(n_dofs), Nx(x), Kx(x);
+    for (const ContactNode<dim> &node : contact_nodes)
+      for (unsigned int c = 0; c < dim; ++c)
+        x(node.dofs[c]) = node.normal[c];
+
+    double lambda = std::numeric_limits<double>::max();
+    for (unsigned int iteration = 0; iteration < 1000; ++iteration)
+      {
+        apply_N(x, Nx);
+        K0_inverse.vmult(x, Nx);
+        x /= x.l2_norm();
+        step_matrix.vmult(Kx, x);
+        apply_N(x, Nx);
+        const double quotient = (x * Kx) / (x * Nx);
+        if (std::abs(quotient - lambda) <= 1e-12 * quotient)
+          return quotient;
+        lambda = quotient;
+      }
+    AssertThrow(false,
+                ExcMessage("The power iteration for the smallness constant "
+                           "did not converge in 1000 steps."));
+    return lambda;
+  }
+
   // @sect4{KelvinVoigtContact::output_results}
   //
   // A VTU file of $w_n$ and $u_n$ for ParaView, and the nodal values in full
@@ -1320,6 +1394,7 @@ namespace Step2
     make_grid();
     setup_system();
     assemble_system();
+    lambda_1 = smallness_constant();
 
     // nodal interpolation of $u_0$ and $w_0$ (their values at the vertices
     // are the $Q_1$ coefficients)
@@ -1342,6 +1417,14 @@ namespace Step2
     const bool write = !output_directory.empty();
     if (write)
       {
+        // The smallness condition of the steps, printed as step-1 prints
+        // it: $K_0$ is the same at every step.
+        const double alpha_nu = data.normal_law.alpha();
+        std::cout << "alpha_nu = " << alpha_nu << ", lambda_1 = " << lambda_1
+                  << (alpha_nu < lambda_1 ?
+                        " (alpha_nu < lambda_1: one solution per step)" :
+                        " (alpha_nu >= lambda_1: maybe several solutions)")
+                  << std::endl;
         std::filesystem::create_directories(output_directory);
         output_results(0);
       }
@@ -1533,6 +1616,7 @@ main(int argc, char **argv)
               table.add_value("Newton",
                               double(problem.newton_iterations) /
                                 problem.n_steps);
+              table.add_value("lambda_1", problem.lambda_1);
             }
           for (const std::string column : {"h", "k", "E_H", "E_V", "E_u"})
             {
@@ -1540,11 +1624,14 @@ main(int argc, char **argv)
               table.set_scientific(column, true);
             }
           table.set_precision("Newton", 2);
+          table.set_precision("lambda_1", 2);
           for (const std::string column : {"E_H", "E_V", "E_u"})
             table.evaluate_convergence_rates(
               column, ConvergenceTable::reduction_rate_log2);
           std::cout << "Manufactured solution, coupled refinement k = h/sqrt(2)"
-                    << " (Newton: mean iterations per step)" << std::endl;
+                    << " (Newton: mean iterations per step; lambda_1 against"
+                    << " alpha_nu = " << exact.normal_law.alpha() << ")"
+                    << std::endl;
           table.write_text(std::cout);
         }
     }
