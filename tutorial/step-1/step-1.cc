@@ -107,7 +107,8 @@ namespace Step1
                       ExcMessage("The breakpoints must have increasing r "
                                  "and a response >= 0."));
           // $\alpha_\nu$ is the steepest descent slope; the steepest rise
-          // sets a floor of the complementarity constants (solve()).
+          // sets a floor of the complementarity constants
+          // (setup_contact_nodes()).
           alpha         = std::max(alpha, -slope(k));
           steepest_rise = std::max(steepest_rise, slope(k));
         }

@@ -185,7 +185,9 @@ namespace Step3
   // @sect3{The memory kernels}
 
   // Two kernels, both Prony series (sums of decaying exponentials). The
-  // relaxation tensor of the stress is isotropic,
+  // kernel of the stress, the relaxation tensor $R$ of the literature
+  // (positive amplitudes stiffen the body, negative ones soften it), is
+  // isotropic,
   // @f[
   //   R(t)\varepsilon = \sum_m e^{-t/\tau_m}\bigl(2\mu_m\varepsilon +
   //   \lambda_m\,\mathrm{tr}(\varepsilon) I\bigr),
@@ -211,6 +213,14 @@ namespace Step3
   {
     double b, tau;
   };
+
+  // The kernels of this program, written once: the block and the
+  // manufactured solution share them, and tests/tutorial/step_3_block.prm
+  // gives the full program the same numbers.
+  const std::vector<RelaxationTerm>   relaxation_kernel    = {{20, 30, 0.25},
+                                                              {10, 10, 2}};
+  const std::vector<NormalMemoryTerm> normal_memory_kernel = {{10, 0.5},
+                                                              {2, 2}};
 
   // The factor $e^{-k/\tau}$ by which a term's history decays over a step
   // of length $k$.
@@ -318,12 +328,10 @@ namespace Step3
                        /*lambda=*/150,
                        /*F_b=*/0.6,
                        /*end_time=*/2,
-                       with_memory ? std::vector<RelaxationTerm>{{20, 30, 0.25},
-                                                                 {10, 10, 2}} :
+                       with_memory ? relaxation_kernel :
                                      std::vector<RelaxationTerm>{},
-                       with_memory ?
-                         std::vector<NormalMemoryTerm>{{10, 0.5}, {2, 2}} :
-                         std::vector<NormalMemoryTerm>{})
+                       with_memory ? normal_memory_kernel :
+                                     std::vector<NormalMemoryTerm>{})
     {}
 
     void
@@ -411,8 +419,8 @@ namespace Step3
                        /*lambda=*/150,
                        /*F_b=*/0.6,
                        /*end_time=*/1,
-                       {{20, 30, 0.25}, {10, 10, 2}},
-                       {{10, 0.5}, {2, 2}})
+                       relaxation_kernel,
+                       normal_memory_kernel)
     {}
 
     void
