@@ -137,9 +137,8 @@ namespace
     const FESystem<dim> fe(FE_Q<dim>(1), dim);
     DoFHandler<dim>     dofs(mesh);
     dofs.distribute_dofs(fe);
-    const IndexSet owned = dofs.locally_owned_dofs();
-    IndexSet       relevant;
-    DoFTools::extract_locally_relevant_dofs(dofs, relevant);
+    const IndexSet owned    = dofs.locally_owned_dofs();
+    const IndexSet relevant = DoFTools::extract_locally_relevant_dofs(dofs);
     AffineConstraints<double> constraints(relevant);
     constraints.close();
     const MappingQ<dim> mapping(1);

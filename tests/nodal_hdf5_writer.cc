@@ -224,8 +224,8 @@ namespace
     DoFHandler<dim> dof_handler(tria);
     dof_handler.distribute_dofs(*discretization.fe);
 
-    IndexSet relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    const IndexSet relevant =
+      DoFTools::extract_locally_relevant_dofs(dof_handler);
     std::vector<TrilinosWrappers::MPI::Vector> vectors;
     for (unsigned int f = 0; f < 3; ++f)
       {

@@ -40,8 +40,7 @@ namespace
     const KelvinVoigtMaterial<2>  material(parameters.material);
     const DoFHandler<2>          &dofs = problem.state().dof_handler;
     TrilinosWrappers::MPI::Vector w, u_next;
-    IndexSet                      relevant;
-    DoFTools::extract_locally_relevant_dofs(dofs, relevant);
+    const IndexSet relevant = DoFTools::extract_locally_relevant_dofs(dofs);
     w.reinit(dofs.locally_owned_dofs(), relevant, MPI_COMM_WORLD);
     u_next.reinit(w);
     TrilinosWrappers::MPI::Vector sum(problem.state().displacement);

@@ -105,7 +105,9 @@ main(int argc, char **argv)
           record("patches", timer);
 
           DataOutBase::VtkFlags flags;
-          flags.compression_level = DataOutBase::VtkFlags::best_speed;
+          // the enumerator of deal.II 9.4's and 9.6's compression types
+          flags.compression_level =
+            decltype(flags.compression_level)::best_speed;
           data_out->set_flags(flags);
           {
             std::ofstream vtu("write_cost.vtu");

@@ -42,12 +42,11 @@ namespace hemicontact
       {"young", LameParametrisation::young}};
     const SelectionNames<SolutionFormat> solution_formats =
       {{"vtu", SolutionFormat::vtu}, {"hdf5", SolutionFormat::hdf5}};
-    const SelectionNames<DataOutBase::VtkFlags::ZlibCompressionLevel>
-      compression_levels = {
-        {"best speed", DataOutBase::VtkFlags::best_speed},
-        {"default", DataOutBase::VtkFlags::default_compression},
-        {"best compression", DataOutBase::VtkFlags::best_compression},
-        {"none", DataOutBase::VtkFlags::no_compression}};
+    const SelectionNames<VtuCompression> compression_levels = {
+      {"best speed", VtuCompression::best_speed},
+      {"default", VtuCompression::default_compression},
+      {"best compression", VtuCompression::best_compression},
+      {"none", VtuCompression::no_compression}};
     const SelectionNames<OutputPrecision> output_precisions = {
       {"float", OutputPrecision::single_precision},
       {"double", OutputPrecision::double_precision}};

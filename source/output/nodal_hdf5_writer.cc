@@ -272,8 +272,8 @@ namespace hemicontact
                            "indices number."));
 
     // the index of every node a locally owned cell touches, from its owner
-    IndexSet relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    const IndexSet relevant =
+      DoFTools::extract_locally_relevant_dofs(dof_handler);
     TrilinosWrappers::MPI::Vector node_index(owned, mpi_communicator);
     {
       unsigned long long n = node_offset;

@@ -100,7 +100,8 @@ namespace hemicontact
   {
     dof_handler.distribute_dofs(*discretization.fe);
     locally_owned_dofs = dof_handler.locally_owned_dofs();
-    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+    locally_relevant_dofs =
+      DoFTools::extract_locally_relevant_dofs(dof_handler);
 
     // hanging nodes and u = 0 on Gamma_1
     base_constraints.clear();

@@ -23,6 +23,23 @@ namespace hemicontact
 {
   namespace
   {
+    // What the mesh tells the data-transfer callbacks about a cell: deal.II
+    // 9.6 names it dealii::CellStatus (Triangulation::CellStatus and
+    // CELL_COARSEN are deprecated there), deal.II 9.4 has only the latter.
+#if DEAL_II_VERSION_GTE(9, 6, 0)
+    template <int dim>
+    using TransferStatus = CellStatus;
+    template <int dim>
+    constexpr TransferStatus<dim> children_coarsened =
+      CellStatus::children_will_be_coarsened;
+#else
+    template <int dim>
+    using TransferStatus = typename Triangulation<dim>::CellStatus;
+    template <int dim>
+    constexpr TransferStatus<dim> children_coarsened =
+      Triangulation<dim>::CELL_COARSEN;
+#endif
+
     /** The parent's local vectors [rho M w; B u_next] in one array. */
     using CellFunctionals = std::vector<double>;
 
@@ -79,8 +96,8 @@ namespace hemicontact
        &material       = state.material,
        &w,
        &u_next](const typename Triangulation<dim>::cell_iterator &cell,
-                const typename Triangulation<dim>::CellStatus     status) {
-        if (status != Triangulation<dim>::CELL_COARSEN)
+                const TransferStatus<dim>                         status) {
+        if (status != children_coarsened<dim>)
           return std::vector<char>();
         // called on the parent, while its children and the old dofs still exist
         const FiniteElement<dim> &fe        = *discretization.fe;
@@ -127,9 +144,9 @@ namespace hemicontact
       handle,
       [&coarsened](
         const typename Triangulation<dim>::cell_iterator               &cell,
-        const typename Triangulation<dim>::CellStatus                   status,
+        const TransferStatus<dim>                                       status,
         const boost::iterator_range<std::vector<char>::const_iterator> &data) {
-        if (status == Triangulation<dim>::CELL_COARSEN)
+        if (status == children_coarsened<dim>)
           coarsened[cell->id()] =
             Utilities::unpack<CellFunctionals>(data.begin(),
                                                data.end(),

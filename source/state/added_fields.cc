@@ -40,8 +40,8 @@ namespace hemicontact
         if (!e->dof_handler || &e->dof_handler->get_triangulation() != &mesh)
           e->dof_handler = std::make_unique<DoFHandler<dim>>(mesh);
         e->dof_handler->distribute_dofs(*e->definition.element);
-        e->owned = e->dof_handler->locally_owned_dofs();
-        DoFTools::extract_locally_relevant_dofs(*e->dof_handler, e->relevant);
+        e->owned    = e->dof_handler->locally_owned_dofs();
+        e->relevant = DoFTools::extract_locally_relevant_dofs(*e->dof_handler);
         e->constraints.clear();
         e->constraints.reinit(e->relevant);
         DoFTools::make_hanging_node_constraints(*e->dof_handler,

@@ -467,9 +467,8 @@ namespace hemicontact
                  "orders that do not reach 1."
               << std::endl;
         }
-      IndexSet relevant;
-      DoFTools::extract_locally_relevant_dofs(problem.state().dof_handler,
-                                              relevant);
+      IndexSet relevant =
+        DoFTools::extract_locally_relevant_dofs(problem.state().dof_handler);
       const std::unique_ptr<SpatialCache> cache = exact.make_fields_cache();
       LevelSums                           sums;
       Timer                               steps_wall;
@@ -486,8 +485,8 @@ namespace hemicontact
           if (adaptation_due(problem.state()))
             {
               problem.adapt_mesh(s);
-              DoFTools::extract_locally_relevant_dofs(
-                problem.state().dof_handler, relevant);
+              relevant = DoFTools::extract_locally_relevant_dofs(
+                problem.state().dof_handler);
             }
         }
       const double step_wall_seconds = steps_wall.wall_time();

@@ -400,6 +400,15 @@ namespace hemicontact
     test      ///< rounded, machine-independent lines for the test suite
   };
 
+  /**
+   * The zlib level of the VTU files: the type of VtkFlags::compression_level,
+   * DataOutBase::CompressionLevel in deal.II 9.6 and
+   * VtkFlags::ZlibCompressionLevel (deprecated in 9.6) in 9.4; both have
+   * the enumerators best_speed, default_compression, best_compression and
+   * no_compression.
+   */
+  using VtuCompression = decltype(DataOutBase::VtkFlags::compression_level);
+
   /** What is written, where and how often. */
   struct OutputParameters
   {
@@ -411,8 +420,8 @@ namespace hemicontact
     std::string     probe_points; ///< "x,y; x,y" (empty: none)
     TerminalOutput  terminal;
     /** zlib level of the VTU files (lossless at every level). */
-    DataOutBase::VtkFlags::ZlibCompressionLevel compression;
-    bool                                        timing_summary;
+    VtuCompression compression;
+    bool           timing_summary;
     /** Write performance.csv (and time one step-matrix solve) at the end. */
     bool performance_summary;
     /** Evaluate the residual error estimate after every step. */
