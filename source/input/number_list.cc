@@ -43,4 +43,27 @@ namespace hemicontact
       ids.push_back(static_cast<unsigned int>(i));
     return ids;
   }
+
+  std::vector<std::string>
+  split_at_top_level_commas(const std::string &text)
+  {
+    std::vector<std::string> items;
+    if (dealii::Utilities::trim(text).empty())
+      return items;
+    std::string item;
+    int         depth = 0;
+    for (const char c : text)
+      {
+        depth += (c == '(') - (c == ')');
+        if (c == ',' && depth == 0)
+          {
+            items.push_back(dealii::Utilities::trim(item));
+            item.clear();
+          }
+        else
+          item += c;
+      }
+    items.push_back(dealii::Utilities::trim(item));
+    return items;
+  }
 } // namespace hemicontact

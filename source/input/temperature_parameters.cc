@@ -53,21 +53,24 @@ namespace hemicontact
                       "1",
                       Patterns::Anything(),
                       "c_theta > 0, the heat capacity per volume: a number "
-                      "or an expression in x, y[, z] and the constants.");
+                      "or an expression in x, y[, z] and the constants (not "
+                      "t: it is evaluated once).");
     prm.declare_entry(
       "thermal stress coefficient",
       "0",
       Patterns::Anything(),
       "c_e >= 0 of sigma = ... - c_e theta I and of the heat equation's "
       "-c_e div w (c_e = E alpha / (1 - 2 nu) from the expansion "
-      "coefficient alpha): a number or an expression in x, y[, z].");
+      "coefficient alpha): a number or an expression in x, y[, z] (not t: "
+      "it is evaluated once).");
     prm.declare_entry(
       "conductivity",
       "1",
       Patterns::Anything(),
-      "K: one number or expression in x, y[, z] (isotropic, K > 0), or "
-      "dim x dim comma-separated numbers by rows (a symmetric positive "
-      "definite tensor).");
+      "K: one number or expression in x, y[, z] (isotropic, K > 0; not t: "
+      "it is evaluated once), or dim x dim comma-separated numbers by rows "
+      "(a symmetric positive definite tensor). Commas inside parentheses, "
+      "as in max(x, 1), belong to the expression.");
     prm.declare_entry("initial temperature",
                       "0",
                       Patterns::Anything(),
@@ -157,7 +160,7 @@ namespace hemicontact
     enabled                    = prm.get_bool("enabled");
     heat_capacity              = prm.get("heat capacity");
     thermal_stress_coefficient = prm.get("thermal stress coefficient");
-    conductivity        = Utilities::split_string_list(prm.get("conductivity"));
+    conductivity        = split_at_top_level_commas(prm.get("conductivity"));
     initial_temperature = prm.get("initial temperature");
     heat_source         = prm.get("heat source");
     prescribed_ids = get_id_list(prm, "prescribed temperature boundary ids");

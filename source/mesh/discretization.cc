@@ -178,6 +178,11 @@ namespace hemicontact
           else
             grid_in.read_msh(file);
         }
+      catch (const InputError &)
+        {
+          // a check of the cells read (ShapeCheckedTriangulation)
+          throw;
+        }
       catch (const ExceptionBase &e)
         {
           std::ostringstream s;
@@ -321,57 +326,101 @@ namespace hemicontact
     }
 
     /**
-     * Refuse a cell whose map from the reference cell is not one to one: a
-     * Jacobian determinant below 1e-9 diameter^dim at a vertex (a
+     * Refuse a cell of @p cells whose map from the reference cell is not one
+     * to one: a Jacobian determinant below 1e-9 diameter^dim at a vertex (a
      * self-intersecting, inverted or degenerate cell), naming its vertices.
+     * It checks the cell list, before a mesh is made of it
+     * (ShapeCheckedTriangulation below).
      */
     template <int dim>
     void
-    check_cell_shapes(const Triangulation<dim> &mesh, const std::string &name)
+    check_cell_shapes(const std::vector<Point<dim>>    &vertices,
+                      const std::vector<CellData<dim>> &cells,
+                      const std::string                &name)
     {
-      for (const auto &cell : mesh.active_cell_iterators())
+      for (const CellData<dim> &cell : cells)
         {
+          const ReferenceCell type =
+            ReferenceCell::n_vertices_to_type(dim, cell.vertices.size());
+          std::vector<Point<dim>> corner;
+          for (const unsigned int v : cell.vertices)
+            corner.push_back(vertices[v]);
+          double diameter = 0;
+          for (const Point<dim> &a : corner)
+            for (const Point<dim> &b : corner)
+              diameter = std::max(diameter, a.distance(b));
           std::vector<double> determinants;
-          if (cell->reference_cell().is_hyper_cube())
+          if (type.is_hyper_cube())
             {
-              Point<dim> vertices[GeometryInfo<dim>::vertices_per_cell];
-              for (const unsigned int v : cell->vertex_indices())
-                vertices[v] = cell->vertex(v);
+              Point<dim> points[GeometryInfo<dim>::vertices_per_cell];
+              std::copy(corner.begin(), corner.end(), points);
               Tensor<0, dim> forms[GeometryInfo<dim>::vertices_per_cell];
-              GeometryInfo<dim>::alternating_form_at_vertices(vertices, forms);
+              GeometryInfo<dim>::alternating_form_at_vertices(points, forms);
               for (const Tensor<0, dim> &f : forms)
                 determinants.push_back(f);
             }
-          else
+          else if (type.is_simplex())
             {
               Tensor<2, dim> jacobian;
               for (unsigned int d = 0; d < dim; ++d)
                 for (unsigned int e = 0; e < dim; ++e)
-                  jacobian[e][d] = cell->vertex(d + 1)[e] - cell->vertex(0)[e];
+                  jacobian[e][d] = corner[d + 1][e] - corner[0][e];
               determinants.push_back(determinant(jacobian));
             }
+          else // wedges and pyramids: check_cell_types() refuses them
+            continue;
           const double smallest =
             *std::min_element(determinants.begin(), determinants.end());
-          if (smallest > 1e-9 * std::pow(cell->diameter(), dim))
+          if (smallest > 1e-9 * std::pow(diameter, dim))
             continue;
           // the vertices in the order of a Gmsh element: around each face
           // of a hypercube, not deal.II's lexicographic order
           std::string corners;
-          for (const unsigned int v : cell->vertex_indices())
+          for (unsigned int v = 0; v < corner.size(); ++v)
             {
               const unsigned int gmsh_v =
-                cell->reference_cell().is_hyper_cube() && v % 4 >= 2 ? v ^ 1 :
-                                                                       v;
-              corners += (v == 0 ? "" : ", ") + to_text(cell->vertex(gmsh_v));
+                type.is_hyper_cube() && v % 4 >= 2 ? v ^ 1 : v;
+              corners += (v == 0 ? "" : ", ") + to_text(corner[gmsh_v]);
             }
           throw InputError(
-            "geometry: the mesh file '" + name + "' has a " +
-            cell_name(cell->reference_cell()) + " with the nodes " + corners +
+            "geometry: the mesh file '" + name + "' has a " + cell_name(type) +
+            " with the nodes " + corners +
             " that is self-intersecting, inverted or degenerate (the "
             "Jacobian determinant of its map is not positive at every "
             "vertex). Fix the order of its nodes or the mesh.");
         }
     }
+
+    /**
+     * The serial mesh a Gmsh file is read into: check_cell_shapes() runs on
+     * the reader's cell list before the mesh is made of it. deal.II 9.6
+     * refuses some such cells itself while making the mesh, with a message
+     * that names neither the file nor the cell ("Something went wrong when
+     * making cell 1"); deal.II 9.4 makes the mesh. Checking first gives the
+     * message above with either version.
+     */
+    template <int dim>
+    class ShapeCheckedTriangulation : public Triangulation<dim>
+    {
+    public:
+      explicit ShapeCheckedTriangulation(const std::string &name)
+        : name(name)
+      {}
+
+      using Triangulation<dim>::create_triangulation;
+
+      void
+      create_triangulation(const std::vector<Point<dim>>    &vertices,
+                           const std::vector<CellData<dim>> &cells,
+                           const SubCellData &subcelldata) override
+      {
+        check_cell_shapes(vertices, cells, name);
+        Triangulation<dim>::create_triangulation(vertices, cells, subcelldata);
+      }
+
+    private:
+      const std::string name;
+    };
   } // namespace
 
   template <int dim>
@@ -531,13 +580,13 @@ namespace hemicontact
     require_regular_file(name);
     // read and check on a serial mesh: a p4est mesh fails on cells other
     // than quadrilaterals/hexahedra before any check could run
-    Triangulation<dim> coarse;
+    // (the cells' shapes are checked while it is read)
+    ShapeCheckedTriangulation<dim> coarse(name);
     read_gmsh(coarse, name);
     check_cell_types(coarse, name, geometry.cell_type);
     if constexpr (dim == 2)
       check_planar(name);
     check_duplicated_vertices(coarse, name);
-    check_cell_shapes(coarse, name);
     const auto [vertices, cells, faces] =
       GridTools::get_coarse_mesh_description(coarse);
     mesh.create_triangulation(vertices, cells, faces);
@@ -548,6 +597,19 @@ namespace hemicontact
   Discretization<dim>::check_boundary_ids(
     const BoundaryParameters &boundary) const
   {
+    check_boundary_ids("boundary",
+                       {{"clamped boundary ids", boundary.clamped_ids},
+                        {"traction boundary ids", boundary.traction_ids},
+                        {"contact boundary ids", boundary.contact_ids}});
+  }
+
+  template <int dim>
+  void
+  Discretization<dim>::check_boundary_ids(
+    const std::string &subsection,
+    const std::vector<std::pair<std::string, std::vector<unsigned int>>>
+      &entries) const
+  {
     const std::vector<types::boundary_id> present_ids =
       Utilities::MPI::compute_set_union(triangulation->get_boundary_ids(),
                                         mpi_communicator);
@@ -557,18 +619,13 @@ namespace hemicontact
     for (const auto id : present)
       present_list += (present_list.empty() ? "" : ", ") + std::to_string(id);
 
-    const auto check = [&](const std::vector<unsigned int> &ids,
-                           const std::string               &name) {
+    for (const auto &[name, ids] : entries)
       for (const unsigned int id : ids)
         require(present.count(id) == 1,
-                "boundary: '" + name + "' names boundary id " +
+                subsection + ": '" + name + "' names boundary id " +
                   std::to_string(id) +
                   ", which the mesh does not have (its boundary ids are " +
                   present_list + ").");
-    };
-    check(boundary.clamped_ids, "clamped boundary ids");
-    check(boundary.traction_ids, "traction boundary ids");
-    check(boundary.contact_ids, "contact boundary ids");
   }
 
   template <int dim>

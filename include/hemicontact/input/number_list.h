@@ -23,4 +23,11 @@ namespace hemicontact
    */
   std::vector<unsigned int>
   get_id_list(const dealii::ParameterHandler &prm, const std::string &entry);
+
+  /**
+   * @p text split at the commas outside parentheses (those inside belong
+   * to a function's arguments, as in max(x, 1)), each item trimmed.
+   */
+  std::vector<std::string>
+  split_at_top_level_commas(const std::string &text);
 } // namespace hemicontact

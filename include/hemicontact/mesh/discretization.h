@@ -9,6 +9,9 @@
 #include <hemicontact/input/parameters.h>
 
 #include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace hemicontact
 {
@@ -44,6 +47,17 @@ namespace hemicontact
      */
     void
     check_boundary_ids(const BoundaryParameters &boundary) const;
+
+    /**
+     * The rule of the one above for any entries: each id of each entry
+     * (its name, its ids) of the subsection @p subsection exists on the
+     * mesh; else an InputError naming the entry, the id and the mesh's ids.
+     */
+    void
+    check_boundary_ids(
+      const std::string &subsection,
+      const std::vector<std::pair<std::string, std::vector<unsigned int>>>
+        &entries) const;
 
     bool
     is_simplex() const
