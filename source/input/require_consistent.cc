@@ -3,6 +3,7 @@
  * (require_consistent(), include/hemicontact/input/parameters.h).
  */
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/expressions/expression.h>
 #include <hemicontact/input/parameters.h>
 #include <hemicontact/laws/friction_bound.h>
 #include <hemicontact/memory/normal_memory_kernel.h>
@@ -72,6 +73,14 @@ namespace hemicontact
     require_temperature_usable(const Parameters &parameters)
     {
       const TemperatureParameters &temperature = parameters.temperature;
+      require(temperature.enabled || !parameters.manufactured.enabled ||
+                parameters.manufactured.exact_temperature == "0",
+              "manufactured solution: 'exact temperature' = " +
+                quoted_expression(parameters.manufactured.exact_temperature) +
+                " is set, but the body has no temperature "
+                "('temperature/enabled = false'), so it would not be used. "
+                "Set 'temperature/enabled = true', or 'exact temperature' = "
+                "0.");
       if (!temperature.enabled)
         return;
       const bool is_static =
