@@ -48,11 +48,45 @@ namespace hemicontact
                               "'");
       if (parameters.problem.time_scheme != TimeScheme::left_point)
         ignored.push_back("'problem/time scheme'");
-      if (ignored.empty())
-        return "";
-      return "the static class does not use " + joined(ignored) +
-             " (no inertia, no viscosity, no initial state: one problem per "
-             "load value t_n = n k, doc/theory.md section 9.2).";
+      // theta is data: the heat equation's and the contact heat law's
+      // entries (their defaults 0)
+      std::vector<std::string>     thermal;
+      const TemperatureParameters &temperature = parameters.temperature;
+      if (temperature.enabled)
+        {
+          for (const auto &[name, value] :
+               {std::make_pair("exchange coefficient",
+                               temperature.exchange_coefficient),
+                std::make_pair("foundation temperature",
+                               temperature.foundation_temperature),
+                std::make_pair("initial temperature",
+                               temperature.initial_temperature),
+                std::make_pair("heat source", temperature.heat_source),
+                std::make_pair("prescribed temperature",
+                               temperature.prescribed_temperature),
+                std::make_pair("heat flux", temperature.heat_flux)})
+            if (value != "0")
+              thermal.push_back(std::string("'temperature/") + name + "' = '" +
+                                value + "'");
+          if (temperature.frictional_heat_fraction != 0.)
+            {
+              std::ostringstream value;
+              value << temperature.frictional_heat_fraction;
+              thermal.push_back("'temperature/frictional heat fraction' = " +
+                                value.str());
+            }
+        }
+      std::string note;
+      if (!ignored.empty())
+        note = "the static class does not use " + joined(ignored) +
+               " (no inertia, no viscosity, no initial state: one problem "
+               "per load value t_n = n k, doc/theory.md section 9.2).";
+      if (!thermal.empty())
+        note += std::string(note.empty() ? "the" : " The") +
+                " static class does not use " + joined(thermal) +
+                " (theta is 'given temperature': no heat equation, no "
+                "contact heat law, doc/theory.md section 13.2).";
+      return note;
     }
   } // namespace
 
