@@ -184,7 +184,17 @@ namespace hemicontact
         if (depth >= parameters.nonlinear_solver.time_step_halvings)
           {
             contact_nodes = nodes_before;
-            throw;
+            if (depth == 0)
+              throw;
+            std::string what = failure.what();
+            if (!what.empty() && what.back() == '.')
+              what.pop_back();
+            std::ostringstream message;
+            message << what << "; with the step halved " << depth
+                    << " times as well (down to k = " << k
+                    << ", 'nonlinear solver/time step halvings' = "
+                    << parameters.nonlinear_solver.time_step_halvings << ").";
+            throw SolverFailure(message.str());
           }
       }
 

@@ -96,7 +96,7 @@ namespace hemicontact
             << passes << " passes ('temperature/coupling iterations'; the "
             << "relative change of (w_n, theta_n) is " << last_change
             << " > 'coupling tolerance' = " << parameters.coupling_tolerance
-            << ")";
+            << ").";
     throw SolverFailure(message.str());
   }
 } // namespace hemicontact
