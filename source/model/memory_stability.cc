@@ -37,7 +37,80 @@ namespace hemicontact
 
     /** A growth this far above 1 is round-off of the eigenvalues. */
     constexpr double growth_tolerance = 1e-10;
+
+    /** The largest real part of the eigenvalues of a square matrix. */
+    double
+    largest_real_part(const FullMatrix<double> &matrix)
+    {
+      LAPACKFullMatrix<double> t(matrix.m(), matrix.n());
+      t = matrix;
+      t.compute_eigenvalues();
+      double largest = -std::numeric_limits<double>::infinity();
+      for (unsigned int i = 0; i < matrix.m(); ++i)
+        largest = std::max(largest, t.eigenvalue(i).real());
+      return largest;
+    }
   } // namespace
+
+  double
+  model_growth_rate(const MemoryMode &mode, const StepScheme &scheme)
+  {
+    const unsigned int n_terms = mode.amplitudes.size();
+    if (n_terms == 0)
+      return 0;
+    // h_l(t) = int_0^t e^{-(t-s)/tau_l} u(s) ds: h_l' = u - h_l/tau_l
+    const auto inverse = [&](const unsigned int l) {
+      return std::isfinite(mode.relaxation_times[l]) ?
+               1. / mode.relaxation_times[l] :
+               0.;
+    };
+    const double m = scheme.has_inertia() ? mode.mass : 0.;
+    FullMatrix<double> t;
+    if (scheme.is_static() || (m <= 0 && !(mode.viscosity > 0)))
+      {
+        // b u = -sum_l r_l h_l: the state (h_1, ..., h_L)
+        if (!(mode.elasticity > 0))
+          return 0;
+        t.reinit(n_terms, n_terms);
+        for (unsigned int l = 0; l < n_terms; ++l)
+          for (unsigned int j = 0; j < n_terms; ++j)
+            t(l, j) = -mode.amplitudes[j] / mode.elasticity -
+                      (l == j ? inverse(l) : 0.);
+      }
+    else if (m <= 0)
+      {
+        // a u' = -b u - sum_l r_l h_l: the state (u, h_1, ..., h_L)
+        t.reinit(1 + n_terms, 1 + n_terms);
+        t(0, 0) = -mode.elasticity / mode.viscosity;
+        for (unsigned int l = 0; l < n_terms; ++l)
+          {
+            t(0, 1 + l)     = -mode.amplitudes[l] / mode.viscosity;
+            t(1 + l, 0)     = 1;
+            t(1 + l, 1 + l) = -inverse(l);
+          }
+      }
+    else
+      {
+        // m w' = -a w - b u - sum_l r_l h_l, u' = w: (w, u, h_1, ..., h_L)
+        t.reinit(2 + n_terms, 2 + n_terms);
+        t(0, 0) = -mode.viscosity / m;
+        t(0, 1) = -mode.elasticity / m;
+        t(1, 0) = 1;
+        for (unsigned int l = 0; l < n_terms; ++l)
+          {
+            t(0, 2 + l)     = -mode.amplitudes[l] / m;
+            t(2 + l, 1)     = 1;
+            t(2 + l, 2 + l) = -inverse(l);
+          }
+      }
+    return std::max(largest_real_part(t), 0.);
+  }
+
+  double
+  allowed_memory_growth(const double model_rate, const double k)
+  {
+    return std::exp(2 * model_rate * k) * (1 + growth_tolerance);
+  }
 
   double
   memory_rule_growth(const MemoryMode &mode,
@@ -99,8 +172,10 @@ namespace hemicontact
                              const double      k,
                              const StepScheme &scheme)
   {
-    const auto stable = [&](const double s) {
-      return memory_rule_growth(mode, s, scheme) <= 1 + growth_tolerance;
+    const double rate   = model_growth_rate(mode, scheme);
+    const auto   stable = [&](const double s) {
+      return memory_rule_growth(mode, s, scheme) <=
+             allowed_memory_growth(rate, s);
     };
     if (stable(k))
       return k;

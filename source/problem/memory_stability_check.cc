@@ -31,11 +31,13 @@ namespace hemicontact
       return masses;
     }
 
-    /** What one check found: the largest stable k and the growth at k. */
+    /** What one check found: the largest stable k, the rule's growth at
+     *  k and the model's own growth over a step of length k. */
     struct MemoryLimit
     {
-      double      limit  = std::numeric_limits<double>::infinity();
-      double      growth = 0;
+      double      limit        = std::numeric_limits<double>::infinity();
+      double      growth       = 0;
+      double      model_growth = 1;
       std::string where;
     };
 
@@ -60,12 +62,15 @@ namespace hemicontact
           if (!scheme.is_static() &&
               memory_rule_growth(mode, k, scheme, false) > 1 + 1e-10)
             continue;
+          // the rule may grow as the model does (a kernel with a negative
+          // long-term modulus), not faster
           const double growth = memory_rule_growth(mode, k, scheme);
-          if (growth <= 1 + 1e-10)
+          const double rate   = model_growth_rate(mode, scheme);
+          if (growth <= allowed_memory_growth(rate, k))
             continue;
           const double limit = largest_stable_memory_step(mode, k, scheme);
           if (limit < result.limit)
-            result = {limit, growth, where};
+            result = {limit, growth, std::exp(rate * k), where};
         }
     }
 
@@ -265,7 +270,13 @@ namespace hemicontact
             << ": the memory sum is explicit (the left-rectangle rule, "
                "doc/theory.md 11.13), and its recursion grows by a factor "
             << result.growth
-            << " per step, while the model does not. Choose a time step that "
+            << " per step, while the model ";
+    if (result.model_growth > 1 + 1e-10)
+      message << "grows by a factor " << result.model_growth
+              << " per step (the rule may grow by up to its square)";
+    else
+      message << "does not grow";
+    message << ". Choose a time step that "
                "divides the end time and is at most "
             << result.limit << " (e.g. " << parameters.time.end_time << " / "
             << std::ceil(parameters.time.end_time / result.limit)

@@ -16,7 +16,10 @@
 # law (no wall, no slope) is refused at b = 1e4 and k = 0.05, with a limit
 # that its own growth factor confirms (the static recursion's growth
 # q |1 - k b/s| gives the contact mode's stiffness s, and k b/s = 1 +
-# e^{k/tau} the limit), and runs at b = 1.
+# e^{k/tau} the limit), and runs at b = 1. A softening kernel R = -2 e^{-t} B
+# (negative long-term modulus: the model grows as 2 e^t - 1) at k = 0.05
+# runs with the warning that the model grows: the rule's growth
+# e^{-k} (1 + 2 k) = 1.046 per step is below the model's e^k = 1.051.
 set -euo pipefail
 exe=$1; work=$2; prm=$3
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
@@ -109,4 +112,14 @@ if abs(limit - lo) > 2e-3 * lo:
     sys.exit("FAIL: the normal memory's limit and growth disagree")
 if int(open("normal_runs.rc").read()) != 0:
     sys.exit("FAIL: b = 1 refused:\n" + open("normal_runs.log").read())
+PY
+run softening 0.05 "$(prony -2 1)"
+/usr/bin/python3 - <<'PY'
+import sys
+log = open("softening.log").read()
+rc = int(open("softening.rc").read())
+if rc != 0 or "the model itself grows" not in log or "above the stability limit" in log:
+    sys.exit(f"FAIL: the softening kernel: exit {rc}, expected 0 with the growing "
+             f"model's warning and no limit:\n{log}")
+print("softening kernel r = -2, tau = 1, k = 0.05: runs, the model's growth warned about")
 PY

@@ -38,9 +38,29 @@ namespace hemicontact
                      const bool        with_memory = true);
 
   /**
+   * The growth rate s >= 0 of @p mode in the model itself (doc/theory.md
+   * 11.13): the largest real part of the eigenvalues of the mode's
+   * equations m w' + a w + b u + sum_l r_l h_l = 0, u' = w,
+   * h_l' = u - h_l/tau_l (without inertia a u' + ..., in the static
+   * class b u + ...), 0 if the model does not grow. A kernel whose
+   * long-term modulus is negative makes it positive.
+   */
+  double
+  model_growth_rate(const MemoryMode &mode, const StepScheme &scheme);
+
+  /**
+   * The largest growth per step of length @p k that the rule may have for
+   * a mode whose model grows at @p model_rate: e^{2 s k} (1 at s = 0, up
+   * to round-off), the model's own e^{s k} with as much again for the
+   * rule's first-order error.
+   */
+  double
+  allowed_memory_growth(const double model_rate, const double k);
+
+  /**
    * The largest step length at most @p k at which memory_rule_growth()
-   * is at most 1 (by bisection, to 1e-3 relative); @p k itself if it is
-   * stable.
+   * is at most allowed_memory_growth() (by bisection, to 1e-3 relative);
+   * @p k itself if it is stable.
    */
   double
   largest_stable_memory_step(const MemoryMode &mode,
