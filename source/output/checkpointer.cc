@@ -352,9 +352,13 @@ namespace hemicontact
         const std::string run = recorded_run(dir);
         for (int i = static_cast<int>(steps.size()) - 1; i >= 0; --i)
           {
-            std::string why     = checkpoint_damage(dir, steps[i], state);
-            const bool  damaged = !why.empty();
-            if (!damaged && state.run_id != run)
+            state.format_version = CheckpointState::current_format_version;
+            std::string why      = checkpoint_damage(dir, steps[i], state);
+            // a whole file of another format version is not damage
+            const bool damaged =
+              !why.empty() &&
+              state.format_version == CheckpointState::current_format_version;
+            if (why.empty() && state.run_id != run)
               why = "'" +
                     (dir / (checkpoint_name(steps[i]) + ".state")).string() +
                     "' is of another run than the output in '" +
