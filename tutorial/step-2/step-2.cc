@@ -545,7 +545,7 @@ namespace Step2
 
   // The state at an iterate: $w$ split into $w_\nu$ and $w_\tau$, and the
   // multipliers of the laws' convex parts from the nodal contact force
-  // $G_i = -(K_0 w - b)_i$: $s = G_i\cdot\nu_i/m_i - p(w_\nu)$, $\lambda =
+  // $G_i = -(K_0 w - \ell_n)_i$: $s = G_i\cdot\nu_i/m_i - p(w_\nu)$, $\lambda =
   // G_{i,\tau}/m_i$. step-1 computes the same numbers in its NodeState; here
   // they are stored in the node, since solve_linearized() and
   // nonsmooth_residual() read them after update_branches() has set
@@ -644,16 +644,16 @@ namespace Step2
     Vector<double> velocity;     // $w_n$
     Vector<double> old_velocity; // $w_{n-1}$
     Vector<double> displacement; // $u_n = u_0 + k\sum_{i<n} w_i$
-    Vector<double> step_rhs;     // $b = \rho/k\,M w_{n-1} - B u_n + F_n$
-    Vector<double> residual;     // $K_0 w - b$
+    Vector<double> step_rhs;     // $\ell_n = \rho/k\,M w_{n-1} - B u_n + F_n$
+    Vector<double> residual;     // $K_0 w - \ell_n$
 
     std::vector<ContactNode<dim>> contact_nodes;
 
     // Newton stops when no branch changes and the nonsmooth residual is below
-    // $10^{-12}|b|$, the full program's tolerance in the comparison test (so
-    // that the two agree to round-off over all steps), plus an absolute floor
-    // for a step whose $b$ vanishes (a body at rest and unloaded). 50
-    // iterations are far more than a step needs (three on average, see the
+    // $10^{-12}|\ell_n|$, the full program's tolerance in the comparison test
+    // (so that the two agree to round-off over all steps), plus an absolute
+    // floor for a step whose $\ell_n$ vanishes (a body at rest and unloaded).
+    // 50 iterations are far more than a step needs (three on average, see the
     // results): more means that the branches cycle, and the program stops
     // with a message instead of looping.
     static constexpr double       tolerance          = 1e-12;
@@ -835,13 +835,13 @@ namespace Step2
   //
   // The right-hand side of step $n$,
   // @f[
-  //   b = \frac{\rho}{k} M w_{n-1} - B u_n + F_n,\qquad
+  //   \ell_n = \frac{\rho}{k} M w_{n-1} - B u_n + F_n,\qquad
   //   F_n\cdot v = \int_\Omega f_0(t_n)\cdot v + \int_{\Gamma_2} f_2(t_n)
   //   \cdot v \ \Bigl(+ \int_{\Gamma_3} f_3(t_n)\cdot v\Bigr),
   // @f]
   // the loads by three-point Gauss rules (the data are not polynomials, and
   // their quadrature error must stay below the discretisation error). The
-  // clamped entries of $b$ are set to zero, the value the constraints give
+  // clamped entries of $\ell_n$ are set to zero, the value the constraints give
   // them.
   template <int dim>
   void
@@ -909,16 +909,17 @@ namespace Step2
   //
   // Step $n$ minimises the step energy
   // @f[
-  //   J_n(w) = \frac12 w\cdot K_0 w - b\cdot w
+  //   J_n(w) = \frac12 w\cdot K_0 w - \ell_n\cdot w
   //            + \sum_i m_i \bigl[ j_\nu(w_{i,\nu}) + F_b |w_{i,\tau}| \bigr],
   // @f]
   // whose nodal sum is the nodal quadrature of the $\Gamma_3$ integrals. Its
   // stationarity condition at node $i$ is $G_i = m_i\xi_i$, with the nodal
-  // contact force $G_i = -(K_0 w - b)_i$ and $\xi_i \in \partial j_\nu(w_\nu)
-  // \nu + \partial(F_b|\cdot|)(w_\tau)$: step-1's problem with $K_0$ for $K$,
-  // $b$ for $F_n$ and $w$ for $u$. The functions below evaluate the node
-  // states, choose the branches from the complementarity functions,
-  // linearise and solve, and damp the update by backtracking on $J_n$.
+  // contact force $G_i = -(K_0 w - \ell_n)_i$ and $\xi_i \in \partial
+  // j_\nu(w_\nu) \nu + \partial(F_b|\cdot|)(w_\tau)$: step-1's problem with
+  // $K_0$ for $K$, $\ell_n$ for $F_n$ and $w$ for $u$. The functions below
+  // evaluate the node states, choose the branches from the complementarity
+  // functions, linearise and solve, and damp the update by backtracking on
+  // $J_n$.
 
   // @sect4{KelvinVoigtContact::update_branches}
   //
@@ -1129,7 +1130,7 @@ namespace Step2
   //
   // Along the Newton direction $d$,
   // @f[
-  //   J_n(w + \theta d) - J_n(w) = \theta\,d\cdot(K_0 w - b)
+  //   J_n(w + \theta d) - J_n(w) = \theta\,d\cdot(K_0 w - \ell_n)
   //     + \frac{\theta^2}2\,d\cdot K_0 d + (\text{change of the nodal part}),
   // @f]
   // with the nodal part $\sum_i m_i [j_\nu(w_{i,\nu}) + F_b|w_{i,\tau}|]$
