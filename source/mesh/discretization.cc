@@ -178,11 +178,6 @@ namespace hemicontact
           else
             grid_in.read_msh(file);
         }
-      catch (const InputError &)
-        {
-          // a check of the cells read (ShapeCheckedTriangulation)
-          throw;
-        }
       catch (const ExceptionBase &e)
         {
           std::ostringstream s;
@@ -326,101 +321,57 @@ namespace hemicontact
     }
 
     /**
-     * Refuse a cell of @p cells whose map from the reference cell is not one
-     * to one: a Jacobian determinant below 1e-9 diameter^dim at a vertex (a
+     * Refuse a cell whose map from the reference cell is not one to one: a
+     * Jacobian determinant below 1e-9 diameter^dim at a vertex (a
      * self-intersecting, inverted or degenerate cell), naming its vertices.
-     * It checks the cell list, before a mesh is made of it
-     * (ShapeCheckedTriangulation below).
      */
     template <int dim>
     void
-    check_cell_shapes(const std::vector<Point<dim>>    &vertices,
-                      const std::vector<CellData<dim>> &cells,
-                      const std::string                &name)
+    check_cell_shapes(const Triangulation<dim> &mesh, const std::string &name)
     {
-      for (const CellData<dim> &cell : cells)
+      for (const auto &cell : mesh.active_cell_iterators())
         {
-          const ReferenceCell type =
-            ReferenceCell::n_vertices_to_type(dim, cell.vertices.size());
-          std::vector<Point<dim>> corner;
-          for (const unsigned int v : cell.vertices)
-            corner.push_back(vertices[v]);
-          double diameter = 0;
-          for (const Point<dim> &a : corner)
-            for (const Point<dim> &b : corner)
-              diameter = std::max(diameter, a.distance(b));
           std::vector<double> determinants;
-          if (type.is_hyper_cube())
+          if (cell->reference_cell().is_hyper_cube())
             {
-              Point<dim> points[GeometryInfo<dim>::vertices_per_cell];
-              std::copy(corner.begin(), corner.end(), points);
+              Point<dim> vertices[GeometryInfo<dim>::vertices_per_cell];
+              for (const unsigned int v : cell->vertex_indices())
+                vertices[v] = cell->vertex(v);
               Tensor<0, dim> forms[GeometryInfo<dim>::vertices_per_cell];
-              GeometryInfo<dim>::alternating_form_at_vertices(points, forms);
+              GeometryInfo<dim>::alternating_form_at_vertices(vertices, forms);
               for (const Tensor<0, dim> &f : forms)
                 determinants.push_back(f);
             }
-          else if (type.is_simplex())
+          else
             {
               Tensor<2, dim> jacobian;
               for (unsigned int d = 0; d < dim; ++d)
                 for (unsigned int e = 0; e < dim; ++e)
-                  jacobian[e][d] = corner[d + 1][e] - corner[0][e];
+                  jacobian[e][d] = cell->vertex(d + 1)[e] - cell->vertex(0)[e];
               determinants.push_back(determinant(jacobian));
             }
-          else // wedges and pyramids: check_cell_types() refuses them
-            continue;
           const double smallest =
             *std::min_element(determinants.begin(), determinants.end());
-          if (smallest > 1e-9 * std::pow(diameter, dim))
+          if (smallest > 1e-9 * std::pow(cell->diameter(), dim))
             continue;
           // the vertices in the order of a Gmsh element: around each face
           // of a hypercube, not deal.II's lexicographic order
           std::string corners;
-          for (unsigned int v = 0; v < corner.size(); ++v)
+          for (const unsigned int v : cell->vertex_indices())
             {
               const unsigned int gmsh_v =
-                type.is_hyper_cube() && v % 4 >= 2 ? v ^ 1 : v;
-              corners += (v == 0 ? "" : ", ") + to_text(corner[gmsh_v]);
+                cell->reference_cell().is_hyper_cube() && v % 4 >= 2 ? v ^ 1 :
+                                                                       v;
+              corners += (v == 0 ? "" : ", ") + to_text(cell->vertex(gmsh_v));
             }
           throw InputError(
-            "geometry: the mesh file '" + name + "' has a " + cell_name(type) +
-            " with the nodes " + corners +
+            "geometry: the mesh file '" + name + "' has a " +
+            cell_name(cell->reference_cell()) + " with the nodes " + corners +
             " that is self-intersecting, inverted or degenerate (the "
             "Jacobian determinant of its map is not positive at every "
             "vertex). Fix the order of its nodes or the mesh.");
         }
     }
-
-    /**
-     * The serial mesh a Gmsh file is read into: check_cell_shapes() runs on
-     * the reader's cell list before the mesh is made of it. deal.II 9.6
-     * refuses some such cells itself while making the mesh, with a message
-     * that names neither the file nor the cell ("Something went wrong when
-     * making cell 1"); deal.II 9.4 makes the mesh. Checking first gives the
-     * message above with either version.
-     */
-    template <int dim>
-    class ShapeCheckedTriangulation : public Triangulation<dim>
-    {
-    public:
-      explicit ShapeCheckedTriangulation(const std::string &name)
-        : name(name)
-      {}
-
-      using Triangulation<dim>::create_triangulation;
-
-      void
-      create_triangulation(const std::vector<Point<dim>>    &vertices,
-                           const std::vector<CellData<dim>> &cells,
-                           const SubCellData &subcelldata) override
-      {
-        check_cell_shapes(vertices, cells, name);
-        Triangulation<dim>::create_triangulation(vertices, cells, subcelldata);
-      }
-
-    private:
-      const std::string name;
-    };
   } // namespace
 
   template <int dim>
@@ -580,13 +531,13 @@ namespace hemicontact
     require_regular_file(name);
     // read and check on a serial mesh: a p4est mesh fails on cells other
     // than quadrilaterals/hexahedra before any check could run
-    // (the cells' shapes are checked while it is read)
-    ShapeCheckedTriangulation<dim> coarse(name);
+    Triangulation<dim> coarse;
     read_gmsh(coarse, name);
     check_cell_types(coarse, name, geometry.cell_type);
     if constexpr (dim == 2)
       check_planar(name);
     check_duplicated_vertices(coarse, name);
+    check_cell_shapes(coarse, name);
     const auto [vertices, cells, faces] =
       GridTools::get_coarse_mesh_description(coarse);
     mesh.create_triangulation(vertices, cells, faces);
