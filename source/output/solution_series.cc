@@ -267,16 +267,45 @@ namespace hemicontact
                                  Vector<float>(mesh.n_active_cells()));
       }
 
-    // the job, on the writer's thread and without MPI: stresses, patches
-    // and the VTU files, or the data in HDF5 layout
+    // the cell stresses and the cell fields are added here, on the calling
+    // thread: deal.II 9.6's add_data_vector() copies even a cell vector into
+    // a distributed vector, a collective MPI call, which on the writer's
+    // thread would race with the next step's MPI calls (OpenMPI 5 aborted
+    // in free() then); deal.II 9.4 keeps a pointer to each, so they live in
+    // the snapshot until the job has built the patches
+    const Quadrature<dim> quadrature = discretization.cell_quadrature(2);
+    {
+      std::vector<Vector<float>> stresses =
+        cell_stresses(dof_handler,
+                      *discretization.mapping,
+                      quadrature,
+                      material,
+                      snapshot.velocity,
+                      snapshot.displacement);
+      const char *xyz[] = {"x", "y", "z"};
+      snapshot.cell_data.clear();
+      unsigned int c = 0;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          snapshot.cell_data.emplace_back(std::string("stress_") + xyz[i] +
+                                            xyz[j],
+                                          std::move(stresses[c++]));
+      snapshot.cell_data.emplace_back("von_mises", std::move(stresses[c]));
+      for (auto &field : cell_data)
+        snapshot.cell_data.push_back(std::move(field));
+      for (const auto &[name, field] : snapshot.cell_data)
+        data_out.add_data_vector(field, name, DataOut<dim>::type_cell_data);
+    }
+
+    // the job, on the writer's thread and without MPI: the patches and the
+    // VTU files, or the data in HDF5 layout
     const bool         hdf5 = parameters.output.format == SolutionFormat::hdf5;
     const std::string  directory = parameters.output.directory + "/";
     const unsigned int rank =
       Utilities::MPI::this_mpi_process(mpi_communicator);
     const unsigned int n_ranks =
       Utilities::MPI::n_mpi_processes(mpi_communicator);
-    const Quadrature<dim> quadrature = discretization.cell_quadrature(2);
-    const std::string     stem =
+    const std::string stem =
       "solution_" + Utilities::int_to_string(snapshot.step, 5);
     pending_record = {snapshot.time, stem + (hdf5 ? ".h5" : ".pvtu"), ""};
     if (hdf5)
@@ -287,34 +316,14 @@ namespace hemicontact
     // the job reads the problem's mesh, dofs and material, which stay
     // unchanged until finish_solution_output()
     auto job = [this,
-                dofs     = &dof_handler,
-                mapping  = &*discretization.mapping,
-                material = &material,
+                mapping = &*discretization.mapping,
                 hdf5,
                 directory,
                 rank,
                 n_ranks,
-                quadrature,
-                stem,
-                cell_data = std::move(cell_data)]() -> std::string {
-      const SolutionSnapshot          &s        = solution_snapshot;
-      DataOut<dim>                    &data_out = *s.data_out;
-      const std::vector<Vector<float>> stresses = cell_stresses(
-        *dofs, *mapping, quadrature, *material, s.velocity, s.displacement);
-      const char  *xyz[] = {"x", "y", "z"};
-      unsigned int c     = 0;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = i; j < dim; ++j)
-          data_out.add_data_vector(stresses[c++],
-                                   std::string("stress_") + xyz[i] + xyz[j],
-                                   DataOut<dim>::type_cell_data);
-      data_out.add_data_vector(stresses[c],
-                               "von_mises",
-                               DataOut<dim>::type_cell_data);
-      for (const auto &field : cell_data)
-        data_out.add_data_vector(field.second,
-                                 field.first,
-                                 DataOut<dim>::type_cell_data);
+                stem]() -> std::string {
+      const SolutionSnapshot &s        = solution_snapshot;
+      DataOut<dim>           &data_out = *s.data_out;
       data_out.build_patches(*mapping);
 
       // a failed write (no space left) names the files

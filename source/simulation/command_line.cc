@@ -134,6 +134,12 @@ namespace hemicontact
     // fcntl, which the system releases when a process dies; a user's own
     // setting of the variable is kept.
     setenv("OMPI_MCA_sharedfp", "^sm", /*overwrite=*/0);
+    // deal.II initialises PETSc with the command line when it has PETSc
+    // (Debian 13's deal.II 9.6), and PETSc then prints on standard output, at
+    // the end, that it did not use '--print-parameters' or '--help' (which
+    // are this program's, not PETSc's); PETSc's own '-options_left no'
+    // turns that report off, a user's own PETSC_OPTIONS is kept.
+    setenv("PETSC_OPTIONS", "-options_left no", /*overwrite=*/0);
     Utilities::MPI::MPI_InitFinalize mpi(argc,
                                          argv,
                                          numbers::invalid_unsigned_int);

@@ -19,6 +19,7 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hemicontact
@@ -176,6 +177,9 @@ namespace hemicontact
       std::unique_ptr<DataOut<dim>> data_out;
       /** w and u with ghost entries, for the cell stresses. */
       TrilinosWrappers::MPI::Vector velocity, displacement;
+      /** The cell fields added to data_out, by name (deal.II 9.4's
+       *  DataOut reads them when the job builds the patches). */
+      std::vector<std::pair<std::string, Vector<float>>> cell_data;
       /** HDF5 output: the patches' data in the layout of the file. */
       std::unique_ptr<DataOutBase::DataOutFilter> hdf5_filter;
       /** The cells' kind, for the XDMF grid element. */
