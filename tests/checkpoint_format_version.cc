@@ -2,7 +2,9 @@
 // CheckpointState): one written in another format is refused by name, with
 // the version this program reads, before any of its content is used; one
 // of the current format reads back with its fields by space and its energy
-// terms by name.
+// terms by name, also when it holds the list without the terms added at its
+// end since (CheckpointState::energy_balance() gives them 0); a list with a
+// term that is not the program's is refused.
 #include <boost/crc.hpp>
 
 #include <hemicontact/output/checkpoint_directory.h>
@@ -53,6 +55,26 @@ main(int argc, char **argv)
           << " spaces, fields of the second: " << read.fields[1].second[0]
           << ", energy term 0: " << read.energy[0].first << "\n";
   }
+
+  // the list without its last term, and with a last term renamed
+  for (const bool renamed : {false, true})
+    {
+      CheckpointState shorter = state;
+      if (renamed)
+        shorter.energy.back().first = "no_such_term";
+      else
+        shorter.energy.pop_back();
+      std::ofstream("shorter.state") << state_text(shorter);
+      CheckpointState   read;
+      const std::string why  = read_state("shorter.state", read);
+      const auto       &last = saved_energy_terms().back();
+      out() << (renamed ? "a term renamed: " : "without the last term: ")
+            << (why.empty() ?
+                  "read, " + last.first + " = " +
+                    std::to_string(read.energy_balance().*last.second) :
+                  "refused")
+            << "\n";
+    }
 
   // the class version is the second number after the archive's header
   // ("22 serialization::archive L T V ...": T its tracking, V its version)

@@ -70,6 +70,40 @@ main()
   const double mu = 100 / (2 * 1.3), lambda = 100 * 0.3 / (1.3 * 0.4);
   std::cout << "default example, 2D: "
             << mesh_independent_stable_time_step(2, 1, 1, mu, lambda) << "\n";
+  // the staggered thermal coupling, implicit rule (doc/theory.md 13.2): a
+  // uniform dilation e I in d dimensions with theta maps (e, theta) to
+  // e_n = e + k edot, theta_n = theta - k c_e d edot/c_theta, edot =
+  // (c_e theta - d kappa_B e)/(d (kappa_A + k kappa_B)); its eigenvalues
+  // are 1 and (kappa_A - k c)/(kappa_A + k kappa_B), -1 at the limit
+  for (const unsigned int d : {2u, 3u})
+    {
+      const double mu_v = 1, lambda_v = 1, mu_e = 1, lambda_e = 1;
+      const double c_e = 10, c_theta = 1;
+      const double kappa_a = 2 * mu_v / d + lambda_v;
+      const double kappa_b = 2 * mu_e / d + lambda_e;
+      const double limit   = coupling_stable_time_step(
+        d, mu_v, lambda_v, mu_e, lambda_e, c_e * c_e / c_theta);
+      const auto second_eigenvalue = [&](const double k) {
+        const double D  = d * (kappa_a + k * kappa_b);
+        const double a0 = -(d * kappa_b) / D, a1 = c_e / D;
+        const double t00 = 1 + k * a0, t01 = k * a1;
+        const double t10 = -k * c_e * d / c_theta * a0;
+        const double t11 = 1 - k * c_e * d / c_theta * a1;
+        // the smaller (real) eigenvalue of the 2 x 2 map
+        const double half_trace = (t00 + t11) / 2;
+        const double det        = t00 * t11 - t01 * t10;
+        return half_trace -
+               std::sqrt(std::max(half_trace * half_trace - det, 0.));
+      };
+      const bool ok = std::abs(second_eigenvalue(limit) + 1) < 1e-12 &&
+                      second_eigenvalue(0.99 * limit) > -1 &&
+                      second_eigenvalue(1.01 * limit) < -1;
+      all_ok = all_ok && ok;
+      std::cout << "staggered thermal coupling, " << d << "D: k* = " << limit
+                << (ok ? ", the dilation's eigenvalue -1 there" :
+                         ", NOT the dilation's limit")
+                << "\n";
+    }
   std::cout << (all_ok ? "all limits separate" : "FAILED") << std::endl;
   return all_ok ? 0 : 1;
 }

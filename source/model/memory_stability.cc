@@ -64,7 +64,7 @@ namespace hemicontact
                1. / mode.relaxation_times[l] :
                0.;
     };
-    const double m = scheme.has_inertia() ? mode.mass : 0.;
+    const double       m = scheme.has_inertia() ? mode.mass : 0.;
     FullMatrix<double> t;
     if (scheme.is_static() || (m <= 0 && !(mode.viscosity > 0)))
       {

@@ -97,13 +97,13 @@ namespace hemicontact
           return "cannot read " + name + ": " + e.what();
         }
       if (state.format_version != CheckpointState::current_format_version)
-        return name + " is of checkpoint format version " +
+        return name + " was written by checkpoint format version " +
                std::to_string(state.format_version) +
-               ", which this program does not read (it writes and reads "
-               "version " +
+               ", this program reads version " +
                std::to_string(CheckpointState::current_format_version) +
-               "); start a new run without --resume";
-      bool energy_terms = state.energy.size() == saved_energy_terms().size();
+               "; start a new run without --resume";
+      // the list as written, or without the terms added at its end since
+      bool energy_terms = state.energy.size() <= saved_energy_terms().size();
       for (std::size_t i = 0; energy_terms && i < state.energy.size(); ++i)
         energy_terms = state.energy[i].first == saved_energy_terms()[i].first;
       if (!energy_terms || state.n_ranks == 0 || !(state.time_step > 0) ||

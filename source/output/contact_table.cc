@@ -118,16 +118,20 @@ namespace hemicontact
       extra.push_back("s_tau");
     if (wear)
       extra.push_back("wear");
-    // with temperature (13.2): theta, the heat exchanged into the body
-    // k_e (theta_F - theta) and the frictional heat gamma |sigma_tau . w_tau|
+    // with temperature (13.2): theta, and in the velocity classes the heat
+    // the heat step booked, the exchanged k_e (theta_F - theta) and the
+    // frictional gamma |sigma_tau . w_tau| (0 where theta is prescribed);
+    // the static class has no contact heat law (theta is data)
     std::vector<NodeHeat> heat;
+    const bool            heat_law = s.heat && !s.scheme.is_static();
     if (s.heat)
       {
         heat = s.heat->contact_heat(
           s.time, s, s.added_fields.vector(HeatModel<dim>::field_name));
-        for (const char *name :
-             {"temperature", "exchanged_heat", "frictional_heat"})
-          extra.push_back(name);
+        extra.push_back("temperature");
+        if (heat_law)
+          for (const char *name : {"exchanged_heat", "frictional_heat"})
+            extra.push_back(name);
       }
     const unsigned int width =
       dim + dim + 1 + 2 + dim + 2 + dim + 3 + 2 + 1 + extra.size();
@@ -187,8 +191,11 @@ namespace hemicontact
           if (s.heat)
             {
               rows.push_back(heat[i].temperature);
-              rows.push_back(heat[i].exchanged());
-              rows.push_back(heat[i].frictional_power);
+              if (heat_law)
+                {
+                  rows.push_back(heat[i].exchanged());
+                  rows.push_back(heat[i].frictional());
+                }
             }
         }
 

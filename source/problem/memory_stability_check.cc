@@ -269,8 +269,7 @@ namespace hemicontact
             << result.where << ", k <= " << result.limit
             << ": the memory sum is explicit (the left-rectangle rule, "
                "doc/theory.md 11.13), and its recursion grows by a factor "
-            << result.growth
-            << " per step, while the model ";
+            << result.growth << " per step, while the model ";
     if (result.model_growth > 1 + 1e-10)
       message << "grows by a factor " << result.model_growth
               << " per step (the rule may grow by up to its square)";

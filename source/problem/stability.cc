@@ -24,13 +24,16 @@ namespace hemicontact
 
     /**
      * The largest stable time step of the left-point rule on the state's
-     * mesh, from the estimate at @p k (infinite if k is stable).
+     * mesh, from the estimate at @p k (infinite if k is stable), with B
+     * scaled by @p elastic_scale (the staggered thermal coupling's share,
+     * doc/theory.md 13.2; 1 without it).
      */
     template <int dim>
     double
     largest_stable_time_step(const ProblemState<dim> &state,
                              StepPreconditioner<dim> &preconditioner,
-                             const double             k)
+                             const double             k,
+                             const double             elastic_scale)
     {
       const TrilinosWrappers::SparseMatrix &step_matrix = state.step_matrix;
       const TrilinosWrappers::SparseMatrix &mass_matrix = state.mass_matrix;
@@ -48,6 +51,7 @@ namespace hemicontact
       const auto apply_b = [&](const TrilinosWrappers::MPI::Vector &in,
                                TrilinosWrappers::MPI::Vector       &out) {
         elastic_matrix.vmult(out, in);
+        out *= elastic_scale;
         base_constraints.set_zero(out);
       };
       double                        current_k = k;
@@ -91,7 +95,7 @@ namespace hemicontact
           step_matrix.vmult(tmp, x);
           const double a = x * tmp - m / current_k;
           elastic_matrix.vmult(tmp, x);
-          const double b     = x * tmp;
+          const double b     = elastic_scale * (x * tmp);
           const double k_x   = stable_time_step_of_mode(m, a, b);
           const bool   close = k_x >= 0.99 * limit;
           limit              = std::min(limit, k_x);
@@ -117,35 +121,60 @@ namespace hemicontact
       const KelvinVoigtMaterial<dim> &material   = state.material;
       const double                    time_step  = state.time_step;
       const Parameters               &parameters = state.parameters;
-      const double                    material_limit =
+      // the staggered thermal coupling adds c (tr eps)^2 to the explicit
+      // elastic term (doc/theory.md 13.2): lambda + c on every mesh, and
+      // at most the factor 1 + c/kappa_B on B's modes
+      const double coupling = staggered_coupling_ratio(state);
+      const double kappa =
+        2 * material.mu_elastic() / dim + material.lambda_elastic();
+      const double elastic_scale =
+        coupling == 0 ? 1. :
+        kappa > 0     ? 1 + coupling / kappa :
+                        std::numeric_limits<double>::infinity();
+      const double material_limit =
         mesh_independent_stable_time_step(dim,
                                           material.mu_viscous(),
                                           material.lambda_viscous(),
                                           material.mu_elastic(),
-                                          material.lambda_elastic());
+                                          material.lambda_elastic() + coupling);
       if (time_step <= material_limit)
         return;
-      const double limit =
-        largest_stable_time_step(state, preconditioner, time_step);
+      const double limit = std::isfinite(elastic_scale) ?
+                             largest_stable_time_step(state,
+                                                      preconditioner,
+                                                      time_step,
+                                                      elastic_scale) :
+                             material_limit;
       if (time_step <= limit)
         return;
 
       std::ostringstream message;
-      message
-        << std::setprecision(4) << "the time step k = " << time_step
-        << " is above the stability limit of the left-point rule on this "
-           "mesh, k <= "
-        << limit << " (estimated: " << scheme.stability_condition()
-        << "): the elastic term is explicit, "
-           "and the energy of the run would grow without bound. Choose "
-           "a time step that divides the end time and is at most "
-        << limit << " (e.g. " << parameters.time.end_time << " / "
-        << std::ceil(parameters.time.end_time / limit)
-        << "), a larger viscosity or a softer material; below k = "
-        << material_limit
-        << " the rule is stable on every mesh. 'problem/time scheme = "
-           "implicit' is stable for every time step; 'time/allow unstable "
-           "time step = true' runs it anyway.";
+      message << std::setprecision(4) << "the time step k = " << time_step
+              << " is above the stability limit of the left-point rule on this "
+                 "mesh, k <= "
+              << limit << " (estimated: " << scheme.stability_condition()
+              << "): the elastic term is explicit, ";
+      if (coupling > 0)
+        message << "and with it the staggered thermal coupling's term, c = "
+                   "max c_e^2/c_theta = "
+                << coupling << " added to B's lambda (doc/theory.md 13.2), ";
+      message << "and the energy of the run would grow without bound. Choose "
+                 "a time step that divides the end time and is at most "
+              << limit << " (e.g. " << parameters.time.end_time << " / "
+              << std::ceil(parameters.time.end_time / limit)
+              << "), a larger viscosity or a softer material; below k = "
+              << material_limit
+              << " the rule is stable on every mesh. 'problem/time scheme = "
+                 "implicit' is stable for every time step";
+      if (coupling > 0)
+        message << " without the coupling, and with it for k <= "
+                << coupling_stable_time_step(dim,
+                                             material.mu_viscous(),
+                                             material.lambda_viscous(),
+                                             material.mu_elastic(),
+                                             material.lambda_elastic(),
+                                             coupling);
+      message << "; 'time/allow unstable time step = true' runs it anyway.";
       if (!parameters.time.allow_unstable_time_step)
         throw InputError("time: " + message.str());
       if (Utilities::MPI::this_mpi_process(state.mpi_communicator) == 0)
@@ -160,6 +189,7 @@ namespace hemicontact
                          TimerOutput             &timer)
   {
     check_time_step_stability(state, preconditioner, timer);
+    check_coupling_stability(state, timer);
     return check_memory_stability(state, preconditioner, timer);
   }
 

@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace hemicontact
@@ -58,25 +59,80 @@ namespace hemicontact
       return s.str();
     }
 
+    /** What a datum must be besides a finite number. */
+    enum class Sign
+    {
+      any,
+      non_negative,
+      positive
+    };
+
     /**
-     * The first bad coefficient into @p error (if it is still empty): the
-     * entry @p entry is @p value at @p p, not a finite number > 0
-     * (@p strictly) or >= 0.
+     * The rule for every datum of the heat model, checked where it is
+     * evaluated: @p entry (quoted, or what it is derived from) is
+     * @p value at @p p (and time @p t, for data that may depend on t),
+     * which must be a finite number (> 0 or >= 0 as @p sign says). The
+     * first violation goes into @p error (if that is still empty), thrown
+     * on every rank by throw_first_error().
      */
     template <int dim>
     void
-    check_coefficient(std::string       &error,
-                      const double       value,
-                      const bool         strictly,
-                      const std::string &entry,
-                      const Point<dim>  &p)
+    check_datum(std::string                &error,
+                const double                value,
+                const std::string          &entry,
+                const Point<dim>           &p,
+                const std::optional<double> t,
+                const Sign                  sign = Sign::any)
     {
-      if ((std::isfinite(value) && (strictly ? value > 0 : value >= 0)) ||
-          !error.empty())
+      const bool signed_ok =
+        sign == Sign::any || (sign == Sign::positive ? value > 0 : value >= 0);
+      if ((std::isfinite(value) && signed_ok) || !error.empty())
         return;
-      error = "temperature: '" + entry + "' is " + std::to_string(value) +
-              " at " + at(p) + "; it must be a finite number " +
-              (strictly ? "> 0." : ">= 0.");
+      std::ostringstream message;
+      message << "temperature: " << entry << " is ";
+      if (std::isfinite(value))
+        message << value;
+      else
+        message << "not a finite number (" << value << ")";
+      message << " at x = " << at(p);
+      if (t)
+        message << ", t = " << *t;
+      message << "; it must be a finite number"
+              << (sign == Sign::positive     ? " > 0" :
+                  sign == Sign::non_negative ? " >= 0" :
+                                               "")
+              << ": check the expression at that point"
+              << (t ? " and time." : ".");
+      error = message.str();
+    }
+
+    /** Whether every owned entry of @p v is a finite number, on all ranks
+     *  (entry by entry: a norm would overflow or pass over a NaN). */
+    bool
+    all_finite(const TrilinosWrappers::MPI::Vector &v, MPI_Comm comm)
+    {
+      unsigned int n_bad = 0;
+      for (const auto i : v.locally_owned_elements())
+        n_bad += !std::isfinite(v[i]);
+      return Utilities::MPI::sum(n_bad, comm) == 0;
+    }
+
+    /** "'temperature/ENTRY' = 'TEXT'" refused for reading t. */
+    template <int dim>
+    void
+    require_without_t(const std::string &text,
+                      const std::string &constants,
+                      const std::string &entry)
+    {
+      const Expression e(text,
+                         ExpressionFunction<dim>::variable_names(),
+                         parse_constants(constants),
+                         "temperature/" + entry);
+      require(!e.uses_variable(dim),
+              "temperature: '" + entry + "' = " + quoted_expression(text) +
+                " reads t, but the coefficient is evaluated once, at t = 0, "
+                "and kept: it may depend on x, y" +
+                std::string(dim == 3 ? ", z" : "") + " only.");
     }
   } // namespace
 
@@ -94,6 +150,17 @@ namespace hemicontact
       return std::shared_ptr<Function<dim>>(
         parse_function<dim>(text, 1, constants, "temperature/" + name));
     };
+    // the coefficients are evaluated once per mesh (cache_coefficients())
+    require_without_t<dim>(parameters.heat_capacity,
+                           constants,
+                           "heat capacity");
+    require_without_t<dim>(parameters.thermal_stress_coefficient,
+                           constants,
+                           "thermal stress coefficient");
+    if (!parameters.anisotropic())
+      require_without_t<dim>(parameters.conductivity[0],
+                             constants,
+                             "conductivity");
     heat_capacity = scalar(parameters.heat_capacity, "heat capacity");
     thermal_stress_coefficient = scalar(parameters.thermal_stress_coefficient,
                                         "thermal stress coefficient");
@@ -131,6 +198,21 @@ namespace hemicontact
       prescribed_temperature = derived.prescribed_temperature;
     normal_heat_flux    = derived.heat_flux;
     contact_heat_source = derived.contact_heat_source;
+    const auto name     = [](const std::string &entry,
+                         const bool         is_derived) -> std::string {
+      if (is_derived)
+        return "the " + entry +
+               " derived from 'manufactured solution/exact temperature'";
+      return "'" + entry + "'";
+    };
+    names.initial_temperature =
+      name(static_class ? "given temperature" : "initial temperature",
+           derived.initial_temperature != nullptr);
+    names.heat_source = name("heat source", derived.heat_source != nullptr);
+    names.prescribed_temperature =
+      name("prescribed temperature", derived.prescribed_temperature != nullptr);
+    names.heat_flux = name("heat flux", static_cast<bool>(normal_heat_flux));
+    names.contact_heat_source = name("heat source on Gamma_3", true);
   }
 
   template <int dim>
@@ -177,7 +259,43 @@ namespace hemicontact
                                              *space->dof_handler,
                                              prescribed,
                                              constraints);
+    std::string error;
+    for (const auto &line : constraints.get_lines())
+      if (!std::isfinite(line.inhomogeneity))
+        check_datum(error,
+                    line.inhomogeneity,
+                    names.prescribed_temperature,
+                    node_of(line.index),
+                    std::optional<double>(t));
+    throw_first_error(error, mpi_communicator);
     constraints.close();
+  }
+
+  template <int dim>
+  Point<dim>
+  HeatModel<dim>::node_of(const types::global_dof_index dof) const
+  {
+    for (const auto &cell : space->dof_handler->active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int v : cell->vertex_indices())
+          if (cell->vertex_dof_index(v, 0) == dof)
+            return cell->vertex(v);
+    return Point<dim>();
+  }
+
+  template <int dim>
+  void
+  HeatModel<dim>::check_nodal_values(std::string                         &error,
+                                     const TrilinosWrappers::MPI::Vector &theta,
+                                     const std::string                   &entry,
+                                     const double t) const
+  {
+    for (const auto i : *space->owned)
+      if (!std::isfinite(theta[i]))
+        {
+          check_datum(error, theta[i], entry, node_of(i), std::optional(t));
+          return;
+        }
   }
 
   template <int dim>
@@ -206,6 +324,10 @@ namespace hemicontact
   {
     space          = &theta_space;
     discretization = &state.discretization;
+    discretization->check_boundary_ids(
+      "temperature",
+      {{"prescribed temperature boundary ids", parameters.prescribed_ids},
+       {"heat flux boundary ids", parameters.flux_ids}});
     make_constraints(state.time);
     TrilinosWrappers::SparsityPattern sparsity;
     make_sparsity(constraints, sparsity);
@@ -274,13 +396,26 @@ namespace hemicontact
           local                   = 0;
           for (const unsigned int q : fe.quadrature_point_indices())
             {
-              check_coefficient(
-                error, c_theta[q], true, "heat capacity", points[q]);
-              check_coefficient(
-                error, c_e[q], false, "thermal stress coefficient", points[q]);
+              const std::optional<double> no_time;
+              check_datum(error,
+                          c_theta[q],
+                          "'heat capacity'",
+                          points[q],
+                          no_time,
+                          Sign::positive);
+              check_datum(error,
+                          c_e[q],
+                          "'thermal stress coefficient'",
+                          points[q],
+                          no_time,
+                          Sign::non_negative);
               if (conductivity)
-                check_coefficient(
-                  error, kappa[q], true, "conductivity", points[q]);
+                check_datum(error,
+                            kappa[q],
+                            "'conductivity'",
+                            points[q],
+                            no_time,
+                            Sign::positive);
               coefficients.c_theta[first + q] = c_theta[q];
               coefficients.c_e[first + q]     = c_e[q];
               coefficients.kappa[first + q]   = kappa[q];
@@ -316,6 +451,14 @@ namespace hemicontact
         space->constraints->distribute(theta);
         heat.heat_content = heat_content(theta);
       }
+    // the given theta at t; in the velocity classes theta_{n-1}, finite
+    // after every heat step, so that a value that is not is theta_0's
+    std::string error;
+    check_nodal_values(error,
+                       theta,
+                       names.initial_temperature,
+                       static_class ? t : 0.);
+    throw_first_error(error, mpi_communicator);
     const TrilinosWrappers::MPI::Vector theta_g =
       ghosted<dim>(theta, *space->owned, *space->relevant, mpi_communicator);
     const Quadrature<dim> quadrature = discretization->cell_quadrature(2);
@@ -333,6 +476,7 @@ namespace hemicontact
     Vector<double>                       local(n);
     std::vector<types::global_dof_index> dofs(n);
     std::vector<double>                  theta_q(quadrature.size());
+    stress_load.reinit(state.locally_owned_dofs, mpi_communicator);
     for (const auto &cell : state.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -351,9 +495,12 @@ namespace hemicontact
               local(i) +=
                 c_e[q] * theta_q[q] * fe_u[v].divergence(i, q) * fe_u.JxW(q);
           cell->get_dof_indices(dofs);
-          state.base_constraints.distribute_local_to_global(local, dofs, load);
+          state.base_constraints.distribute_local_to_global(local,
+                                                            dofs,
+                                                            stress_load);
         }
-    load.compress(VectorOperation::add);
+    stress_load.compress(VectorOperation::add);
+    load += stress_load;
   }
 
   template <int dim>
@@ -404,9 +551,10 @@ namespace hemicontact
                                    node.position.end_raw());
         values.push_back(t);
         values.push_back(u_i * node.normal);
-        const Tensor<1, dim> t_tau    = t_i - (t_i * node.normal) * node.normal;
-        const Tensor<1, dim> w_tau    = w_i - (w_i * node.normal) * node.normal;
-        nodes[i].temperature          = theta_g[node_dofs[i]];
+        const Tensor<1, dim> t_tau = t_i - (t_i * node.normal) * node.normal;
+        const Tensor<1, dim> w_tau = w_i - (w_i * node.normal) * node.normal;
+        nodes[i].booked            = !constraints.is_constrained(node_dofs[i]);
+        nodes[i].temperature       = theta_g[node_dofs[i]];
         nodes[i].exchange_coefficient = exchange_coefficient->evaluate(values);
         nodes[i].foundation_temperature =
           foundation_temperature->value(node.position);
@@ -470,6 +618,9 @@ namespace hemicontact
   void
   HeatModel<dim>::start(const TrilinosWrappers::MPI::Vector &theta)
   {
+    std::string error;
+    check_nodal_values(error, theta, names.initial_temperature, 0.);
+    throw_first_error(error, mpi_communicator);
     heat                      = HeatBalance();
     heat.initial_heat_content = heat_content(theta);
     heat.heat_content         = heat.initial_heat_content;
@@ -542,10 +693,11 @@ namespace hemicontact
           local_coupling = 0;
           for (const unsigned int q : fe_theta.quadrature_point_indices())
             {
-              if (!std::isfinite(q_src[q]) && error.empty())
-                error = "temperature: 'heat source' is not a finite number "
-                        "at " +
-                        at(points[q]) + ".";
+              check_datum(error,
+                          q_src[q],
+                          names.heat_source,
+                          points[q],
+                          std::optional(t));
               const Tensor<2, dim> K   = conductivity_at(kappa[q]);
               const double         JxW = fe_theta.JxW(q);
               for (unsigned int i = 0; i < n; ++i)
@@ -573,6 +725,12 @@ namespace hemicontact
               {
                 fe_face.reinit(cell, f);
                 boundary_heat_flux(fe_face, t, q_n);
+                for (const unsigned int q : fe_face.quadrature_point_indices())
+                  check_datum(error,
+                              q_n[q],
+                              names.heat_flux,
+                              fe_face.quadrature_point(q),
+                              std::optional(t));
                 for (const unsigned int q : fe_face.quadrature_point_indices())
                   for (unsigned int i = 0; i < n; ++i)
                     {
@@ -615,30 +773,52 @@ namespace hemicontact
       {
         const ContactNode<dim> &node = state.contact_nodes[i];
         const auto              d    = node_dofs[i];
-        if (!space->owned->is_element(d) || constraints.is_constrained(d))
+        if (!space->owned->is_element(d) || !nodes[i].booked)
           continue;
-        check_coefficient(error,
-                          nodes[i].exchange_coefficient,
-                          false,
-                          "exchange coefficient",
-                          node.position);
+        check_datum(error,
+                    nodes[i].exchange_coefficient,
+                    "'exchange coefficient'",
+                    node.position,
+                    std::optional(t),
+                    Sign::non_negative);
+        check_datum(error,
+                    nodes[i].foundation_temperature,
+                    "'foundation temperature'",
+                    node.position,
+                    std::optional(t));
         matrix.add(d, d, node.mass * nodes[i].exchange_coefficient);
         rhs[d] += node.mass * (nodes[i].exchange_coefficient *
                                  nodes[i].foundation_temperature +
                                nodes[i].frictional_power);
         if (contact_heat_source)
-          rhs[d] +=
-            node.mass * contact_heat_source(node.position, node.normal, t);
+          {
+            const double g_3 =
+              contact_heat_source(node.position, node.normal, t);
+            check_datum(error,
+                        g_3,
+                        names.contact_heat_source,
+                        node.position,
+                        std::optional(t));
+            rhs[d] += node.mass * g_3;
+          }
       }
     matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
     source_load.compress(VectorOperation::add);
     coupling_load.compress(VectorOperation::add);
     throw_first_error(error, mpi_communicator);
+    // the data are finite: what is not comes from the mechanical step's
+    // w_n or traction (or a solver), and fails the step
+    if (!all_finite(rhs, mpi_communicator))
+      throw SolverFailure("the heat step's right-hand side is not a finite "
+                          "number (the data are, so w_n or the contact "
+                          "traction of the mechanical step is not).");
 
     const TrilinosWrappers::MPI::Vector theta_before(theta);
     heat.linear_iterations = solver.solve(matrix, amg, theta, rhs);
     constraints.distribute(theta);
+    if (!all_finite(theta, mpi_communicator))
+      throw SolverFailure("the heat step's theta_n is not a finite number.");
     heat.heat_content = heat_content(theta);
     return step_energy(t, k, state, theta_before, theta, nodes);
   }

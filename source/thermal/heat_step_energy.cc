@@ -104,13 +104,14 @@ namespace hemicontact
     e.dissipation = k * (theta * K_theta);
     e.supply      = k * (source_load * theta);
     e.coupling    = k * (coupling_load * theta);
+    e.stress_work = k * (stress_load * state.velocity);
 
     // Gamma_3 by nodal quadrature, where the heat step has the law's terms
     double on_contact = 0, frictional = 0, exchanged = 0;
     for (unsigned int i = 0; i < nodes.size(); ++i)
       {
         const auto d = node_dofs[i];
-        if (!space->owned->is_element(d) || constraints.is_constrained(d))
+        if (!space->owned->is_element(d) || !nodes[i].booked)
           continue;
         const ContactNode<dim> &node = state.contact_nodes[i];
         const double            into = nodes[i].exchange_coefficient *

@@ -7,7 +7,9 @@
 # than it is (step 6's state as step 10's). The resume names the damaged
 # file, falls back to the newest intact checkpoint of the run and ends
 # bitwise equal to the uninterrupted run. With both checkpoints damaged
-# the resume is refused (exit code 2) and names them.
+# the resume is refused (exit code 2) and names them. A .state of another
+# format version is named with both versions and skipped, not called
+# damaged.
 set -euo pipefail
 exe=$1; prm=$2; work=$3
 here=$(cd "$(dirname "$0")" && pwd)
@@ -68,6 +70,30 @@ for damage in truncate flip edited short renamed; do
   echo "$damage: $(head -1 resume.err)"
   bash "$here/compare_runs.sh" whole parts bitwise
 done
+
+# a whole .state of another format version (the class version, the fifth
+# token, set to 1, its checksum recomputed) is no damage: it is named with
+# both versions and skipped
+rm -rf parts; cp -r parts-saved parts
+python3 - parts/checkpoint/step-000008.state << 'PY'
+import sys, zlib
+path = sys.argv[1]
+text = open(path).read()
+body = text[:text.rstrip('\n').rfind('\n') + 1]
+tokens = body.split(' ')
+assert tokens[1] == 'serialization::archive', tokens[:5]
+tokens[4] = '1'
+body = ' '.join(tokens)
+open(path, 'w').write(body + 'crc32 %d\n' % zlib.crc32(body.encode()))
+PY
+"$exe" --resume parts.prm 2> resume.err ||
+  { echo "FAIL (version): the resume failed"; cat resume.err; exit 1; }
+grep -q "the checkpoint of step 8 is skipped: 'parts/checkpoint/step-000008.state' was written by checkpoint format version 1, this program reads version 2" resume.err ||
+  { echo "FAIL (version): not named as another format version"; cat resume.err; exit 1; }
+! grep -q "damaged" resume.err ||
+  { echo "FAIL (version): called damaged"; cat resume.err; exit 1; }
+echo "version: $(head -1 resume.err)"
+bash "$here/compare_runs.sh" whole parts bitwise
 
 rm -rf parts; cp -r parts-saved parts
 truncate -s 100 parts/checkpoint/step-000008.mesh

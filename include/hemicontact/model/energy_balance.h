@@ -64,6 +64,9 @@ namespace hemicontact
      */
     double thermal = 0, thermal_dissipation = 0, heat_supply = 0,
            thermal_coupling_work = 0;
+    /** sum k (c_e theta, div w_n) of the mechanical steps' thermal load:
+     *  the part of external_work that is heat turned into motion. */
+    double thermal_stress_work = 0;
     /**
      * The heat booked (doc/theory.md 13.4): sum k sum_i m_i gamma
      * |sigma_tau . w_tau|_i (frictional) and sum k sum_i m_i k_e,i
@@ -122,17 +125,20 @@ namespace hemicontact
 
     /**
      * The energy the data put into the body: |E_0| + |sum k <f_n, w_n>| +
-     * |transfer changes| (+ |heat supply| + |thermal coupling work| with a
-     * temperature), without the memory's work, which an unstable
-     * memory rule inflates with the energy it creates (doc/theory.md
-     * 11.13).
+     * |transfer changes| (+ |heat supply| with a temperature), without the
+     * memory's work, which an unstable memory rule inflates with the
+     * energy it creates (doc/theory.md 11.13). The thermal stress's work
+     * (thermal_stress_work, in external_work) and thermal_coupling_work
+     * move energy between the body's motion and its heat: neither is put
+     * in (doc/theory.md 13.4), so that a coupling that creates energy
+     * cannot count its own growth as supplied.
      */
     double
     data_energy() const
     {
-      return std::abs(initial_energy) + std::abs(external_work) +
-             std::abs(transfer_change) + std::abs(heat_supply) +
-             std::abs(thermal_coupling_work);
+      return std::abs(initial_energy) +
+             std::abs(external_work - thermal_stress_work) +
+             std::abs(transfer_change) + std::abs(heat_supply);
     }
 
     /** E_n relative to data_energy(). */
@@ -146,7 +152,9 @@ namespace hemicontact
   /**
    * The terms of an EnergyBalance that a checkpoint stores, by name: the
    * one list that writing and reading a checkpoint loop over (J_n is the
-   * step's own and is not stored).
+   * step's own and is not stored). A term is added at the end: a
+   * checkpoint that holds the list without the terms added after it
+   * resumes with their sums from zero.
    */
   inline const std::vector<std::pair<std::string, double EnergyBalance::*>> &
   saved_energy_terms()
@@ -168,7 +176,8 @@ namespace hemicontact
       {"heat_supply", &E::heat_supply},
       {"thermal_coupling_work", &E::thermal_coupling_work},
       {"frictional_heat", &E::frictional_heat},
-      {"exchanged_heat", &E::exchanged_heat}};
+      {"exchanged_heat", &E::exchanged_heat},
+      {"thermal_stress_work", &E::thermal_stress_work}};
     return terms;
   }
 } // namespace hemicontact

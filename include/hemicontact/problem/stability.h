@@ -9,8 +9,10 @@ namespace hemicontact
 {
   /**
    * The time-step limits of the state's mesh and time step k: that of the
-   * left-point rule (doc/theory.md 9.6; stability.cc) and that of the memory
-   * rule (doc/theory.md 11.13; memory_stability_check.cc). Above a limit:
+   * left-point rule (doc/theory.md 9.6; stability.cc), that of the memory
+   * rule (doc/theory.md 11.13; memory_stability_check.cc) and that of the
+   * staggered thermal coupling (doc/theory.md 13.2;
+   * coupling_stability_check.cc). Above a limit:
    * InputError, or with 'time/allow unstable time step' a warning. Returns
    * whether k is above the memory rule's limit. The AMGs of the estimates
    * come from @p preconditioner; the time goes to @p timer's "stability
@@ -31,4 +33,22 @@ namespace hemicontact
   check_memory_stability(const ProblemState<dim> &state,
                          StepPreconditioner<dim> &preconditioner,
                          TimerOutput             &timer);
+
+  /**
+   * The largest c_e^2/c_theta of a staggered thermal coupling (doc/theory.md
+   * 13.2), 0 without one (no temperature, the static class, or
+   * 'temperature/coupling = iterated').
+   */
+  template <int dim>
+  double
+  staggered_coupling_ratio(const ProblemState<dim> &state);
+
+  /**
+   * The staggered thermal coupling's limit with the implicit rule
+   * (coupling_stability_check.cc); with the left-point rule it is part of
+   * that rule's check.
+   */
+  template <int dim>
+  void
+  check_coupling_stability(const ProblemState<dim> &state, TimerOutput &timer);
 } // namespace hemicontact

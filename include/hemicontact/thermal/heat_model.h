@@ -40,6 +40,10 @@ namespace hemicontact
      *  + the heat of the prescribed temperature's boundary */
     double supply   = 0;
     double coupling = 0; ///< -k (c_e div w_n, theta_n)
+    /** k (c_e theta, div w_n) with the theta of the mechanical step's load
+     *  (theta_{n-1}, or the iterated coupling's last): its share of the
+     *  external work */
+    double stress_work = 0;
     /** k sum_i m_i gamma |sigma_tau . w_tau|_i: the frictional heat in */
     double frictional_heat = 0;
     /** k sum_i m_i k_e,i (theta_F - theta_n)_i: the heat exchanged in */
@@ -54,6 +58,7 @@ namespace hemicontact
     energy.thermal_dissipation += step.dissipation;
     energy.heat_supply += step.supply;
     energy.thermal_coupling_work += step.coupling;
+    energy.thermal_stress_work += step.stress_work;
     energy.frictional_heat += step.frictional_heat;
     energy.exchanged_heat += step.exchanged_heat;
   }
@@ -79,12 +84,26 @@ namespace hemicontact
     double exchange_coefficient   = 0; ///< k_e(x_i, t, u_nu,i)
     double foundation_temperature = 0; ///< theta_F(x_i, t)
     double frictional_power       = 0; ///< gamma |sigma_tau . w_tau|_i
+    /** Whether the heat step books the law's terms here: not where theta
+     *  is prescribed or hanging. */
+    bool booked = true;
 
-    /** k_e (theta_F - theta): the heat exchanged into the body per area. */
+    /** k_e (theta_F - theta) where booked, else 0: the heat exchanged into
+     *  the body per area. */
     double
     exchanged() const
     {
-      return exchange_coefficient * (foundation_temperature - temperature);
+      return booked ?
+               exchange_coefficient * (foundation_temperature - temperature) :
+               0.;
+    }
+
+    /** gamma |sigma_tau . w_tau| where booked, else 0: the frictional heat
+     *  entering the body per area. */
+    double
+    frictional() const
+    {
+      return booked ? frictional_power : 0.;
     }
   };
 
@@ -126,7 +145,8 @@ namespace hemicontact
 
     /**
      * On a new mesh: theta's space @p theta_space, its sparsity and the
-     * theta dof of each contact node of @p state.
+     * theta dof of each contact node of @p state; the thermal boundary ids
+     * are checked to exist on the mesh (InputError).
      */
     void
     reinit(const FieldSpace<dim> &theta_space, const ProblemState<dim> &state);
@@ -179,7 +199,16 @@ namespace hemicontact
     double
     stored_heat(const TrilinosWrappers::MPI::Vector &theta) const;
 
-    /** Book int c_theta theta_0 (the start of a run). */
+    /**
+     * The largest c_e^2 / c_theta at the quadrature points of the mesh,
+     * over all ranks: the coupling's strength that the staggered scheme's
+     * time-step limit reads (doc/theory.md 13.2; coupling_ratio.cc).
+     */
+    double
+    largest_coupling_ratio() const;
+
+    /** Book int c_theta theta_0 (the start of a run); a theta_0 with a
+     *  nodal value that is not a finite number is refused (InputError). */
     void
     start(const TrilinosWrappers::MPI::Vector &theta);
 
@@ -190,7 +219,8 @@ namespace hemicontact
     }
 
   private:
-    /** The constraints of theta at time @p t: hanging nodes, theta_D(t). */
+    /** The constraints of theta at time @p t: hanging nodes, theta_D(t),
+     *  each value of theta_D checked to be a finite number. */
     void
     make_constraints(const double t);
 
@@ -264,6 +294,21 @@ namespace hemicontact
     double
     heat_content(const TrilinosWrappers::MPI::Vector &theta) const;
 
+    /** The vertex of theta's dof @p dof (a locally relevant one). */
+    Point<dim>
+    node_of(const types::global_dof_index dof) const;
+
+    /**
+     * The first owned entry of @p theta that is not a finite number into
+     * @p error, as the value of the entry @p entry at its node at time
+     * @p t (check_datum()).
+     */
+    void
+    check_nodal_values(std::string                         &error,
+                       const TrilinosWrappers::MPI::Vector &theta,
+                       const std::string                   &entry,
+                       const double                         t) const;
+
     TemperatureParameters          parameters;
     bool                           static_class;
     MPI_Comm                       mpi_communicator;
@@ -280,6 +325,13 @@ namespace hemicontact
     std::unique_ptr<Expression>    exchange_coefficient;
     /** q_N and the Gamma_3 heat source of a manufactured solution */
     typename HeatData<dim>::NormalScalar normal_heat_flux, contact_heat_source;
+    /** How the errors name the data: the entry, or what a manufactured
+     *  solution derived them from. */
+    struct DataNames
+    {
+      std::string initial_temperature, heat_source, prescribed_temperature,
+        heat_flux, contact_heat_source;
+    } names;
 
     const FieldSpace<dim>     *space          = nullptr;
     const Discretization<dim> *discretization = nullptr;
@@ -301,6 +353,9 @@ namespace hemicontact
      */
     TrilinosWrappers::SparseMatrix capacity_matrix, conductivity_matrix;
     TrilinosWrappers::MPI::Vector  source_load, coupling_load;
+    /** The last thermal stress load (c_e theta, div v) that
+     *  add_thermal_stress() added (the displacement's space). */
+    TrilinosWrappers::MPI::Vector stress_load;
     /** The coefficients at the quadrature points, by cell (x only). */
     struct CellCoefficients
     {
