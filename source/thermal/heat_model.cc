@@ -20,8 +20,12 @@
 #include <optional>
 #include <sstream>
 
+#include "heat_data_check.h"
+
 namespace hemicontact
 {
+  using namespace heat_data_check;
+
   namespace
   {
     /** A ghosted copy of @p v on the index sets of @p space. */
@@ -35,86 +39,6 @@ namespace hemicontact
       TrilinosWrappers::MPI::Vector g(owned, relevant, comm);
       g = v;
       return g;
-    }
-
-    /** The first error of any rank, thrown on every rank. */
-    void
-    throw_first_error(const std::string &error, MPI_Comm comm)
-    {
-      for (const std::string &message : Utilities::MPI::all_gather(comm, error))
-        if (!message.empty())
-          throw InputError(message);
-    }
-
-    /** "(x, y[, z])" of @p p. */
-    template <int dim>
-    std::string
-    at(const Point<dim> &p)
-    {
-      std::ostringstream s;
-      s << "(";
-      for (unsigned int d = 0; d < dim; ++d)
-        s << (d ? ", " : "") << p[d];
-      s << ")";
-      return s.str();
-    }
-
-    /** What a datum must be besides a finite number. */
-    enum class Sign
-    {
-      any,
-      non_negative,
-      positive
-    };
-
-    /**
-     * The rule for every datum of the heat model, checked where it is
-     * evaluated: @p entry (quoted, or what it is derived from) is
-     * @p value at @p p (and time @p t, for data that may depend on t),
-     * which must be a finite number (> 0 or >= 0 as @p sign says). The
-     * first violation goes into @p error (if that is still empty), thrown
-     * on every rank by throw_first_error().
-     */
-    template <int dim>
-    void
-    check_datum(std::string                &error,
-                const double                value,
-                const std::string          &entry,
-                const Point<dim>           &p,
-                const std::optional<double> t,
-                const Sign                  sign = Sign::any)
-    {
-      const bool signed_ok =
-        sign == Sign::any || (sign == Sign::positive ? value > 0 : value >= 0);
-      if ((std::isfinite(value) && signed_ok) || !error.empty())
-        return;
-      std::ostringstream message;
-      message << "temperature: " << entry << " is ";
-      if (std::isfinite(value))
-        message << value;
-      else
-        message << "not a finite number (" << value << ")";
-      message << " at x = " << at(p);
-      if (t)
-        message << ", t = " << *t;
-      message << "; it must be a finite number"
-              << (sign == Sign::positive     ? " > 0" :
-                  sign == Sign::non_negative ? " >= 0" :
-                                               "")
-              << ": check the expression at that point"
-              << (t ? " and time." : ".");
-      error = message.str();
-    }
-
-    /** Whether every owned entry of @p v is a finite number, on all ranks
-     *  (entry by entry: a norm would overflow or pass over a NaN). */
-    bool
-    all_finite(const TrilinosWrappers::MPI::Vector &v, MPI_Comm comm)
-    {
-      unsigned int n_bad = 0;
-      for (const auto i : v.locally_owned_elements())
-        n_bad += !std::isfinite(v[i]);
-      return Utilities::MPI::sum(n_bad, comm) == 0;
     }
 
     /** "'temperature/ENTRY' = 'TEXT'" refused for reading t. */
