@@ -3,7 +3,8 @@
 # tutorial/step-1 prints exactly the output shown in its results section
 # (the text block after "What the program prints" in
 # tutorial/step-1/doc/results.md): the branches of the block at each load
-# value and the convergence table of the manufactured solution; and the
+# value, the convergence table of the manufactured solution and the three
+# solutions of the nonconvex law; and the
 # values of lambda_1 that the introduction and the results quote in prose.
 set -euo pipefail
 step=$1; src=$2; work=$3
@@ -22,7 +23,7 @@ fi
 # The prose quotes the smallness constant lambda_1: the block's value (in
 # the introduction and the results) and the square's on the coarsest and
 # finest mesh (the results) must be those printed.
-block_lambda=$(sed -n 's/.*lambda_1 = \([0-9.]*\) .*/\1/p' printed.txt)
+block_lambda=$(awk '/lambda_1 = / {sub(/.*lambda_1 = /, ""); sub(/ .*/, ""); print; exit}' printed.txt)
 coarse_lambda=$(awk '$1 == 4 {print $4}' printed.txt)
 fine_lambda=$(awk '$1 == 64 {print $4}' printed.txt)
 for quote in "prints it: $block_lambda >|intro.md" \

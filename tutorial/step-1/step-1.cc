@@ -236,11 +236,15 @@ namespace Step1
   class ProblemData
   {
   public:
-    ProblemData(const double mu, const double lambda, const double F_b)
+    ProblemData(const double                                  mu,
+                const double                                  lambda,
+                const double                                  F_b,
+                const std::vector<std::pair<double, double>> &breakpoints =
+                  {{0, 1}, {0.02, 1.4}, {0.15, 1.3}})
       : mu(mu)
       , lambda(lambda)
       , friction_bound(F_b)
-      , law({{0, 1}, {0.02, 1.4}, {0.15, 1.3}})
+      , law(breakpoints)
     {}
 
     virtual ~ProblemData() = default;
@@ -281,11 +285,17 @@ namespace Step1
   // foundation along its bottom, loaded on its top by a traction that
   // pulls up left of $x = 1$, presses down right of it and shears, all
   // growing with $t$.
+  //
+  // The block takes the normal law as an argument: the main study uses the
+  // law of every other problem of this program, and the study of
+  // nonconvexity at the end of main() one whose fall is far steeper than
+  // the body can hold.
   class BlockData : public ProblemData<2>
   {
   public:
-    BlockData()
-      : ProblemData<2>(/*mu=*/100, /*lambda=*/150, /*F_b=*/0.6)
+    BlockData(const std::vector<std::pair<double, double>> &breakpoints =
+                {{0, 1}, {0.02, 1.4}, {0.15, 1.3}})
+      : ProblemData<2>(/*mu=*/100, /*lambda=*/150, /*F_b=*/0.6, breakpoints)
     {}
 
     void
@@ -473,8 +483,11 @@ namespace Step1
     void
     run(const double t);
 
+    // Write the files of one solution, their names ending in @p name
+    // (the number of the load value, or the start of the study of
+    // nonconvexity), and print its summary line.
     void
-    output_results(const unsigned int load_step) const;
+    output_results(const std::string &name) const;
 
     // $\|u - u_h\|_{L^2}$ and $\|\varepsilon(u - u_h)\|_{L^2}$.
     template <class Exact>
@@ -496,6 +509,39 @@ namespace Step1
 
     // The Newton iterations of the last run(), for the convergence table.
     unsigned int newton_iterations = 0;
+
+    // The study of nonconvexity (at the end of the program) chooses where
+    // the iteration starts, and compares the energies $J_h$ of the
+    // solutions it finds: run() starts from whatever set_solution() left.
+    const Vector<double> &
+    get_solution() const
+    {
+      return solution;
+    }
+
+    void
+    set_solution(const Vector<double> &u)
+    {
+      solution = u;
+    }
+
+    double
+    energy(const Vector<double> &u) const;
+
+    // The largest penetration $\max_i u_{i,\nu}$ over the contact nodes.
+    double
+    largest_penetration() const
+    {
+      double largest = 0;
+      for (const ContactNode<dim> &node : contact_nodes)
+        {
+          double u_nu = 0;
+          for (unsigned int c = 0; c < dim; ++c)
+            u_nu += solution(node.dofs[c]) * node.normal[c];
+          largest = std::max(largest, u_nu);
+        }
+      return largest;
+    }
 
   private:
     void
@@ -524,8 +570,6 @@ namespace Step1
     nonsmooth_residual(const Vector<double> &residual) const;
     void
     assemble_newton_system(const Vector<double> &residual);
-    double
-    energy(const Vector<double> &u) const;
 
     const ProblemData<dim> &data;
     double                  time = 0; // the load parameter t
@@ -1203,19 +1247,19 @@ namespace Step1
 
   // @sect4{StaticContactProblem::output_results}
 
-  // Three files per load value: the displacement for ParaView
-  // (solution-NN.vtu), the contact quantities along $\Gamma_3$
-  // (contact-NN.csv: $u_\nu$, $u_\tau$, $-\sigma_\nu$, $\sigma_\tau$ and
-  // the branches; the traction is $-R_i/m_i$) and the nodal displacement
-  // in full double precision (displacement-NN.txt, for the comparison
-  // with the full program). A short summary line goes to the terminal.
+  // Four files per solution, their names ending in @p name: the
+  // displacement for ParaView (solution-NN.vtu), the contact quantities
+  // along $\Gamma_3$ (contact-NN.csv: $u_\nu$, $u_\tau$, $-\sigma_\nu$,
+  // $\sigma_\tau$ and the branches; the traction is $-R_i/m_i$), the nodal
+  // displacement in full double precision (displacement-NN.txt, for the
+  // comparison with the full program) and the cells with the displacement
+  // of their vertices (body-NN.csv, from which doc/plot_body.py draws the
+  // deformed mesh without ParaView). A short summary line goes to the
+  // terminal.
   template <int dim>
   void
-  StaticContactProblem<dim>::output_results(const unsigned int load_step) const
+  StaticContactProblem<dim>::output_results(const std::string &name) const
   {
-    char suffix[16];
-    std::snprintf(suffix, sizeof(suffix), "%02u", load_step);
-
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
@@ -1226,8 +1270,41 @@ namespace Step1
                              DataOut<dim>::type_dof_data,
                              interpretation);
     data_out.build_patches();
-    std::ofstream vtu(std::string("solution-") + suffix + ".vtu");
+    std::ofstream vtu("solution-" + name + ".vtu");
     data_out.write_vtu(vtu);
+
+    // The picture of the body needs only what a plot library can draw: one
+    // polygon per cell. We write each cell's vertices in counterclockwise
+    // order (deal.II numbers the vertices of a quadrilateral
+    // lexicographically, 0 1 / 2 3, so the order around it is 0, 1, 3, 2)
+    // with the displacement there and, at a contact node, its two branches
+    // (-1 elsewhere); the script adds position and displacement and
+    // colours the contact nodes by branch.
+    if (dim == 2)
+      {
+        std::map<types::global_dof_index, const ContactNode<dim> *> node_at;
+        for (const ContactNode<dim> &node : contact_nodes)
+          node_at[node.dofs[0]] = &node;
+        std::ofstream body("body-" + name + ".csv");
+        body << "cell,x,y,u_x,u_y,normal_branch,tangential_branch\n"
+             << std::setprecision(10);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int v : {0u, 1u, 3u, 2u})
+            {
+              body << cell->active_cell_index();
+              for (unsigned int c = 0; c < dim; ++c)
+                body << ',' << cell->vertex(v)[c];
+              for (unsigned int c = 0; c < dim; ++c)
+                body << ',' << solution(cell->vertex_dof_index(v, c));
+              const auto node = node_at.find(cell->vertex_dof_index(v, 0));
+              if (node == node_at.end())
+                body << ",-1,-1\n";
+              else
+                body << ',' << static_cast<int>(node->second->normal_branch)
+                     << ',' << static_cast<int>(node->second->tangential_branch)
+                     << '\n';
+            }
+      }
 
     // The contact quantities come from the residual at the solution, as in
     // solve(): the column minus_sigma_nu is $s + p(u_\nu)$, the whole
@@ -1236,7 +1313,7 @@ namespace Step1
     Vector<double> residual(dof_handler.n_dofs());
     stiffness_matrix.vmult(residual, solution);
     residual -= load;
-    std::ofstream csv(std::string("contact-") + suffix + ".csv");
+    std::ofstream csv("contact-" + name + ".csv");
     csv << "x,u_nu,u_tau,minus_sigma_nu,sigma_tau,normal_branch,"
            "tangential_branch\n";
     unsigned int n_normal[3] = {0, 0, 0}, n_tangential[2] = {0, 0};
@@ -1252,7 +1329,7 @@ namespace Step1
       }
 
     std::FILE *nodal =
-      std::fopen((std::string("displacement-") + suffix + ".txt").c_str(), "w");
+      std::fopen(("displacement-" + name + ".txt").c_str(), "w");
     std::vector<bool> written(triangulation.n_vertices(), false);
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
@@ -1314,122 +1391,186 @@ namespace Step1
       }
     return {std::sqrt(E_H2), std::sqrt(E_V2)};
   }
+  // @sect3{When the smallness condition fails: several solutions}
+
+  // Every problem above satisfies $\alpha_\nu < \lambda_1$, so $J_h$ is
+  // strictly convex and has exactly one stationary point: whatever the
+  // start, the iteration finds the same solution. Here we break the
+  // condition on purpose, to see what the word "hemivariational" costs. We
+  // keep the block, its mesh and its loads, and give it the law
+  // `0:1, 0.02:3, 0.04:0.1, 0.5:0.1`: after the jump the response rises
+  // to 3 and then collapses to 0.1 within a penetration of 0.02, a slope
+  // of $-145$. So $\alpha_\nu = 145$, far above $\lambda_1 = 1.08$ of
+  // the block: the foundation gives way much faster than the body can
+  // resist, and beyond $u_\nu = 0.04$ it offers almost nothing.
+  //
+  // A solution of the discrete inequality is a point where the nonsmooth
+  // residual vanishes, that is a stationary point of $J_h$ ($0 \in
+  // \partial J_h(u)$ in Clarke's sense), and nothing more: it need not be
+  // a minimiser, and different stationary points have different
+  // energies. We start the same iteration from three points at the full
+  // load $t = 1$:
+  // - along the load path $t = 0.25, 0.5, 0.75, 1$, each value started
+  //   from the solution of the one before, as in the main study (a
+  //   loading history, the start a physicist would choose);
+  // - from zero, the undeformed body;
+  // - from three times the first solution: the same shape, pressed deeper.
+  //
+  // For each we print the energy $J_h$ and the largest penetration, and
+  // write the four files of output_results(), so that doc/plot_body.py
+  // and doc/plot_nonconvex.py draw the three bodies. Between the first
+  // solution and each of the others we also write $J_h$ along the straight
+  // segment joining them (energy-nonconvex.csv): if the energy rises
+  // before it falls, the first solution sits in a valley of its own, a
+  // local minimiser that no small perturbation leaves.
+  void
+  run_nonconvexity_study()
+  {
+    const BlockData         block({{0, 1}, {0.02, 3}, {0.04, 0.1}, {0.5, 0.1}});
+    StaticContactProblem<2> problem(block, 3);
+    write_law(block.law, "law-nonconvex.csv");
+    const double lambda_1 = problem.smallness_constant();
+    std::cout << "The block with the law 0:1,0.02:3,0.04:0.1,0.5:0.1:\n"
+              << "  alpha_nu = " << std::setprecision(6) << block.law.alpha
+              << ", lambda_1 = " << lambda_1
+              << (block.law.alpha < lambda_1 ?
+                    " (alpha_nu < lambda_1: one solution)" :
+                    " (alpha_nu >= lambda_1: maybe several solutions)")
+              << std::endl;
+
+    // The report of one solution: its energy and its largest
+    // penetration, then the summary line of its files.
+    const auto report = [&](const std::string &name, const std::string &start) {
+      const Vector<double> &u = problem.get_solution();
+      std::cout << "  " << name << ", " << start
+                << ": J_h = " << std::setprecision(6) << problem.energy(u)
+                << ", largest u_nu = " << problem.largest_penetration()
+                << "\n    ";
+      problem.output_results(name);
+      return u;
+    };
+
+    for (unsigned int n = 1; n <= 4; ++n)
+      problem.run(0.25 * n);
+    const Vector<double> path = report("path", "along the load path");
+
+    problem.set_solution(Vector<double>(problem.n_dofs()));
+    problem.run(1);
+    const Vector<double> zero = report("zero", "from zero");
+
+    Vector<double> start(path);
+    start *= 3;
+    problem.set_solution(start);
+    problem.run(1);
+    const Vector<double> triple = report("triple", "from three times path");
+
+    // $J_h$ on the segments $u_\text{path} + \theta (u - u_\text{path})$,
+    // $0 \le \theta \le 1$, to the other two solutions.
+    std::ofstream profile("energy-nonconvex.csv");
+    profile << "theta,path_to_zero,path_to_triple\n" << std::setprecision(10);
+    for (unsigned int k = 0; k <= 200; ++k)
+      {
+        const double   theta = k / 200.;
+        Vector<double> to_zero(path), to_triple(path);
+        to_zero.sadd(1 - theta, theta, zero);
+        to_triple.sadd(1 - theta, theta, triple);
+        profile << theta << ',' << problem.energy(to_zero) << ','
+                << problem.energy(to_triple) << '\n';
+      }
+  }
 } // namespace Step1
 
 // @sect3{The command line}
 
-// A student runs the program with no arguments, or with one of the modes
-// below. Every argument is checked before anything is computed, and a bad
-// one stops the program with a one-paragraph message and the exit code 2
-// (1 is kept for a run that fails, e.g. a Newton iteration that does not
-// converge). The reason is practical: std::stoi() would accept "3x" as 3,
-// and a negative number read into an unsigned int becomes 4294967295
-// levels, a run that never ends.
+// The program runs everything without arguments, or one part by its mode.
+// We check every argument before anything is computed, and a bad one ends
+// the program with a message that quotes it, the usage and the exit code 2
+// (1 is kept for a computation that fails). The check is ours, not
+// std::stoi()'s, because std::stoi() takes "3x" as 3, and a negative
+// number read into an unsigned int asks for four billion levels.
 namespace CommandLine
 {
-  constexpr int exit_bad_arguments = 2;
-
-  // Each level of the convergence study halves h: four times the unknowns
-  // of the level before and, with the direct solver UMFPACK, about four
-  // times the memory and more than four times the time. Seven levels end
-  // at $h = 1/256$ with 132,098 unknowns: measured, 96 s and 0.63 GB on
-  // one core (doc/results.md, "Running it"). An eighth level would need
-  // about 2.5 GB and ten minutes, a ninth ten gigabytes: the program
-  // refuses them rather than let a typo exhaust the machine.
-  constexpr unsigned int max_levels = 7;
-
   const char *const usage =
-    "usage: step-1                        the block, then 5 levels of the\n"
-    "                                     manufactured solution\n"
+    "usage: step-1                        the block, 5 levels of the\n"
+    "                                     manufactured solution, the\n"
+    "                                     nonconvex law on the block\n"
     "       step-1 block                  the block only\n"
     "       step-1 convergence [LEVELS]   LEVELS levels (1 to 7, default 5)\n"
     "                                     of the manufactured solution\n"
+    "       step-1 nonconvex              the nonconvex law only\n"
     "       step-1 --help                 this text\n"
     "exit codes: 0 done, 1 the computation failed, 2 a bad argument";
 
-  // The error of a bad command line: its message names the argument.
-  struct BadArguments : public std::runtime_error
-  {
-    using std::runtime_error::runtime_error;
-  };
-
-  // A number of levels: decimal digits only (no sign, no blanks, nothing
-  // after the number), from 1 to max_levels. Reading the digits ourselves
-  // rejects "-1", "+2", "abc", "3x" and " 3" alike; at most three digits
-  // keep the conversion far from overflow.
+  // A number of levels: one to three decimal digits and nothing else, from
+  // 1 to @p max. Each level has four times the unknowns of the one before
+  // and, with UMFPACK, about four times the memory: level 7 (132,098
+  // unknowns) took 96 s and 0.63 GB, an eighth would take ten minutes and
+  // 2.5 GB, so we refuse it rather than let a typo exhaust the machine.
   unsigned int
-  parse_levels(const std::string &text)
+  parse_levels(const std::string &text, const unsigned int max)
   {
-    const bool digits_only =
+    const bool digits =
       !text.empty() && text.size() <= 3 &&
-      std::all_of(text.begin(), text.end(), [](const char c) {
-        return c >= '0' && c <= '9';
-      });
-    const unsigned int levels = digits_only ? std::stoul(text) : 0;
-    if (!digits_only || levels < 1 || levels > max_levels)
-      throw BadArguments("the number of levels must be a whole number "
-                         "from 1 to " +
-                         std::to_string(max_levels) + ", not '" + text +
-                         "' (level 7 has 132,098 unknowns and takes 0.63 GB; "
-                         "each further level four times more)");
+      text.find_first_not_of("0123456789") == std::string::npos;
+    const unsigned int levels = digits ? std::stoul(text) : 0;
+    if (levels < 1 || levels > max)
+      throw std::invalid_argument(
+        "the number of levels must be a whole number from 1 to " +
+        std::to_string(max) + ", not '" + text + "' (level 7 has 132,098 " +
+        "unknowns and takes 0.63 GB; each further level four times more)");
     return levels;
   }
 } // namespace CommandLine
 
 // @sect3{The main function}
 
-// First the block at four load values $t = 0.25, 0.5, 0.75, 1$, each one
-// static problem started from the previous solution; then the
-// manufactured solution on the meshes $h = 1/4, \dots, 1/64$, with the
-// errors and their observed orders in a ConvergenceTable. The modes
-// "block" and "convergence LEVELS" run one of the two.
+// The program has three parts. First the block at four load values $t =
+// 0.25, 0.5, 0.75, 1$, each one static problem started from the previous
+// solution; then the manufactured solution on the meshes $h = 1/4, \dots,
+// 1/64$, with the errors and their observed orders in a ConvergenceTable;
+// last the study of nonconvexity, the block with a law that breaks the
+// smallness condition. The modes "block", "convergence LEVELS" and
+// "nonconvex" run one of them.
 int
 main(int argc, char **argv)
 {
   using namespace Step1;
-  bool         run_block = true, run_convergence = true;
-  unsigned int n_levels = 5;
+  const std::vector<std::string> arguments(argv + 1, argv + argc);
+  const std::string              mode = arguments.empty() ? "" : arguments[0];
+  unsigned int                   n_levels = 5;
   try
     {
-      const std::vector<std::string> arguments(argv + 1, argv + argc);
-      const std::string mode = arguments.empty() ? "" : arguments[0];
-      const bool        help = mode == "--help" || mode == "-h";
-      if (help)
-        run_block = run_convergence = false;
-      else if (mode == "block")
-        run_convergence = false;
-      else if (mode == "convergence")
-        run_block = false;
-      else if (!arguments.empty())
-        throw CommandLine::BadArguments("unknown mode '" + mode +
-                                        "' (the modes are block and "
-                                        "convergence)");
-      // how many arguments the mode takes, itself included
-      const std::size_t n_allowed = mode.empty()              ? 0 :
-                                    (help || mode == "block") ? 1 :
-                                                                2;
-      if (arguments.size() > n_allowed)
-        throw CommandLine::BadArguments("too many arguments: '" +
-                                        arguments[n_allowed] + "' after '" +
-                                        arguments[n_allowed - 1] + "'");
-      if (help)
-        {
-          std::cout << CommandLine::usage << std::endl;
-          return 0;
-        }
-      if (mode == "convergence" && arguments.size() == 2)
-        n_levels = CommandLine::parse_levels(arguments[1]);
+      // Each mode and the number of arguments it takes, itself included.
+      const std::map<std::string, std::size_t> modes = {{"", 0},
+                                                        {"block", 1},
+                                                        {"convergence", 2},
+                                                        {"nonconvex", 1},
+                                                        {"--help", 1}};
+      if (arguments.size() > 0 && (mode.empty() || modes.count(mode) == 0))
+        throw std::invalid_argument("unknown mode '" + mode + "' (the modes " +
+                                    "are block, convergence and nonconvex)");
+      if (arguments.size() > modes.at(mode))
+        throw std::invalid_argument("too many arguments: '" +
+                                    arguments[modes.at(mode)] + "' after '" +
+                                    arguments[modes.at(mode) - 1] + "'");
+      if (arguments.size() == 2)
+        n_levels = CommandLine::parse_levels(arguments[1], 7);
     }
-  catch (const CommandLine::BadArguments &error)
+  catch (const std::invalid_argument &error)
     {
       std::cerr << "step-1: " << error.what() << ".\n"
                 << CommandLine::usage << std::endl;
-      return CommandLine::exit_bad_arguments;
+      return 2;
+    }
+  if (mode == "--help")
+    {
+      std::cout << CommandLine::usage << std::endl;
+      return 0;
     }
 
   try
     {
-      if (run_block)
+      if (mode.empty() || mode == "block")
         {
           std::cout << "The block, 3 global refinements:" << std::endl;
           const BlockData         block;
@@ -1448,13 +1589,13 @@ main(int argc, char **argv)
             {
               block_problem.run(0.25 * n);
               std::cout << "  ";
-              block_problem.output_results(n);
+              block_problem.output_results(Utilities::int_to_string(n, 2));
             }
         }
 
-      if (run_convergence)
+      if (mode.empty() || mode == "convergence")
         {
-          std::cout << (run_block ? "\n" : "")
+          std::cout << (mode.empty() ? "\n" : "")
                     << "The manufactured solution:" << std::endl;
           const ManufacturedData manufactured;
           ConvergenceTable       table;
@@ -1480,6 +1621,12 @@ main(int argc, char **argv)
                 column, ConvergenceTable::reduction_rate_log2);
             }
           table.write_text(std::cout);
+        }
+
+      if (mode.empty() || mode == "nonconvex")
+        {
+          std::cout << (mode.empty() ? "\n" : "");
+          run_nonconvexity_study();
         }
     }
   catch (std::exception &exc)
