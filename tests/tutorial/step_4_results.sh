@@ -5,8 +5,9 @@
 # compared as a whole, so line by line); the numbers that the pages quote
 # in prose (lambda_1, the reference, the branches, the rates, the
 # effectivity range, the errors at the last rows, the contact part of the
-# estimate) are those of this run; and the figure's script, called by its
-# path, draws a PNG from the files of this run.
+# estimate) are those of this run; and the figures' scripts (the
+# convergence plot, the adapted meshes), called by their paths, draw PNGs
+# from the files of this run.
 set -euo pipefail
 step=$1; src=$2; work=$3
 intro=$src/tutorial/step-4/doc/intro.md
@@ -113,10 +114,12 @@ for name in failed:
 sys.exit(1 if failed else 0)
 PYTHON
 
-# the figure, drawn as the page says from the files of this run
-[ -x "$src/tutorial/step-4/doc/plot_convergence.py" ] ||
-  { echo "FAIL: tutorial/step-4/doc/plot_convergence.py is not executable"; exit 1; }
-"$src/tutorial/step-4/doc/plot_convergence.py" . convergence.png
-[ "$(head -c 4 convergence.png | od -An -c | tr -d ' ')" = "211PNG" ] ||
-  { echo "FAIL: convergence.png is not a PNG"; exit 1; }
-echo "step-4 prints the $(wc -l < printed.txt) lines of its results page; the quoted numbers are this run's; the figure's script draws its PNG"
+# the figures, drawn as the page says from the files of this run
+for figure in convergence meshes; do
+  script=$src/tutorial/step-4/doc/plot_$figure.py
+  [ -x "$script" ] || { echo "FAIL: $script is not executable"; exit 1; }
+  "$script" . $figure.png
+  [ "$(head -c 4 $figure.png | od -An -c | tr -d ' ')" = "211PNG" ] ||
+    { echo "FAIL: $figure.png is not a PNG"; exit 1; }
+done
+echo "step-4 prints the $(wc -l < printed.txt) lines of its results page; the quoted numbers are this run's; the figures' scripts draw their PNGs"

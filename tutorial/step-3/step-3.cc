@@ -56,6 +56,7 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -1567,6 +1568,33 @@ namespace Step3
                            solution(cell->vertex_dof_index(v, c)));
           }
     std::fclose(nodal);
+
+    // The picture of the body (doc/plot_body.py): each cell's vertices in
+    // counterclockwise order (0, 1, 3, 2 in deal.II's lexicographic
+    // numbering of a quadrilateral's vertices) with the displacement there
+    // and, at a contact node, its two branches (-1 elsewhere), as step-1
+    // writes them to body-NN.csv.
+    std::map<types::global_dof_index, const ContactNode<dim> *> node_at;
+    for (const ContactNode<dim> &node : contact_nodes)
+      node_at[node.dofs[0]] = &node;
+    std::ofstream body(std::string("body-") + suffix + ".csv");
+    body << "cell,x,y,u_x,u_y,normal_branch,tangential_branch\n"
+         << std::setprecision(10);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int v : {0u, 1u, 3u, 2u})
+        {
+          body << cell->active_cell_index();
+          for (unsigned int c = 0; c < dim; ++c)
+            body << ',' << cell->vertex(v)[c];
+          for (unsigned int c = 0; c < dim; ++c)
+            body << ',' << solution(cell->vertex_dof_index(v, c));
+          const auto node = node_at.find(cell->vertex_dof_index(v, 0));
+          if (node == node_at.end())
+            body << ",-1,-1\n";
+          else
+            body << ',' << static_cast<int>(node->second->normal_branch) << ','
+                 << static_cast<int>(node->second->tangential_branch) << '\n';
+        }
 
     std::printf("t = %.3f: %u Newton, normal sep/stick/pen %u/%u/%u, "
                 "tangential stick/slip %u/%u, max u_nu %.4f, max N %.4f\n",
