@@ -1420,9 +1420,10 @@ namespace Step1
   // write the four files of output_results(), so that doc/plot_body.py
   // and doc/plot_nonconvex.py draw the three bodies. Between the first
   // solution and each of the others we also write $J_h$ along the straight
-  // segment joining them (energy-nonconvex.csv): if the energy rises
-  // before it falls, the first solution sits in a valley of its own, a
-  // local minimiser that no small perturbation leaves.
+  // segment joining them (energy-nonconvex.csv): where the energy rises
+  // before it falls, the first solution sits in a valley of its own along
+  // that line; where it falls from one end, the solution at that end is
+  // no minimiser at all.
   void
   run_nonconvexity_study()
   {
