@@ -36,6 +36,9 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 
+// And a few headers of the C++ standard library: containers for the
+// breakpoints and the contact nodes, streams for the output files, and
+// <limits> for the start of the power iteration.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -98,6 +101,12 @@ namespace Step1
       const std::vector<std::pair<double, double>> &breakpoints)
       : points(breakpoints)
     {
+      // A law is data the user types, so we check it where it enters the
+      // program, with AssertThrow (which stays active in Release mode, unlike
+      // Assert): the first breakpoint must be the jump at $r = 0$, and the
+      // penetrations must increase, or the segments below would overlap. A
+      // negative response would pull the body into the foundation, which no
+      // foundation does.
       AssertThrow(points[0].first == 0. && points[0].second >= 0,
                   ExcMessage("The first breakpoint must be at r = 0."));
       for (unsigned int k = 0; k + 1 < points.size(); ++k)
@@ -124,6 +133,9 @@ namespace Step1
     // The response $\xi(r)$ for $r > 0$, the remainder $p(r)$ and its
     // derivative $p'(r)$ (at a breakpoint, the slope to its right).
     double
+    // The response on segment $k$ is the straight line through its two
+    // breakpoints; beyond the last breakpoint the law stays at its last value,
+    // which is what "constant after" means in the introduction.
     response(const double r) const
     {
       const unsigned int k = segment(r);
@@ -147,6 +159,11 @@ namespace Step1
 
     // The potential $j_\nu(r) = \int_0^r \xi$, exact segment by segment.
     double
+    // On each segment $\xi$ is linear, so the trapezoidal rule integrates it
+    // exactly: we add the trapezoids of the segments left of $r$, the last one
+    // cut at $r$. The energy of the line search, and so the choice of step
+    // lengths, rests on this number: an approximate potential would let the
+    // line search accept steps that raise the true $J_h$.
     potential(const double r) const
     {
       double integral = 0;
@@ -172,6 +189,11 @@ namespace Step1
     // The segment $[r_k, r_{k+1})$ that holds $r$ (the last $k$ beyond the
     // last breakpoint), and its slope.
     unsigned int
+    // A linear search: a law has a handful of breakpoints, and a binary search
+    // would gain nothing but lines. Note the $\le$: a breakpoint belongs to the
+    // segment to its right, so remainder_derivative() returns the slope to the
+    // right of a kink, the one a Newton step that moves into the foundation
+    // sees.
     segment(const double r) const
     {
       unsigned int k = 0;
@@ -249,6 +271,11 @@ namespace Step1
 
     virtual ~ProblemData() = default;
 
+    // What a problem supplies, in the way deal.II's Function class asks for
+    // values: the coarse mesh with its boundary ids, and the two loads as
+    // functions of the point and the load parameter. Everything the solver
+    // needs beyond these (the stress, the laws) is the same for every problem
+    // of this program and lives in this base class.
     virtual void
     make_coarse_grid(Triangulation<dim> &triangulation) const = 0;
 
@@ -319,6 +346,12 @@ namespace Step1
     {
       if (id != 3) // the top; the right side is free
         return Tensor<1, 2>();
+      // The traction on the top, $f_2(x, t) = t\,(0.5\,x/4,\ -2.5\,(x - 1)/3)$:
+      // the shear grows from the clamped end to $0.5\,t$ at the free end; the
+      // normal part is positive (upwards) left of $x = 1$ and presses down
+      // right of it, up to $2.5\,t$ at the free end. So the block is lifted
+      // near the clamp and pressed into the foundation further out, and the
+      // contact zone has all three normal branches at once.
       return Tensor<1, 2>({0.5 * t * x[0] / 4, -2.5 * t * (x[0] - 1) / 3});
     }
   };
@@ -360,7 +393,10 @@ namespace Step1
         triangulation, {1, 1}, Point<2>(0, 0), Point<2>(1, 1), true);
     }
 
-    // $g(z) = z_+^3$ and its first two derivatives.
+    // The exact solution is built from $z_+^3$, a $C^2$ function whose third
+    // derivative jumps at $z = 0$: smooth enough for the data to be
+    // continuous, and with kinks exactly where the contact conditions switch.
+    // $z_+^3$ and its first two derivatives.
     static std::array<double, 3>
     cube_plus(const double z)
     {
@@ -419,6 +455,10 @@ namespace Step1
              const types::boundary_id id,
              const double) const override
     {
+      // On $\Gamma_2$ the traction is simply $\sigma(u)\nu$. On $\Gamma_3$ we
+      // add what the laws would supply at the exact solution, so that the
+      // discrete problem with the laws on $\Gamma_3$ has $u$ as its solution in
+      // the limit.
       const Tensor<1, 2> sigma_nu =
         stress(symmetrize(exact_gradient(p))) * normal;
       if (id != BoundaryIds::contact)
@@ -456,6 +496,11 @@ namespace Step1
   template <int dim>
   struct ContactNode
   {
+    // The position serves the output only (the x column of contact-NN.csv);
+    // the dofs are the node's $d$ degrees of freedom, in the order of the
+    // components; mass is $m_i$; normal is $\nu_i$; c is $c_i$. The branches
+    // start as "separating" and "stick": the first update_active_set(), before
+    // any Newton step, replaces them by those of the start.
     Point<dim>                               position;
     std::array<types::global_dof_index, dim> dofs;
     double                                   mass = 0;
@@ -476,6 +521,9 @@ namespace Step1
   class StaticContactProblem
   {
   public:
+    // The problem keeps a reference to its data (the material, the law and
+    // the loads), which must outlive it, and builds its mesh with the given
+    // number of global refinements of the data's coarse mesh.
     StaticContactProblem(const ProblemData<dim> &data,
                          const unsigned int      n_refinements);
 
@@ -490,6 +538,9 @@ namespace Step1
     output_results(const std::string &name) const;
 
     // $\|u - u_h\|_{L^2}$ and $\|\varepsilon(u - u_h)\|_{L^2}$.
+    // Exact is any class with exact_value() and exact_gradient(). A template
+    // rather than virtual functions of ProblemData, because only the
+    // manufactured solution has an exact solution to compare with.
     template <class Exact>
     std::pair<double, double>
     compute_errors(const Exact &exact) const;
@@ -574,6 +625,8 @@ namespace Step1
     const ProblemData<dim> &data;
     double                  time = 0; // the load parameter t
 
+    // The finite element machinery of step-8: a mesh, $Q_1$ in each of the
+    // $d$ components, and the numbering of the degrees of freedom.
     Triangulation<dim> triangulation;
     FESystem<dim>      fe;
     DoFHandler<dim>    dof_handler;
@@ -637,6 +690,9 @@ namespace Step1
   void
   StaticContactProblem<dim>::setup_system()
   {
+    // The clamped boundary $\Gamma_1$ (boundary id 0) becomes constraints
+    // $u = 0$ on its degrees of freedom; assembling with them (as step-8
+    // does) keeps $K$ symmetric and positive definite on the remaining ones.
     dof_handler.distribute_dofs(fe);
 
     clamped_constraints.clear();
@@ -646,6 +702,10 @@ namespace Step1
                                              clamped_constraints);
     clamped_constraints.close();
 
+    // We build the pattern without the constraints: the Newton constraints
+    // change from iteration to iteration, and a pattern that ignores them has
+    // room for every set of them (each ties only the components of one node,
+    // which are coupled anyway).
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     DoFTools::make_sparsity_pattern(dof_handler, dsp);
     sparsity_pattern.copy_from(dsp);
@@ -695,6 +755,12 @@ namespace Step1
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary() && face->boundary_id() == BoundaryIds::contact)
           {
+            // The face integrals of $\varphi_i$ and $\varphi_i\nu$ with two
+            // Gauss points are exact for $Q_1$ on straight faces. Each
+            // component's shape function contributes to its own entry, so that
+            // mass and normal come out per degree of freedom: we read the mass
+            // at the node's first component and the normal's components at
+            // its components.
             fe_face_values.reinit(cell, face);
             cell->get_dof_indices(dofs);
             for (const unsigned int q :
@@ -792,6 +858,9 @@ namespace Step1
     rhs    = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
+        // The cell matrix is step-8's: $\sigma(\varphi_i) = B\varepsilon(
+        // \varphi_i)$ against $\varepsilon(\varphi_j)$, with the stress law of
+        // the problem data, so that a different material changes one function.
         cell_matrix = 0;
         cell_rhs    = 0;
         fe_values.reinit(cell);
@@ -816,6 +885,11 @@ namespace Step1
                 f0 * fe_load[displacement].value(i, q) * fe_load.JxW(q);
           }
         for (const auto &face : cell->face_iterators())
+          // Every boundary face that is not clamped carries a traction: $f_2$
+          // on
+          // $\Gamma_2$, and, for the manufactured solution, $f_3$ on $\Gamma_3$
+          // (the block's data return zero there, since its contact forces come
+          // from the laws alone).
           if (face->at_boundary() &&
               face->boundary_id() != BoundaryIds::clamped)
             {
@@ -860,6 +934,11 @@ namespace Step1
   // @f]
   // Both vanish exactly at a solution of the nodal contact conditions.
   template <int dim>
+  // The members, in the order of the formulas above: the normal
+  // displacement and the slip, the two multipliers, and the arguments of
+  // the two projections. We recompute them from the residual whenever they
+  // are needed instead of storing them in ContactNode: they change with
+  // every iterate, and a stored copy could go stale.
   struct StaticContactProblem<dim>::NodeState
   {
     double         u_nu;
@@ -915,7 +994,9 @@ namespace Step1
     unsigned int n_changed = 0;
     for (ContactNode<dim> &node : contact_nodes)
       {
-        const NodeState        m  = node_state(node, residual);
+        const NodeState m = node_state(node, residual);
+        // The thresholds are the kinks of the projections: a value exactly on a
+        // kink goes to the held branch, where the projection is the identity.
         const NormalBranch     nb = m.q_nu < 0 ? NormalBranch::separating :
                                     m.q_nu <= data.law.jump() ?
                                                  NormalBranch::stick :
@@ -943,6 +1024,9 @@ namespace Step1
     // contact force); there the complementarity functions take its place.
     // The clamped rows of the residual are zero already (the condensed
     // $K$ times a $u$ that vanishes there, minus a zero load).
+    // Both parts are forces, so we add their squares: a mixed norm in which
+    // neither the equilibrium nor the contact conditions can hide behind the
+    // other.
     Vector<double> free_part(residual);
     double         contact_part = 0;
     for (const ContactNode<dim> &node : contact_nodes)
@@ -999,6 +1083,11 @@ namespace Step1
         const bool normal_held = node.normal_branch == NormalBranch::stick;
         const bool tangent_held =
           node.tangential_branch == TangentialBranch::stick;
+        // A held condition is solved for one component, and we divide by that
+        // component of the normal: we pick the largest, $|\nu_k| \ge 1/\sqrt
+        // d$, so that the division is always well conditioned, whatever the
+        // shape of
+        // $\Gamma_3$.
         unsigned int k = 0;
         for (unsigned int c = 1; c < dim; ++c)
           if (std::abs(node.normal[c]) > std::abs(node.normal[k]))
@@ -1030,6 +1119,10 @@ namespace Step1
 
     assemble_system(newton_constraints, newton_matrix, newton_rhs);
 
+    // The constraints are closed, and the cell terms are in the matrix and the
+    // right-hand side. What remains are the nodal terms of the free branches,
+    // which we add through the same constraints, as if each contact node were
+    // a little element with $d$ degrees of freedom.
     // the nodal terms of the free branches
     FullMatrix<double>                   node_matrix(dim, dim);
     Vector<double>                       node_rhs(dim);
@@ -1084,6 +1177,8 @@ namespace Step1
   double
   StaticContactProblem<dim>::energy(const Vector<double> &u) const
   {
+    // matrix_norm_square() is $u\cdot Ku$. The clamped rows of $K$ are
+    // decoupled and $u$ vanishes there, so they add nothing.
     double J = 0.5 * stiffness_matrix.matrix_norm_square(u) - load * u;
     for (const ContactNode<dim> &node : contact_nodes)
       {
@@ -1122,6 +1217,9 @@ namespace Step1
     newton_iterations = 0;
     for (unsigned int iteration = 0;; ++iteration)
       {
+        // The residual of the current iterate decides everything else: the
+        // branches, the stopping test and the right-hand side of the Newton
+        // step.
         stiffness_matrix.vmult(residual, solution);
         residual -= load;
         const unsigned int n_changed = update_active_set(residual);
@@ -1133,6 +1231,10 @@ namespace Step1
                                "converge in 50 iterations."));
 
         assemble_newton_system(residual);
+        // The matrix changes with the branches, so we factorise it in every
+        // iteration. On the meshes of this program UMFPACK does this
+        // quickly, and a direct solver keeps the iteration count a property
+        // of the nonsmooth method alone, with no inner tolerance to tune.
         SparseDirectUMFPACK direct_solver;
         direct_solver.initialize(newton_matrix);
         Vector<double> trial(newton_rhs);
@@ -1152,6 +1254,8 @@ namespace Step1
         // stall the iteration, while the full step moves to the branches
         // the next update_active_set() corrects. The default run (the block
         // and five levels) never reaches that fallback.
+        // The trial vector holds the new iterate $u + d$; the direction is the
+        // difference, and the loop below tries fractions of it.
         Vector<double> direction(trial);
         direction -= solution;
         const double J0    = energy(solution);
@@ -1178,6 +1282,9 @@ namespace Step1
   void
   StaticContactProblem<dim>::run(const double t)
   {
+    // $K$ does not depend on $t$, so assembling it again is wasted work; we
+    // accept it because one function assembles both, and every Newton step
+    // that follows assembles a matrix of the same size anyway.
     time = t;
     assemble_system(clamped_constraints, stiffness_matrix, load);
     solve();
@@ -1207,6 +1314,9 @@ namespace Step1
   double
   StaticContactProblem<dim>::smallness_constant() const
   {
+    // We never assemble $N$ as a matrix: it is diagonal in the nodes, and
+    // applying it is one loop over the contact nodes, which project $v$ onto
+    // their normals and weight it with $m_i$.
     const auto apply_N = [&](const Vector<double> &v, Vector<double> &Nv) {
       Nv = 0;
       for (const ContactNode<dim> &node : contact_nodes)
@@ -1219,6 +1329,10 @@ namespace Step1
         }
     };
 
+    // The clamped degrees of freedom have a nonzero diagonal entry in the
+    // condensed $K$ (deal.II puts one there when it condenses), so $K$ is
+    // invertible, and the power iteration never sees them: $N$ vanishes
+    // there.
     SparseDirectUMFPACK K_inverse;
     K_inverse.initialize(stiffness_matrix);
     Vector<double> x(dof_handler.n_dofs()), Nx(x), Kx(x);
@@ -1226,6 +1340,10 @@ namespace Step1
       for (unsigned int c = 0; c < dim; ++c)
         x(node.dofs[c]) = node.normal[c];
 
+    // The power iteration. Each step applies $K^{-1}N$ and normalises; the
+    // iterate approaches the eigenvector of the largest eigenvalue of
+    // $K^{-1}N$ at the rate of the ratio of the two largest, and the cap of
+    // 1000 steps guards against a pair too close to separate.
     double lambda = std::numeric_limits<double>::max();
     for (unsigned int iteration = 0; iteration < 1000; ++iteration)
       {
@@ -1261,6 +1379,8 @@ namespace Step1
   StaticContactProblem<dim>::output_results(const std::string &name) const
   {
     DataOut<dim> data_out;
+    // The VTU file, as in step-8: the $d$ components together form one vector
+    // field, so that ParaView can warp the mesh by it.
     data_out.attach_dof_handler(dof_handler);
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(dim,
@@ -1310,6 +1430,9 @@ namespace Step1
     // solve(): the column minus_sigma_nu is $s + p(u_\nu)$, the whole
     // normal traction, and sigma_tau the first component of the
     // multiplier $\lambda$ (the tangent of the bottom is $e_x$).
+    // (The residual at the solution is the contact force that balances the
+    // body; dividing by $m_i$ turns it into the traction a pressure sensor in
+    // the foundation would read.)
     Vector<double> residual(dof_handler.n_dofs());
     stiffness_matrix.vmult(residual, solution);
     residual -= load;
@@ -1328,6 +1451,9 @@ namespace Step1
         ++n_tangential[static_cast<int>(node.tangential_branch)];
       }
 
+    // The nodal file uses printf's %.17g, which prints a double so that it
+    // reads back bit for bit: the comparison with the full program at
+    // $10^{-10}$ must not be limited by the output.
     std::FILE *nodal =
       std::fopen(("displacement-" + name + ".txt").c_str(), "w");
     std::vector<bool> written(triangulation.n_vertices(), false);
@@ -1345,6 +1471,8 @@ namespace Step1
           }
     std::fclose(nodal);
 
+    // The line that the results page shows for every load value: the Newton
+    // iterations and how many nodes are on each branch.
     std::cout << "t = " << std::fixed << std::setprecision(2) << time << ": "
               << newton_iterations
               << " Newton iterations, normal separating/stick/penetrating "
@@ -1375,6 +1503,9 @@ namespace Step1
     double                               E_H2 = 0, E_V2 = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
+        // We integrate the squared errors cell by cell, with the exact solution
+        // at the quadrature points and the discrete one interpolated there by
+        // FEValues.
         fe_values.reinit(cell);
         fe_values[displacement].get_function_values(solution, values);
         fe_values[displacement].get_function_symmetric_gradients(solution,
@@ -1441,6 +1572,8 @@ namespace Step1
 
     // The report of one solution: its energy and its largest
     // penetration, then the summary line of its files.
+    // Six digits of $J_h$ are enough to tell the solutions apart; the test
+    // tutorial/step_1_nonconvex reads them from this line.
     const auto report = [&](const std::string &name, const std::string &start) {
       const Vector<double> &u = problem.get_solution();
       std::cout << "  " << name << ", " << start
@@ -1451,14 +1584,21 @@ namespace Step1
       return u;
     };
 
+    // The first start: the loading history of the main study, each load value
+    // started from the solution of the one before. This is also how the block
+    // of the main study reaches its $t = 1$.
     for (unsigned int n = 1; n <= 4; ++n)
       problem.run(0.25 * n);
     const Vector<double> path = report("path", "along the load path");
 
+    // The second start: the undeformed body at the full load, with no history.
     problem.set_solution(Vector<double>(problem.n_dofs()));
     problem.run(1);
     const Vector<double> zero = report("zero", "from zero");
 
+    // The third start: the first solution, three times as deep. It starts
+    // every penetrating node three times deeper on the law, nearer to its
+    // peak or past it.
     Vector<double> start(path);
     start *= 3;
     problem.set_solution(start);
@@ -1467,6 +1607,9 @@ namespace Step1
 
     // $J_h$ on the segments $u_\text{path} + \theta (u - u_\text{path})$,
     // $0 \le \theta \le 1$, to the other two solutions.
+    // The three are stationary points of one function; the values of $J_h$
+    // between them show what kind. We evaluate $J_h$ on 201 points of each
+    // segment, enough to resolve the barrier near the first solution.
     std::ofstream profile("energy-nonconvex.csv");
     profile << "theta,path_to_zero,path_to_triple\n" << std::setprecision(10);
     for (unsigned int k = 0; k <= 200; ++k)
@@ -1538,10 +1681,16 @@ main(int argc, char **argv)
   using namespace Step1;
   const std::vector<std::string> arguments(argv + 1, argv + argc);
   const std::string              mode = arguments.empty() ? "" : arguments[0];
-  unsigned int                   n_levels = 5;
+  // The default of the convergence study: five levels, $h = 1/4$ to $1/64$,
+  // a few seconds in all.
+  unsigned int n_levels = 5;
   try
     {
       // Each mode and the number of arguments it takes, itself included.
+      // One table says which modes exist and how many arguments each takes,
+      // the mode included; the empty mode is the run without arguments. Two
+      // checks against it, and the check of the number of levels, are the
+      // whole validation.
       const std::map<std::string, std::size_t> modes = {{"", 0},
                                                         {"block", 1},
                                                         {"convergence", 2},
@@ -1557,12 +1706,16 @@ main(int argc, char **argv)
       if (arguments.size() == 2)
         n_levels = CommandLine::parse_levels(arguments[1], 7);
     }
+  // Every bad argument ends here: the message names it, the usage follows,
+  // and the exit code 2 tells a script that nothing was computed.
   catch (const std::invalid_argument &error)
     {
       std::cerr << "step-1: " << error.what() << ".\n"
                 << CommandLine::usage << std::endl;
       return 2;
     }
+  // The arguments are valid. --help prints the usage and stops here, before
+  // any output file is opened.
   if (mode == "--help")
     {
       std::cout << CommandLine::usage << std::endl;
@@ -1574,6 +1727,8 @@ main(int argc, char **argv)
       if (mode.empty() || mode == "block")
         {
           std::cout << "The block, 3 global refinements:" << std::endl;
+          // Part 1: the block with step-1's law, which satisfies the smallness
+          // condition: four load values, one solution each.
           const BlockData         block;
           StaticContactProblem<2> block_problem(block, 3);
           write_law(block.law, "law.csv");
@@ -1598,6 +1753,10 @@ main(int argc, char **argv)
         {
           std::cout << (mode.empty() ? "\n" : "")
                     << "The manufactured solution:" << std::endl;
+          // Part 2: the manufactured solution on successively refined meshes, a
+          // new problem on each, since the coarse mesh is refined globally. The
+          // table collects the errors and the constant $\lambda_1$ of each
+          // mesh.
           const ManufacturedData manufactured;
           ConvergenceTable       table;
           for (unsigned int refinements = 2; refinements < 2 + n_levels;
@@ -1627,9 +1786,13 @@ main(int argc, char **argv)
       if (mode.empty() || mode == "nonconvex")
         {
           std::cout << (mode.empty() ? "\n" : "");
+          // Part 3: the law that breaks the smallness condition.
           run_nonconvexity_study();
         }
     }
+  // A computation that fails (a Newton iteration that does not converge, a
+  // file that cannot be written) throws; as deal.II's tutorial programs do,
+  // we print the reason and return 1.
   catch (std::exception &exc)
     {
       std::cerr << "\nException: " << exc.what() << "\nAborting!" << std::endl;
