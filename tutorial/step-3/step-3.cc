@@ -48,6 +48,9 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 
+// And a few headers of the C++ standard library: containers for the
+// breakpoints and the contact nodes, streams for the output files, and
+// <limits> for the start of the power iteration.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -103,6 +106,12 @@ namespace Step3
       const std::vector<std::pair<double, double>> &breakpoints)
       : points(breakpoints)
     {
+      // A law is data the user types, so we check it where it enters the
+      // program, with AssertThrow (which stays active in Release mode, unlike
+      // Assert): the first breakpoint must be the jump at $r = 0$, and the
+      // penetrations must increase, or the segments below would overlap. A
+      // negative response would pull the body into the foundation, which no
+      // foundation does.
       AssertThrow(points[0].first == 0. && points[0].second >= 0,
                   ExcMessage("The first breakpoint must be at r = 0."));
       for (unsigned int k = 0; k + 1 < points.size(); ++k)
@@ -125,6 +134,9 @@ namespace Step3
     // $\xi(r)$ for $r > 0$, $p(r)$ and $p'(r)$ (at a breakpoint, the slope
     // to its right).
     double
+    // The response on segment $k$ is the straight line through its two
+    // breakpoints; beyond the last breakpoint the law stays at its last value,
+    // which is what "constant after" means in the introduction.
     response(const double r) const
     {
       const unsigned int k = segment(r);
@@ -148,6 +160,11 @@ namespace Step3
 
     // $j_\nu(r) = \int_0^r \xi$, exact segment by segment.
     double
+    // On each segment $\xi$ is linear, so the trapezoidal rule integrates it
+    // exactly: we add the trapezoids of the segments left of $r$, the last one
+    // cut at $r$. The energy of the line search, and so the choice of step
+    // lengths, rests on this number: an approximate potential would let the
+    // line search accept steps that raise the true $J_h$.
     potential(const double r) const
     {
       double integral = 0;
@@ -165,6 +182,11 @@ namespace Step3
 
   private:
     unsigned int
+    // A linear search: a law has a handful of breakpoints, and a binary search
+    // would gain nothing but lines. Note the $\le$: a breakpoint belongs to the
+    // segment to its right, so remainder_derivative() returns the slope to the
+    // right of a kink, the one a Newton step that moves into the foundation
+    // sees.
     segment(const double r) const
     {
       unsigned int k = 0;
@@ -207,11 +229,13 @@ namespace Step3
   // times) has to supply. An empty list is no memory.
   struct RelaxationTerm
   {
+    // The Lam\'e constants of one term of $R$ and its decay time.
     double mu, lambda, tau;
   };
 
   struct NormalMemoryTerm
   {
+    // The amplitude of one term of $b$ and its decay time.
     double b, tau;
   };
 
@@ -271,6 +295,10 @@ namespace Step3
 
     virtual ~ProblemData() = default;
 
+    // What a problem supplies, in the way deal.II's Function class asks for
+    // values: the coarse mesh with its boundary ids, and the two loads as
+    // functions of the point and the time. The material, the laws and the
+    // kernels are data members, the same for every problem of this program.
     virtual void
     make_coarse_grid(Triangulation<dim> &triangulation) const = 0;
 
@@ -348,6 +376,8 @@ namespace Step3
       return Tensor<1, 2>();
     }
 
+    // The load factor $P(t) = \min(0.25 + t, 1)$, static so that main() can
+    // write it to history.csv without a problem object.
     static double
     load_factor(const double t)
     {
@@ -362,6 +392,8 @@ namespace Step3
     {
       if (id != 3) // the top; the right side is free
         return Tensor<1, 2>();
+      // step-1's traction times the load factor: up left of $x = 1$, down right
+      // of it, growing shear, so that the block has all three normal branches.
       const double P = load_factor(t);
       return Tensor<1, 2>({0.5 * P * x[0] / 4, -2.5 * P * (x[0] - 1) / 3});
     }
@@ -431,6 +463,10 @@ namespace Step3
         triangulation, {1, 1}, Point<2>(0, 0), Point<2>(1, 1), true);
     }
 
+    // The time factor $\varphi(t) = 1 + t$ of the exact solution: the
+    // solution grows linearly in time, so that the memory sums have something
+    // to remember from the first load value on, and the convolutions with
+    // the exponentials have the closed form below.
     static double
     time_factor(const double t)
     {
@@ -523,6 +559,9 @@ namespace Step3
       const auto [mu_C, lambda_C] = effective_lame(t);
       const SymmetricTensor<2, 2> eps_U =
         symmetrize(exact_gradient(p, t)) / time_factor(t);
+      // The traction of the exact solution is that of the effective material
+      // $C(t)$: the instantaneous stress and the convolution of the kernel with
+      // the time factor, both applied to the strain of the spatial shape $U$.
       const Tensor<1, 2> sigma_nu =
         (2 * mu_C * eps_U +
          lambda_C * trace(eps_U) * unit_symmetric_tensor<2>()) *
@@ -574,13 +613,19 @@ namespace Step3
   template <int dim>
   struct ContactNode
   {
+    // step-1's members (position for the output, the dofs, $m_i$, $\nu_i$,
+    // $c_i$ and the branches) and the memory of the foundation at the node:
+    // memory_history holds the $H_{m,i}$, one per term of $b$, and
+    // memory_pressure their sum $N_i$ at the current load value.
     Point<dim>                               position;
     std::array<types::global_dof_index, dim> dofs;
     double                                   mass = 0;
     Tensor<1, dim>                           normal;
     double                                   c = 0;
-    NormalBranch        normal_branch          = NormalBranch::separating;
-    TangentialBranch    tangential_branch      = TangentialBranch::stick;
+    NormalBranch     normal_branch             = NormalBranch::separating;
+    TangentialBranch tangential_branch         = TangentialBranch::stick;
+    // (a history per node because the foundation's memory, with the nodal
+    // quadrature, is a sum of nodal values)
     std::vector<double> memory_history;
     double              memory_pressure = 0;
   };
@@ -614,6 +659,9 @@ namespace Step3
 
     // $\|u(t_n) - u_n\|_{L^2}$ and $\|\varepsilon(u(t_n) - u_n)\|_{L^2}$ at
     // the current load value.
+    // Exact is any class with exact_value() and exact_gradient(). A template
+    // rather than virtual functions of ProblemData, because only the
+    // manufactured solution has an exact solution to compare with.
     template <class Exact>
     std::pair<double, double>
     compute_errors(const Exact &exact) const;
@@ -654,6 +702,8 @@ namespace Step3
 
   private:
     void
+    // The steps of the constructor: the mesh, the degrees of freedom with the
+    // matrices and the contact nodes, and the two matrices of the memory.
     make_grid(const unsigned int n_refinements);
     void
     setup_system();
@@ -666,10 +716,16 @@ namespace Step3
     void
     assemble_memory_matrices();
     void
+    // What each load value does before it solves: turn the solutions of the
+    // load values before into the known part $F_n - b_n$ of its right-hand
+    // side.
     advance_memory();
     void
     solve();
 
+    // step-1's pieces of solve(), unchanged: the state of a node, the
+    // branches, the nonsmooth residual, the Newton system and the energy
+    // $J_n$ of the line search.
     struct NodeState;
     NodeState
     node_state(const ContactNode<dim> &node,
@@ -683,15 +739,24 @@ namespace Step3
     double
     energy(const Vector<double> &u) const;
 
+    // The data, the time step and the current load value; then step-1's mesh,
+    // element and numbering.
     const ProblemData<dim> &data;
-    const double            time_step;      // $k$
-    double                  time      = 0;  // $t_n$
-    int                     load_step = -1; // $n$, -1 before the first
+    const double            time_step; // $k$
+    double                  time = 0;  // $t_n$
+    // The time step $k$ and the current load value: run() checks that the
+    // load values come in order, since each needs the memory of those before.
+    int load_step = -1; // $n$, -1 before the first
 
+    // The finite element machinery of step-8: a mesh, $Q_1$ in each of the
+    // $d$ components, and the numbering of the degrees of freedom.
     Triangulation<dim> triangulation;
     FESystem<dim>      fe;
     DoFHandler<dim>    dof_handler;
 
+    // step-1's two sets of constraints: the clamped boundary alone, for $K$,
+    // $F_n$ and the memory matrices, and the clamped boundary with the held
+    // conditions of the current branches, for one Newton step.
     AffineConstraints<double> clamped_constraints;
     AffineConstraints<double> newton_constraints;
 
@@ -752,6 +817,9 @@ namespace Step3
   void
   MemoryContactProblem<dim>::setup_system()
   {
+    // The clamped boundary $\Gamma_1$ (boundary id 0) becomes constraints
+    // $u = 0$ on its degrees of freedom; assembling with them (as step-8
+    // does) keeps $K$ symmetric and positive definite on the remaining ones.
     dof_handler.distribute_dofs(fe);
 
     clamped_constraints.clear();
@@ -761,6 +829,11 @@ namespace Step3
                                              clamped_constraints);
     clamped_constraints.close();
 
+    // We build the pattern without the constraints: the Newton constraints
+    // change from iteration to iteration, and a pattern that ignores them has
+    // room for every set of them (each ties only the components of one node,
+    // which are coupled anyway). The two memory matrices couple the same
+    // degrees of freedom as $K$ and share the pattern.
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     DoFTools::make_sparsity_pattern(dof_handler, dsp);
     sparsity_pattern.copy_from(dsp);
@@ -807,6 +880,12 @@ namespace Step3
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary() && face->boundary_id() == BoundaryIds::contact)
           {
+            // The face integrals of $\varphi_i$ and $\varphi_i\nu$ with two
+            // Gauss points are exact for $Q_1$ on straight faces. Each
+            // component's shape function contributes to its own entry, so that
+            // mass and normal come out per degree of freedom: we read the mass
+            // at the node's first component and the normal's components at its
+            // components.
             fe_face_values.reinit(cell, face);
             cell->get_dof_indices(dofs);
             for (const unsigned int q :
@@ -823,6 +902,9 @@ namespace Step3
                 }
           }
 
+    // step-1's second pass: every vertex of $\Gamma_3$ once (the flags), the
+    // clamped corner left out (a degree of freedom carries one constraint
+    // only), and the memory of each node sized by the number of terms of $b$.
     contact_nodes.clear();
     std::vector<bool> seen(dof_handler.n_dofs(), false);
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -883,10 +965,17 @@ namespace Step3
     Vector<double>                       cell_rhs(n);
     std::vector<types::global_dof_index> dofs(n);
 
+    // step-1's assembly: the constraints are applied while assembling, so the
+    // matrix and the vector come out condensed. The load is that of $t_n$;
+    // the memory is not a cell integral here, advance_memory() subtracts it
+    // afterwards.
     matrix = 0;
     rhs    = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
+        // The cell matrix is step-8's: $\sigma(\varphi_i) = B\varepsilon(
+        // \varphi_i)$ against $\varepsilon(\varphi_j)$, with the stress law of
+        // the problem data, so that a different material changes one function.
         cell_matrix = 0;
         cell_rhs    = 0;
         fe_values.reinit(cell);
@@ -972,6 +1061,11 @@ namespace Step3
                             update_gradients | update_JxW_values);
     FullMatrix<double>                   shear(n, n), volumetric(n, n);
     std::vector<types::global_dof_index> dofs(n);
+    // The two forms are integrated cell by cell like $K$: $a_\mu$ is the
+    // shear part $2\,\varepsilon(\varphi_i):\varepsilon(\varphi_j)$ and
+    // $a_\lambda$ the volumetric part $\mathrm{div}\,\varphi_i\,\mathrm{div}
+    // \,\varphi_j$, so that $K = \mu A_\mu + \lambda A_\lambda$ and any
+    // isotropic kernel is a combination of the two.
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         fe_values.reinit(cell);
@@ -1058,11 +1152,16 @@ namespace Step3
         S_lambda.add(data.relaxation[m].lambda, h);
       }
 
+    // The memory stress as a nodal force vector: $A_\mu S_\mu + A_\lambda
+    // S_\lambda$, two products with the fixed matrices. memory_load collects
+    // it together with the foundation's part below.
     Vector<double> product(dof_handler.n_dofs());
     shear_matrix.vmult(memory_load, S_mu);
     volumetric_matrix.vmult(product, S_lambda);
     memory_load += product;
 
+    // The foundation's memory, node by node, from the normal displacement of
+    // the last load value: the solution still holds $u_{n-1}$ here.
     for (ContactNode<dim> &node : contact_nodes)
       {
         double u_nu = 0;
@@ -1082,6 +1181,8 @@ namespace Step3
           memory_load(node.dofs[c]) +=
             node.mass * node.memory_pressure * node.normal[c];
       }
+    // load held $F_n$ (run() assembled it just before); now it is $b_n$, the
+    // only change the memory makes to the problem of load value $n$.
     load -= memory_load;
   }
 
@@ -1166,7 +1267,9 @@ namespace Step3
     unsigned int n_changed = 0;
     for (ContactNode<dim> &node : contact_nodes)
       {
-        const NodeState        m  = node_state(node, residual);
+        const NodeState m = node_state(node, residual);
+        // The thresholds are the kinks of the projections: a value exactly on a
+        // kink goes to the held branch, where the projection is the identity.
         const NormalBranch     nb = m.q_nu < 0 ? NormalBranch::separating :
                                     m.q_nu <= data.law.jump() ?
                                                  NormalBranch::stick :
@@ -1190,6 +1293,9 @@ namespace Step3
   MemoryContactProblem<dim>::nonsmooth_residual(
     const Vector<double> &residual) const
   {
+    // Both parts are forces, so we add their squares: a mixed norm in which
+    // neither the equilibrium nor the contact conditions can hide behind the
+    // other.
     Vector<double> free_part(residual);
     double         contact_part = 0;
     for (const ContactNode<dim> &node : contact_nodes)
@@ -1232,10 +1338,17 @@ namespace Step3
         const bool normal_held = node.normal_branch == NormalBranch::stick;
         const bool tangent_held =
           node.tangential_branch == TangentialBranch::stick;
+        // A held condition is solved for one component, and we divide by that
+        // component of the normal: we pick the largest, $|\nu_k| \ge
+        // 1/\sqrt{d}$, so that the division is always well conditioned,
+        // whatever the shape of $\Gamma_3$.
         unsigned int k = 0;
         for (unsigned int c = 1; c < dim; ++c)
           if (std::abs(node.normal[c]) > std::abs(node.normal[k]))
             k = c;
+        // Three cases: both directions held fix the node; the normal alone ties
+        // component $k$ to the others, so that the displacement stays in the
+        // tangent plane; the tangent alone keeps the node on its normal line.
         if (normal_held && tangent_held) // x_i = 0
           for (unsigned int c = 0; c < dim; ++c)
             newton_constraints.add_line(node.dofs[c]);
@@ -1270,6 +1383,10 @@ namespace Step3
     newton_constraints.condense(memory_part);
     newton_rhs -= memory_part;
 
+    // Then step-1's nodal terms of the free branches: the law's force at the
+    // iterate and its derivative, added through the same constraints. The
+    // memory pressure is not among them: it is a known force of this load
+    // value, already inside $b_n$.
     FullMatrix<double>                   node_matrix(dim, dim);
     Vector<double>                       node_rhs(dim);
     std::vector<types::global_dof_index> node_dofs(dim);
@@ -1286,6 +1403,9 @@ namespace Step3
             L += node.mass * data.law.remainder_derivative(m.u_nu) *
                  outer_product(nu, nu);
           }
+        // (The tangential part has no remainder: Tresca's bound does not depend
+        // on the displacement, and the memory acts on the normal direction
+        // only.)
         if (node.tangential_branch == TangentialBranch::slip)
           {
             const double         F_b    = data.friction_bound;
@@ -1325,6 +1445,9 @@ namespace Step3
   double
   MemoryContactProblem<dim>::energy(const Vector<double> &u) const
   {
+    // matrix_norm_square() is $u\cdot Ku$, and load is $b_n$, the load minus
+    // the memory: the memory enters the energy as a linear term. The clamped
+    // rows of $K$ are decoupled and $u$ vanishes there, so they add nothing.
     double J = 0.5 * stiffness_matrix.matrix_norm_square(u) - load * u;
     for (const ContactNode<dim> &node : contact_nodes)
       {
@@ -1355,6 +1478,9 @@ namespace Step3
     newton_iterations = 0;
     for (unsigned int iteration = 0;; ++iteration)
       {
+        // The residual of the current iterate decides everything else: the
+        // branches, the stopping test and the right-hand side of the Newton
+        // step.
         stiffness_matrix.vmult(residual, solution);
         residual -= load;
         const unsigned int n_changed = update_active_set(residual);
@@ -1366,6 +1492,10 @@ namespace Step3
                                "converge in 50 iterations."));
 
         assemble_newton_system(residual);
+        // The matrix changes with the branches, so we factorise it in every
+        // iteration. On the meshes of this program UMFPACK does this quickly,
+        // and a direct solver keeps the iteration count a property of the
+        // nonsmooth method alone, with no inner tolerance to tune.
         SparseDirectUMFPACK direct_solver;
         direct_solver.initialize(newton_matrix);
         Vector<double> trial(newton_rhs);
@@ -1383,6 +1513,8 @@ namespace Step3
         // since a tiny step would leave the branches as they are and stall
         // the iteration, while the full step moves to the branches the next
         // update_active_set() corrects.
+        // The trial vector holds the new iterate $u + d$; the direction is the
+        // difference, and the loop below tries fractions of it.
         Vector<double> direction(trial);
         direction -= solution;
         const double J0    = energy(solution);
@@ -1438,6 +1570,9 @@ namespace Step3
   double
   MemoryContactProblem<dim>::smallness_constant() const
   {
+    // We never assemble $N$ as a matrix: it is diagonal in the nodes, and
+    // applying it is one loop over the contact nodes, which project $v$ onto
+    // their normals and weight it with $m_i$.
     const auto apply_N = [&](const Vector<double> &v, Vector<double> &Nv) {
       Nv = 0;
       for (const ContactNode<dim> &node : contact_nodes)
@@ -1450,6 +1585,9 @@ namespace Step3
         }
     };
 
+    // The clamped degrees of freedom have a nonzero diagonal entry in the
+    // condensed $K$ (deal.II puts one there when it condenses), so $K$ is
+    // invertible, and the power iteration never sees them: $N$ vanishes there.
     SparseDirectUMFPACK K_inverse;
     K_inverse.initialize(stiffness_matrix);
     Vector<double> x(dof_handler.n_dofs()), Nx(x), Kx(x);
@@ -1457,6 +1595,10 @@ namespace Step3
       for (unsigned int c = 0; c < dim; ++c)
         x(node.dofs[c]) = node.normal[c];
 
+    // The power iteration. Each step applies $K^{-1}N$ and normalises; the
+    // iterate approaches the eigenvector of the largest eigenvalue of $K^{-1}N$
+    // at the rate of the ratio of the two largest, and the cap of 1000 steps
+    // guards against a pair too close to separate.
     double lambda = std::numeric_limits<double>::max();
     for (unsigned int iteration = 0; iteration < 1000; ++iteration)
       {
@@ -1498,14 +1640,14 @@ namespace Step3
 
   // @sect4{MemoryContactProblem::output_results}
 
-  // step-1's three files per load value, numbered by $n$: solution-NN.vtu,
-  // contact-NN.csv and displacement-NN.txt (the nodal displacement in full
+  // step-1's four files per load value, numbered by $n$: solution-NN.vtu,
+  // contact-NN.csv, displacement-NN.txt (the nodal displacement in full
   // precision, which tests/tutorial/step_3_vs_hemicontact.sh compares with
-  // the full program's). The contact table gains the column N, the
-  // foundation's memory pressure $N_{n,i}$, and its column minus_sigma_nu
-  // is the whole normal traction $s + p(u_\nu) + N$: the laws' part, read
-  // from the residual, plus the memory's. The terminal line adds the
-  // largest penetration and the largest $N$.
+  // the full program's) and body-NN.csv (the picture of the body). The contact
+  // table gains the column N, the foundation's memory pressure $N_{n,i}$, and
+  // its column minus_sigma_nu is the whole normal traction $s + p(u_\nu) + N$:
+  // the laws' part, read from the residual, plus the memory's. The terminal
+  // line adds the largest penetration and the largest $N$.
   template <int dim>
   void
   MemoryContactProblem<dim>::output_results(const unsigned int n) const
@@ -1514,6 +1656,8 @@ namespace Step3
     std::snprintf(suffix, sizeof(suffix), "%02u", n);
 
     DataOut<dim> data_out;
+    // The VTU file, as in step-8: the $d$ components together form one vector
+    // field, so that ParaView can warp the mesh by it.
     data_out.attach_dof_handler(dof_handler);
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(dim,
@@ -1526,6 +1670,10 @@ namespace Step3
     std::ofstream vtu(std::string("solution-") + suffix + ".vtu");
     data_out.write_vtu(vtu);
 
+    // The contact quantities come from the residual at the solution, as in
+    // solve(); the residual is now $Ku - b_n$, so the traction read from it is
+    // the laws' part, and we add the memory pressure $N$ for the whole normal
+    // traction.
     Vector<double> residual(dof_handler.n_dofs());
     stiffness_matrix.vmult(residual, solution);
     residual -= load;
@@ -1551,6 +1699,9 @@ namespace Step3
         largest_N    = std::max(largest_N, node.memory_pressure);
       }
 
+    // The nodal file uses printf's %.17g, which prints a double so that it
+    // reads back bit for bit: the comparison with the full program at
+    // $10^{-10}$ must not be limited by the output.
     std::FILE *nodal =
       std::fopen((std::string("displacement-") + suffix + ".txt").c_str(), "w");
     AssertThrow(nodal != nullptr, ExcIO());
@@ -1596,6 +1747,8 @@ namespace Step3
                  << static_cast<int>(node->second->tangential_branch) << '\n';
         }
 
+    // The line the results page shows for every load value; printf keeps its
+    // columns aligned, which makes the evolution readable down the page.
     std::printf("t = %.3f: %u Newton, normal sep/stick/pen %u/%u/%u, "
                 "tangential stick/slip %u/%u, max u_nu %.4f, max N %.4f\n",
                 time,
@@ -1618,6 +1771,9 @@ namespace Step3
   std::pair<double, double>
   MemoryContactProblem<dim>::compute_errors(const Exact &exact) const
   {
+    // Four Gauss points per direction: two more than the assembly, since the
+    // exact solution is a cubic in $x$ and its quadrature error must stay
+    // below the discretisation error on the finest mesh.
     const QGauss<dim>                    quadrature(4);
     FEValues<dim>                        fe_values(fe,
                             quadrature,
@@ -1657,6 +1813,9 @@ namespace Step3
   MemoryContactProblem<dim>::difference(
     const MemoryContactProblem<dim> &other) const
   {
+    // The same number of unknowns is a necessary condition for the same mesh,
+    // and the cheap one to check; the convergence study builds both problems
+    // from the same coarse mesh and number of refinements.
     AssertThrow(other.n_dofs() == n_dofs(),
                 ExcMessage("The two problems must share their mesh."));
     Vector<double> d(solution);
@@ -1670,6 +1829,8 @@ namespace Step3
     double                               D_H2 = 0, D_V2 = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
+        // The difference is a discrete field, so the 2-point rule integrates
+        // its square exactly on these rectangles.
         fe_values.reinit(cell);
         fe_values[displacement].get_function_values(d, values);
         fe_values[displacement].get_function_symmetric_gradients(d, strains);
@@ -1685,26 +1846,12 @@ namespace Step3
 
 // @sect3{The command line}
 
-// step-1's command line, with the same rules: every argument is checked
-// before anything is computed, and a bad one stops the program with a
-// one-paragraph message and the exit code 2 (1 is kept for a run that
-// fails, e.g. a Newton iteration that does not converge). std::stoi()
-// would accept "3x" as 3, and a negative number read into an unsigned int
-// becomes 4294967295 levels, a run that never ends.
+// step-1's command line and its idiom: one table of the modes, one check of
+// the number of levels, and every argument checked before anything is
+// computed. A bad one ends the program with a message that quotes it, the
+// usage and the exit code 2 (1 is kept for a computation that fails).
 namespace CommandLine
 {
-  constexpr int exit_bad_arguments = 2;
-
-  // Each level of the convergence study halves $h$ and $k$ together: four
-  // times the unknowns, twice the load values, and with the direct solver
-  // UMFPACK about ten times the time of the level before. Five levels end
-  // at $h = k = 1/64$ with 8,450 unknowns and 65 load values: measured,
-  // 42 s of CPU time and 0.19 GB for the whole study on one core
-  // (doc/results.md, "Running it"). A sixth level would take about ten
-  // times as long: the program refuses it rather than let a typo occupy
-  // the machine.
-  constexpr unsigned int max_levels = 5;
-
   const char *const usage =
     "usage: step-3                        the block, then 4 levels of the\n"
     "                                     manufactured solution\n"
@@ -1714,29 +1861,24 @@ namespace CommandLine
     "       step-3 --help                 this text\n"
     "exit codes: 0 done, 1 the computation failed, 2 a bad argument";
 
-  // The error of a bad command line: its message names the argument.
-  struct BadArguments : public std::runtime_error
-  {
-    using std::runtime_error::runtime_error;
-  };
-
-  // A number of levels: decimal digits only (no sign, no blanks, nothing
-  // after the number), from 1 to max_levels; at most three digits keep the
-  // conversion far from overflow.
+  // A number of levels: one to three decimal digits and nothing else, from
+  // 1 to @p max (std::stoi() would take "3x" as 3, and a negative number
+  // read into an unsigned int asks for four billion levels). Each level
+  // halves $h$ and $k$ together: four times the unknowns, twice the load
+  // values, and with UMFPACK about ten times the time of the level before.
+  // Five levels (8,450 unknowns, 65 load values) took 42 s and 0.19 GB; a
+  // sixth would take about ten times as long, so we refuse it.
   unsigned int
-  parse_levels(const std::string &text)
+  parse_levels(const std::string &text, const unsigned int max)
   {
-    const bool digits_only =
+    const bool digits =
       !text.empty() && text.size() <= 3 &&
-      std::all_of(text.begin(), text.end(), [](const char c) {
-        return c >= '0' && c <= '9';
-      });
-    const unsigned int levels = digits_only ? std::stoul(text) : 0;
-    if (!digits_only || levels < 1 || levels > max_levels)
-      throw BadArguments(
-        "the number of levels must be a whole number "
-        "from 1 to " +
-        std::to_string(max_levels) + ", not '" + text +
+      text.find_first_not_of("0123456789") == std::string::npos;
+    const unsigned int levels = digits ? std::stoul(text) : 0;
+    if (levels < 1 || levels > max)
+      throw std::invalid_argument(
+        "the number of levels must be a whole number from 1 to " +
+        std::to_string(max) + ", not '" + text +
         "' (the five levels take 42 s, a sixth about ten times more)");
     return levels;
   }
@@ -1756,50 +1898,58 @@ int
 main(int argc, char **argv)
 {
   using namespace Step3;
-  bool         run_block = true, run_convergence = true;
+  const std::vector<std::string> arguments(argv + 1, argv + argc);
+  const std::string              mode = arguments.empty() ? "" : arguments[0];
+  // The default of the convergence study: four levels, $h = k = 1/4$ to
+  // $1/32$, a few seconds.
   unsigned int n_levels = 4;
   try
     {
-      const std::vector<std::string> arguments(argv + 1, argv + argc);
-      const std::string mode = arguments.empty() ? "" : arguments[0];
-      const bool        help = mode == "--help" || mode == "-h";
-      if (help)
-        run_block = run_convergence = false;
-      else if (mode == "block")
-        run_convergence = false;
-      else if (mode == "convergence")
-        run_block = false;
-      else if (!arguments.empty())
-        throw CommandLine::BadArguments("unknown mode '" + mode +
-                                        "' (the modes are block and "
-                                        "convergence)");
-      // how many arguments the mode takes, itself included
-      const std::size_t n_allowed = mode.empty()              ? 0 :
-                                    (help || mode == "block") ? 1 :
-                                                                2;
-      if (arguments.size() > n_allowed)
-        throw CommandLine::BadArguments("too many arguments: '" +
-                                        arguments[n_allowed] + "' after '" +
-                                        arguments[n_allowed - 1] + "'");
-      if (help)
-        {
-          std::cout << CommandLine::usage << std::endl;
-          return 0;
-        }
-      if (mode == "convergence" && arguments.size() == 2)
-        n_levels = CommandLine::parse_levels(arguments[1]);
+      // Each mode and the number of arguments it takes, itself included;
+      // the empty mode is the run without arguments.
+      // One table says which modes exist and how many arguments each takes,
+      // the mode included; the empty mode is the run without arguments. Two
+      // checks against it, and the check of the number of levels, are the
+      // whole validation.
+      const std::map<std::string, std::size_t> modes = {{"", 0},
+                                                        {"block", 1},
+                                                        {"convergence", 2},
+                                                        {"--help", 1}};
+      if (arguments.size() > 0 && (mode.empty() || modes.count(mode) == 0))
+        throw std::invalid_argument("unknown mode '" + mode + "' (the modes " +
+                                    "are block and convergence)");
+      if (arguments.size() > modes.at(mode))
+        throw std::invalid_argument("too many arguments: '" +
+                                    arguments[modes.at(mode)] + "' after '" +
+                                    arguments[modes.at(mode) - 1] + "'");
+      if (arguments.size() == 2)
+        n_levels = CommandLine::parse_levels(arguments[1], 5);
     }
-  catch (const CommandLine::BadArguments &error)
+  // Every bad argument ends here: the message names it, the usage follows,
+  // and the exit code 2 tells a script that nothing was computed.
+  catch (const std::invalid_argument &error)
     {
       std::cerr << "step-3: " << error.what() << ".\n"
                 << CommandLine::usage << std::endl;
-      return CommandLine::exit_bad_arguments;
+      return 2;
     }
+  // The arguments are valid. --help prints the usage and stops here, before
+  // any output file is opened.
+  if (mode == "--help")
+    {
+      std::cout << CommandLine::usage << std::endl;
+      return 0;
+    }
+  const bool run_block       = mode.empty() || mode == "block";
+  const bool run_convergence = mode.empty() || mode == "convergence";
 
   try
     {
       if (run_block)
         {
+          // The block's time step $k = 1/8$: 17 load values up to $T = 2$,
+          // enough to follow the rise of the load and the slow decay of the
+          // memory.
           const double            k = 0.125;
           const BlockData         block, elastic_block(/*with_memory=*/false);
           MemoryContactProblem<2> problem(block, 3, k),
@@ -1822,6 +1972,9 @@ main(int argc, char **argv)
           history << "t,load_factor,u_nu_memory,N_memory,u_nu_elastic\n";
           for (unsigned int n = 0; n < problem.n_load_values(); ++n)
             {
+              // Both blocks solve load value $n$; only the one with memory
+              // writes its files and its line, the other gives history.csv its
+              // column without memory.
               problem.run(n);
               elastic.run(n);
               std::cout << "  ";
@@ -1837,12 +1990,18 @@ main(int argc, char **argv)
         {
           std::cout << (run_block ? "\n" : "")
                     << "The manufactured solution, k = h:" << std::endl;
+          // The manufactured solution on successively refined meshes, with $k =
+          // h$, a new problem per level: each runs the whole history $t = 0,
+          // \dots, 1$ and records the largest errors over the load values.
           const ManufacturedData manufactured;
           ConvergenceTable       table;
           for (unsigned int level = 0; level < n_levels; ++level)
             {
-              const unsigned int      refinements = 2 + level;
-              const double            k           = 1. / (1u << refinements);
+              const unsigned int refinements = 2 + level;
+              // $k = h$: the memory rule is of first order in $k$, the mesh in
+              // $h$ (in the energy norm), so refining both together should give
+              // first order in $E_V$.
+              const double            k = 1. / (1u << refinements);
               MemoryContactProblem<2> problem(manufactured, refinements, k);
               double                  E_H = 0, E_V = 0;
               unsigned int            newton = 0;
@@ -1857,6 +2016,9 @@ main(int argc, char **argv)
                   E_H                   = std::max(E_H, e_H);
                   E_V                   = std::max(E_V, e_V);
                 }
+              // One row per level: the mesh, the number of load values, the
+              // mean Newton iterations per load value, and the largest errors
+              // over the history.
               table.add_value("1/h", 1u << refinements);
               table.add_value("dofs", problem.n_dofs());
               table.add_value("loads", problem.n_load_values());
@@ -1888,6 +2050,9 @@ main(int argc, char **argv)
           // The mesh is coarse on purpose: the difference measures the
           // rule in time on whatever mesh, and 578 unknowns keep the
           // finest $k$ cheap (129 load values at five levels).
+          // We keep the previous problem alive, since its solution at $T$ is
+          // what the next one is compared with; unique_ptr hands it on without
+          // a copy.
           ConvergenceTable                         k_table;
           std::unique_ptr<MemoryContactProblem<2>> coarser;
           for (unsigned int level = 0; level <= n_levels; ++level)
@@ -1918,6 +2083,9 @@ main(int argc, char **argv)
           k_table.write_text(std::cout);
         }
     }
+  // A computation that fails (a Newton iteration that does not converge, a
+  // file that cannot be written) throws; as deal.II's tutorial programs do,
+  // we print the reason and return 1.
   catch (std::exception &exc)
     {
       std::cerr << "\nException: " << exc.what() << "\nAborting!" << std::endl;
