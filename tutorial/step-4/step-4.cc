@@ -45,6 +45,9 @@
 #include <deal.II/numerics/solution_transfer.h>
 #include <deal.II/numerics/vector_tools.h>
 
+// And a few headers of the C++ standard library: containers for the
+// breakpoints and the contact nodes, streams for the output files, and
+// <limits> for the start of the power iteration.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -82,6 +85,12 @@ namespace Step4
       const std::vector<std::pair<double, double>> &breakpoints)
       : points(breakpoints)
     {
+      // A law is data the user types, so we check it where it enters the
+      // program, with AssertThrow (which stays active in Release mode, unlike
+      // Assert): the first breakpoint must be the jump at $r = 0$, and the
+      // penetrations must increase, or the segments below would overlap. A
+      // negative response would pull the body into the foundation, which no
+      // foundation does.
       AssertThrow(points[0].first == 0. && points[0].second >= 0,
                   ExcMessage("The first breakpoint must be at r = 0."));
       for (unsigned int k = 0; k + 1 < points.size(); ++k)
@@ -105,6 +114,9 @@ namespace Step4
     // The response $\xi(r)$ for $r > 0$, the remainder $p(r)$ and its
     // derivative $p'(r)$ (at a breakpoint, the slope to its right).
     double
+    // The response on segment $k$ is the straight line through its two
+    // breakpoints; beyond the last breakpoint the law stays at its last value,
+    // which is what "constant after" means in the introduction.
     response(const double r) const
     {
       const unsigned int k = segment(r);
@@ -128,6 +140,11 @@ namespace Step4
 
     // The potential $j_\nu(r) = \int_0^r \xi$, exact segment by segment.
     double
+    // On each segment $\xi$ is linear, so the trapezoidal rule integrates it
+    // exactly: we add the trapezoids of the segments left of $r$, the last one
+    // cut at $r$. The energy of the line search, and so the choice of step
+    // lengths, rests on this number: an approximate potential would let the
+    // line search accept steps that raise the true $J_h$.
     potential(const double r) const
     {
       double integral = 0;
@@ -147,6 +164,11 @@ namespace Step4
     // The segment $[r_k, r_{k+1})$ that holds $r$ (the last $k$ beyond the
     // last breakpoint), and its slope.
     unsigned int
+    // A linear search: a law has a handful of breakpoints, and a binary search
+    // would gain nothing but lines. Note the $\le$: a breakpoint belongs to the
+    // segment to its right, so remainder_derivative() returns the slope to the
+    // right of a kink, the one a Newton step that moves into the foundation
+    // sees.
     segment(const double r) const
     {
       unsigned int k = 0;
@@ -198,6 +220,11 @@ namespace Step4
 
     virtual ~ProblemData() = default;
 
+    // What a problem supplies, in the way deal.II's Function class asks for
+    // values: the coarse mesh with its boundary ids, and the two loads as
+    // functions of the point. The material and the law are data members; the
+    // stress and its divergence below are the two things the solver and the
+    // estimator ask of the material.
     virtual void
     make_coarse_grid(Triangulation<dim> &triangulation) const = 0;
 
@@ -256,6 +283,8 @@ namespace Step4
   {
   public:
     LShapeData()
+      // step-1's material, friction bound and law, in step-1's units: only the
+      // body and its load are new.
       : ProblemData<2>(/*mu=*/100, /*lambda=*/150, /*F_b=*/0.6)
     {}
 
@@ -289,6 +318,9 @@ namespace Step4
              const Tensor<1, 2> &,
              const types::boundary_id id) const override
     {
+      // Only the top of the left arm is loaded; the traction is constant, so
+      // the load vector is exact with any quadrature, and the jump of the
+      // traction at the ends of the loaded edge is a singular point of its own.
       if (id != BoundaryIds::loaded)
         return Tensor<1, 2>();
       return Tensor<1, 2>({load[0], load[1]});
@@ -325,6 +357,11 @@ namespace Step4
   template <int dim>
   struct ContactNode
   {
+    // The position serves the output only (the x column of contact-NN.csv);
+    // the dofs are the node's $d$ degrees of freedom, in the order of the
+    // components; mass is $m_i$; normal is $\nu_i$; c is $c_i$. The branches
+    // start as "separating" and "stick": the first update_active_set(), before
+    // any Newton step, replaces them by those of the start.
     Point<dim>                               position;
     std::array<types::global_dof_index, dim> dofs;
     double                                   mass = 0;
@@ -345,6 +382,9 @@ namespace Step4
   // can be compared with the error, whatever the units of the moduli.
   struct ErrorEstimate
   {
+    // One vector per part, one entry per active cell, and the factor $s$;
+    // the parts are kept squared, so that adding them cell by cell gives
+    // $\eta_K^2$ and adding a part over the cells its share of $\eta^2$.
     Vector<double> interior, jumps, neumann, contact;
     double         scale = 1;
 
@@ -393,17 +433,26 @@ namespace Step4
                            const unsigned int      n_refinements);
 
     void
+    // step-1's active set Newton method on the current mesh, from the current
+    // solution (zero on the first mesh, the moved solution on the later ones).
     solve();
 
     ErrorEstimate
+    // The residual estimator of the introduction: the four parts of every
+    // cell's $\eta_K^2$, from the current solution.
     estimate_error() const;
 
     // Refine the cells with the largest indicators, a @p fraction of all
     // cells (the introduction, "The adaptive loop").
     void
+    // (after this call the solution lives on the new mesh, and the system is
+    // set up anew)
     refine_mesh(const Vector<float> &indicators, const double fraction);
 
     void
+    // The files of one cycle, numbered by @p cycle: the VTU for ParaView, the
+    // nodal displacement for the comparison with the full program, and the
+    // cells for the picture of the adapted meshes.
     output_results(const unsigned int cycle, const ErrorEstimate &e) const;
 
     // $J_h(u_h)$, the energy at the solution: the error measure of the
@@ -449,6 +498,9 @@ namespace Step4
                     SparseMatrix<double>            &matrix,
                     Vector<double>                  &rhs) const;
     void
+    // $R = Ku - F$ with the hanging nodes handled (see its definition): every
+    // function that needs the residual calls this one, so that the solver,
+    // the estimator and the output read the same contact forces.
     compute_residual(const Vector<double> &u, Vector<double> &residual) const;
 
     // step-1's pieces of solve().
@@ -507,6 +559,9 @@ namespace Step4
     , fe(FE_Q<dim>(1), dim)
     , dof_handler(triangulation)
   {
+    // We build the starting mesh here, with no make_grid(): the later meshes
+    // come from refine_mesh(), not from the data. The solution is sized once;
+    // refine_mesh() gives it the size of each new mesh.
     data.make_coarse_grid(triangulation);
     triangulation.refine_global(n_refinements);
     dof_handler.distribute_dofs(fe);
@@ -537,6 +592,10 @@ namespace Step4
                                              constraints);
     constraints.close();
 
+    // keep_constrained_dofs = true keeps the rows and columns of the
+    // constrained degrees of freedom in the pattern:
+    // distribute_local_to_global() puts their diagonal entry there, which keeps
+    // the condensed matrices invertible.
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     DoFTools::make_sparsity_pattern(dof_handler,
                                     dsp,
@@ -546,6 +605,8 @@ namespace Step4
     stiffness_matrix.reinit(sparsity_pattern);
     newton_matrix.reinit(sparsity_pattern);
 
+    // The solution is not touched here: on a refined mesh it holds the moved
+    // solution, the start of the next Newton iteration.
     load.reinit(dof_handler.n_dofs());
     newton_rhs.reinit(dof_handler.n_dofs());
 
@@ -589,6 +650,12 @@ namespace Step4
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary() && face->boundary_id() == BoundaryIds::contact)
           {
+            // The face integrals of $\varphi_i$ and $\varphi_i\nu$ with two
+            // Gauss points are exact for $Q_1$ on straight faces. Each
+            // component's shape function contributes to its own entry, so that
+            // mass and normal come out per degree of freedom: we read the mass
+            // at the node's first component and the normal's components at its
+            // components.
             fe_face_values.reinit(cell, face);
             cell_mass   = 0;
             cell_normal = 0;
@@ -637,6 +704,8 @@ namespace Step4
                   diagonal += stiffness_matrix.diag_element(node.dofs[c]) / dim;
                 }
               node.normal /= node.normal.norm();
+              // $c_i$ from the condensed diagonal: next to a hanging node it
+              // holds the hanging node's share too, as the condensed $K$ does.
               node.c =
                 std::max(diagonal / node.mass, 2 * data.law.steepest_rise);
               contact_nodes.push_back(node);
@@ -661,6 +730,9 @@ namespace Step4
     SparseMatrix<double>            &matrix,
     Vector<double>                  &rhs) const
   {
+    // Three evaluators: the gradients for the stiffness (2 points per
+    // direction), and the values for the load on the cells and on the faces
+    // (3 points).
     const FEValuesExtractors::Vector     displacement(0);
     const unsigned int                   n = fe.n_dofs_per_cell();
     FEValues<dim>                        fe_values(fe,
@@ -687,6 +759,9 @@ namespace Step4
     rhs    = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
+        // The cell matrix is step-8's: $\sigma(\varphi_i) = B\varepsilon(
+        // \varphi_i)$ against $\varepsilon(\varphi_j)$, with the stress law of
+        // the problem data, so that a different material changes one function.
         cell_matrix = 0;
         cell_rhs    = 0;
         fe_values.reinit(cell);
@@ -711,6 +786,10 @@ namespace Step4
                 f0 * fe_load[displacement].value(i, q) * fe_load.JxW(q);
           }
         for (const auto &face : cell->face_iterators())
+          // Every boundary face that is not clamped carries a traction: $f_2$
+          // on the loaded part of $\Gamma_2$, zero on its free part and on
+          // $\Gamma_3$, where the contact forces come from the laws alone. One
+          // function covers all, the same that the estimator evaluates.
           if (face->at_boundary() &&
               face->boundary_id() != BoundaryIds::clamped)
             {
@@ -771,6 +850,10 @@ namespace Step4
   //   C_\tau = \lambda - P_{|\cdot|\le F_b}(\lambda + c\,u_\tau).
   // @f]
   template <int dim>
+  // The members, in the order of the formulas: the normal displacement and
+  // the slip, the two multipliers, and the arguments of the projections.
+  // They change with every iterate and are recomputed from the residual
+  // when needed, never stored.
   struct AdaptiveContactProblem<dim>::NodeState
   {
     double         u_nu;
@@ -808,6 +891,7 @@ namespace Step4
   // The projection onto the friction disk $|\lambda| \le F_b$.
   template <int dim>
   Tensor<1, dim>
+  // (inside the disk $q$ itself, outside its radial projection)
   project_on_disk(const Tensor<1, dim> &q, const double F_b)
   {
     return q.norm() <= F_b ? q : F_b / q.norm() * q;
@@ -825,7 +909,9 @@ namespace Step4
     unsigned int n_changed = 0;
     for (ContactNode<dim> &node : contact_nodes)
       {
-        const NodeState        m  = node_state(node, residual);
+        const NodeState m = node_state(node, residual);
+        // The thresholds are the kinks of the projections: a value exactly on a
+        // kink goes to the held branch, where the projection is the identity.
         const NormalBranch     nb = m.q_nu < 0 ? NormalBranch::separating :
                                     m.q_nu <= data.law.jump() ?
                                                  NormalBranch::stick :
@@ -843,6 +929,8 @@ namespace Step4
 
   template <int dim>
   std::array<unsigned int, 5>
+  // The branch counts for the line printed after the adaptive loop: three
+  // normal branches, then two tangential ones.
   AdaptiveContactProblem<dim>::branch_counts() const
   {
     std::array<unsigned int, 5> counts = {{0, 0, 0, 0, 0}};
@@ -865,6 +953,9 @@ namespace Step4
   {
     // At a contact node the residual is not expected to vanish (it is the
     // contact force); there the complementarity functions take its place.
+    // Both parts are forces, so we add their squares: a mixed norm in which
+    // neither the equilibrium nor the contact conditions can hide behind the
+    // other.
     Vector<double> free_part(residual);
     double         contact_part = 0;
     for (const ContactNode<dim> &node : contact_nodes)
@@ -950,7 +1041,9 @@ namespace Step4
     std::vector<types::global_dof_index> node_dofs(dim);
     for (const ContactNode<dim> &node : contact_nodes)
       {
-        const NodeState      m  = node_state(node, residual);
+        const NodeState m = node_state(node, residual);
+        // The force $f$ and the derivative $L$ of the node's free branches; a
+        // held direction contributes nothing, its constraint removes it.
         const Tensor<1, dim> nu = node.normal;
         Tensor<2, dim>       L;
         Tensor<1, dim>       f;
@@ -1000,10 +1093,14 @@ namespace Step4
   double
   AdaptiveContactProblem<dim>::energy(const Vector<double> &u) const
   {
+    // As in compute_residual(): the quadratic part from the free values, the
+    // contact part from the nodal values, which are free by construction.
     Vector<double> free_values(u);
     constraints.set_zero(free_values);
     double J = 0.5 * stiffness_matrix.matrix_norm_square(free_values) -
                load * free_values;
+    // The nodal quadrature of the boundary terms: $m_i$ weighs each node's
+    // potential and friction.
     for (const ContactNode<dim> &node : contact_nodes)
       {
         Tensor<1, dim> v;
@@ -1046,6 +1143,9 @@ namespace Step4
     newton_iterations = 0;
     for (unsigned int iteration = 0;; ++iteration)
       {
+        // The residual of the current iterate decides everything else: the
+        // branches, the stopping test and the right-hand side of the Newton
+        // step.
         compute_residual(solution, residual);
         const unsigned int n_changed = update_active_set(residual);
         const double       r         = nonsmooth_residual(residual);
@@ -1055,7 +1155,13 @@ namespace Step4
                     ExcMessage("The active set Newton method did not "
                                "converge in 50 iterations."));
 
+        // The Newton system on the current branches, with the constraints of
+        // $V^h$ and the held conditions of the contact nodes together.
         assemble_newton_system(residual);
+        // The matrix changes with the branches, so we factorise it in every
+        // iteration. On the meshes of this program UMFPACK does this quickly,
+        // and a direct solver keeps the iteration count a property of the
+        // nonsmooth method alone, with no inner tolerance to tune.
         SparseDirectUMFPACK direct_solver;
         direct_solver.initialize(newton_matrix);
         Vector<double> trial(newton_rhs);
@@ -1069,6 +1175,8 @@ namespace Step4
         // of either sign whose last digits are noise. The trial points
         // satisfy the constraints of $V^h$ (distribute() above), and so does
         // every point on the segment to them.
+        // The trial vector holds the new iterate $u + d$; the direction is the
+        // difference, and the loop below tries fractions of it.
         Vector<double> direction(trial);
         direction -= solution;
         const double J0    = energy(solution);
@@ -1126,6 +1234,8 @@ namespace Step4
     // $\Gamma_3$ the mean of its parents, by the hanging node constraints
     // (distribute()), so that $\xi_h$ is the continuous interpolant along
     // $\Gamma_3$. The nodes of $\Gamma_1$ keep $\xi = 0$.
+    // (The contact tractions are the laws' forces at the solution, read from
+    // the residual exactly as the solver reads them.)
     Vector<double> residual(dof_handler.n_dofs()), xi(dof_handler.n_dofs());
     compute_residual(solution, residual);
     for (const ContactNode<dim> &node : contact_nodes)
@@ -1133,19 +1243,27 @@ namespace Step4
         xi(node.dofs[c]) = -residual(node.dofs[c]) / node.mass;
     constraints.distribute(xi);
 
+    // Two Gauss points per direction integrate every square of the estimate
+    // exactly on the rectangles of these meshes: with $f_0 = 0$ the cell
+    // residual $\mathrm{div}\,\sigma_h$ is constant on a cell (the only second
+    // derivative of a $Q_1$ field is $\partial_x\partial_y$), and the face
+    // residuals are linear along a face.
     const QGauss<dim>     cell_quadrature(2);
     const QGauss<dim - 1> face_quadrature(2);
     const UpdateFlags     face_flags =
       update_gradients | update_normal_vectors | update_JxW_values;
-    FEValues<dim>        fe_values(fe,
+    FEValues<dim>     fe_values(fe,
                             cell_quadrature,
                             update_hessians | update_quadrature_points |
                               update_JxW_values);
-    FEFaceValues<dim>    fe_face(fe,
+    FEFaceValues<dim> fe_face(fe,
                               face_quadrature,
                               face_flags | update_values |
                                 update_quadrature_points);
-    FEFaceValues<dim>    fe_face_other(fe, face_quadrature, update_gradients);
+    FEFaceValues<dim> fe_face_other(fe, face_quadrature, update_gradients);
+    // A face between a cell and two finer neighbours is integrated from the
+    // coarse side, one child face at a time: FESubfaceValues gives the coarse
+    // cell's values on a child face, FEFaceValues the fine cell's on the same.
     FESubfaceValues<dim> fe_subface(fe, face_quadrature, face_flags);
     const FEValuesExtractors::Vector v(0);
     const unsigned int               n_f = face_quadrature.size();
@@ -1159,6 +1277,8 @@ namespace Step4
     ErrorEstimate e;
     for (Vector<double> *part : {&e.interior, &e.jumps, &e.neumann, &e.contact})
       part->reinit(triangulation.n_active_cells());
+    // The factor $s = 1/(2\mu)$ of the introduction, which puts $\eta$ in the
+    // energy norm; it multiplies the parts only when they are summed.
     e.scale = 1. / (2 * data.mu);
 
     // $\int_E |[\sigma_h n]|^2$ from the gradients on the two sides, with
@@ -1180,6 +1300,9 @@ namespace Step4
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
+        // Each cell adds its own terms: the cell residual, its boundary faces,
+        // and its share of each interior face's jump, from whichever side the
+        // face is integrated.
         const unsigned int i = cell->active_cell_index();
 
         // The cell residual $h_K^2\|f_0 + \mathrm{div}\,\sigma_h\|_K^2$.
@@ -1208,6 +1331,9 @@ namespace Step4
                 // that the estimate sees the load that was solved for.
                 const bool on_contact =
                   face->boundary_id() == BoundaryIds::contact;
+                // The gradients of the solution on the face and the contact
+                // traction
+                // $\xi_h$, interpolated along $\Gamma_3$.
                 fe_face.reinit(cell, f);
                 fe_face[v].get_function_gradients(solution, gradients);
                 if (on_contact)
@@ -1240,6 +1366,9 @@ namespace Step4
                   e.jumps[i] += half;
                   e.jumps[child->active_cell_index()] += half;
                 }
+            // The three cases of an interior face: a finer neighbour (above), a
+            // neighbour of the same level, and a coarser one, whose face this
+            // cell's face is a child of; every face is integrated exactly once.
             else if (!cell->neighbor_is_coarser(f) &&
                      cell->neighbor(f)->active_cell_index() > i)
               // A neighbour of the same level, visited from the lower index
@@ -1283,6 +1412,9 @@ namespace Step4
     // The flags first; prepare_coarsening_and_refinement() then adds the
     // flags that the smoothing needs, and SolutionTransfer must see the
     // final flags, so it is prepared after that call.
+    // A fixed fraction of the cells, not a fraction of $\sum_K\eta_K^2$
+    // (Dörfler's marking): each cycle then grows the mesh by about the same
+    // factor, which makes the cycles of the table comparable.
     GridRefinement::refine_and_coarsen_fixed_number(triangulation,
                                                     indicators,
                                                     fraction,
@@ -1290,7 +1422,11 @@ namespace Step4
     SolutionTransfer<dim> transfer(dof_handler);
     triangulation.prepare_coarsening_and_refinement();
     transfer.prepare_for_coarsening_and_refinement(solution);
+    // After this call the cells are new and the old degrees of freedom are
+    // gone; only the transfer remembers the old solution.
     triangulation.execute_coarsening_and_refinement();
+    // The new numbering; the transfer keeps the old one, with which it reads
+    // the old vector.
     dof_handler.distribute_dofs(fe);
     // The old vector is read by the transfer while the new one is written:
     // two vectors, the old one replaced afterwards.
@@ -1316,6 +1452,9 @@ namespace Step4
   double
   AdaptiveContactProblem<dim>::smallness_constant() const
   {
+    // We never assemble $N$ as a matrix: it is diagonal in the nodes, and
+    // applying it is one loop over the contact nodes, which project $x$ onto
+    // their normals and weight it with $m_i$.
     const auto apply_N = [&](const Vector<double> &x, Vector<double> &Nx) {
       Nx = 0;
       for (const ContactNode<dim> &node : contact_nodes)
@@ -1338,6 +1477,10 @@ namespace Step4
       for (unsigned int c = 0; c < dim; ++c)
         x(node.dofs[c]) = node.normal[c];
 
+    // The power iteration. Each step applies $K^{-1}N$ and normalises; the
+    // iterate approaches the eigenvector of the largest eigenvalue of $K^{-1}N$
+    // at the rate of the ratio of the two largest, and the cap of 1000 steps
+    // guards against a pair too close to separate.
     double lambda = std::numeric_limits<double>::max();
     for (unsigned int iteration = 0; iteration < 1000; ++iteration)
       {
@@ -1346,6 +1489,8 @@ namespace Step4
         x /= x.l2_norm();
         stiffness_matrix.vmult(Kx, x);
         apply_N(x, Nx);
+        // The Rayleigh quotient of the current iterate, which approaches
+        // $\lambda_1$ from above.
         const double quotient = (x * Kx) / (x * Nx);
         if (std::abs(quotient - lambda) <= 1e-12 * quotient)
           return quotient;
@@ -1372,11 +1517,16 @@ namespace Step4
     char suffix[16];
     std::snprintf(suffix, sizeof(suffix), "%02u", cycle);
 
+    // Two cell fields beside the displacement: $\eta_K$, to see where the
+    // estimate is large, and the refinement level, to see where the marking
+    // put the cells (colour the mesh by either in ParaView).
     const Vector<float> eta = e.cell_values();
     Vector<float>       level(triangulation.n_active_cells());
     for (const auto &cell : triangulation.active_cell_iterators())
       level[cell->active_cell_index()] = cell->level();
     DataOut<dim> data_out;
+    // The VTU file, as in step-8: the $d$ components together form one vector
+    // field, so that ParaView can warp the mesh by it.
     data_out.attach_dof_handler(dof_handler);
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(dim,
@@ -1398,6 +1548,7 @@ namespace Step4
     std::FILE *nodal =
       std::fopen((std::string("displacement-") + suffix + ".txt").c_str(), "w");
     AssertThrow(nodal != nullptr, ExcIO());
+    // Each vertex once, although it belongs to up to four cells.
     std::vector<bool> written(triangulation.n_vertices(), false);
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
@@ -1417,8 +1568,10 @@ namespace Step4
     // counterclockwise order (0, 1, 3, 2 in deal.II's lexicographic
     // numbering of a quadrilateral's vertices) with the displacement there
     // and, at a contact node, its two branches (-1 elsewhere), as step-1
-    // writes them to body-NN.csv. A hanging
-    // vertex is drawn with its constrained value, as in displacement-NN.txt.
+    // writes them to body-NN.csv. A hanging vertex is drawn with its
+    // constrained value, as in displacement-NN.txt.
+    // The branches are looked up by the first degree of freedom of a vertex,
+    // which is what a contact node and a cell's vertex share.
     std::map<types::global_dof_index, const ContactNode<dim> *> node_at;
     for (const ContactNode<dim> &node : contact_nodes)
       node_at[node.dofs[0]] = &node;
@@ -1446,6 +1599,9 @@ namespace Step4
 
   // One row of a study: the mesh, the Newton iterations, the energy
   // $J_h(u_h)$ and the estimate with its four parts.
+  // A row is what the tables and the CSV files need: the sizes, the Newton
+  // iterations, the energy from which $E_J$ is computed later (the
+  // reference is not known until the loop is done), and the estimate.
   struct CycleResult
   {
     unsigned int cells, dofs, newton;
@@ -1460,6 +1616,8 @@ namespace Step4
   CycleResult
   solve_and_estimate(AdaptiveContactProblem<dim> &problem, ErrorEstimate &e)
   {
+    // The order of step-6: solve, then estimate on the same mesh; the caller
+    // writes the files and refines.
     problem.solve();
     e = problem.estimate_error();
     return {problem.n_cells(),
@@ -1481,6 +1639,9 @@ namespace Step4
   std::vector<CycleResult>
   adaptive_study(const LShapeData &data, const unsigned int n_cycles)
   {
+    // The L refined twice, 48 cells: coarse enough that the first cycles show
+    // where the estimate sends the refinement, and the same starting mesh as
+    // the uniform study, so that both tables begin with the same row.
     AdaptiveContactProblem<2> problem(data, 2);
     const double              lambda_1 = problem.smallness_constant();
     std::cout << "alpha_nu = " << data.law.alpha << ", lambda_1 = " << lambda_1
@@ -1495,10 +1656,13 @@ namespace Step4
       {
         ErrorEstimate e;
         results.push_back(solve_and_estimate(problem, e));
+        // The files of every cycle, the last and finest included.
         problem.output_results(cycle, e);
         if (cycle + 1 < n_cycles)
           problem.refine_mesh(e.cell_values(), 0.2);
       }
+    // The branches of the last mesh, the finest of the loop: the line that
+    // tells the reader which contact conditions the adapted meshes resolve.
     const auto counts = problem.branch_counts();
     std::cout << "cycle " << n_cycles - 1
               << ": normal separating/stick/penetrating " << counts[0] << '/'
@@ -1515,6 +1679,9 @@ namespace Step4
     std::vector<CycleResult> results;
     for (unsigned int level = 0; level < n_levels; ++level)
       {
+        // A new problem per level, started from zero, as step-1's convergence
+        // study does: the uniform levels are independent of one another, and
+        // their Newton counts show what a start from zero costs.
         AdaptiveContactProblem<2> problem(data, 2 + level);
         ErrorEstimate             e;
         results.push_back(solve_and_estimate(problem, e));
@@ -1549,6 +1716,8 @@ namespace Step4
             const double                    J_reference,
             const std::string              &filename)
   {
+    // Seventeen digits, as in displacement-NN.txt: the test against the full
+    // program compares the energies and estimates at $10^{-10}$.
     std::ofstream csv(filename);
     AssertThrow(csv, ExcIO());
     csv << "cycle,cells,dofs,newton,energy,error,estimate,estimate_interior,"
@@ -1591,6 +1760,8 @@ namespace Step4
                  "effectivity\n";
     for (unsigned int k = 0; k < rows.size(); ++k)
       {
+        // The row and its error; the error is undefined (NaN) where the energy
+        // is not above the reference's, and then printed as "undefined".
         const CycleResult &r = rows[k];
         const double       E = energy_error(r.energy, J_reference);
         // The rates against the row before; the first row has none, and
@@ -1617,6 +1788,7 @@ namespace Step4
             std::snprintf(error, sizeof(error), "%9.3e", E);
             std::snprintf(effectivity, sizeof(effectivity), "%5.2f", r.eta / E);
           }
+        // One line per row, in the fixed columns the results page shows.
         char line[160];
         std::snprintf(line,
                       sizeof(line),
@@ -1654,21 +1826,12 @@ namespace Step4
 
 // @sect3{The command line}
 
-// As in step-1: every argument is checked before anything is computed,
-// and a bad one stops the program with a message naming it and the exit
+// step-1's command-line idiom: one table of the modes, one check of the
+// number, every argument checked before anything is computed. A bad one
+// ends the program with a message that quotes it, the usage and the exit
 // code 2 (1 is kept for a computation that fails).
 namespace CommandLine
 {
-  constexpr int exit_bad_arguments = 2;
-
-  // The number of cycles of the mode "adaptive": each refines a fifth of
-  // the cells, about 1.6 times the unknowns of the cycle before, and with
-  // the direct solver about twice the time. 16 cycles end at 121,872
-  // unknowns after about 20 s of CPU time (doc/results.md, "Running it");
-  // the cap keeps a typo from running for an hour or exhausting the
-  // memory.
-  constexpr unsigned int max_cycles = 16;
-
   const char *const usage =
     "usage: step-4                    the reference solution, then the\n"
     "                                 uniform and the adaptive tables\n"
@@ -1677,26 +1840,23 @@ namespace CommandLine
     "       step-4 --help             this text\n"
     "exit codes: 0 done, 1 the computation failed, 2 a bad argument";
 
-  struct BadArguments : public std::runtime_error
-  {
-    using std::runtime_error::runtime_error;
-  };
-
-  // Decimal digits only, from 1 to max_cycles: "-1", "+2", "abc", "3x"
-  // and " 3" are refused alike.
+  // A number of cycles: one to three decimal digits and nothing else, from
+  // 1 to @p max, so that "-1", "+2", "abc", "3x" and " 3" are refused
+  // alike. Each cycle refines a fifth of the cells, about 1.6 times the
+  // unknowns of the cycle before and, with the direct solver, about twice
+  // the time: 16 cycles end at 121,872 unknowns after about 20 s, and the
+  // cap keeps a typo from running for an hour or exhausting the memory.
   unsigned int
-  parse_cycles(const std::string &text)
+  parse_cycles(const std::string &text, const unsigned int max)
   {
-    const bool digits_only =
+    const bool digits =
       !text.empty() && text.size() <= 3 &&
-      std::all_of(text.begin(), text.end(), [](const char c) {
-        return c >= '0' && c <= '9';
-      });
-    const unsigned int cycles = digits_only ? std::stoul(text) : 0;
-    if (!digits_only || cycles < 1 || cycles > max_cycles)
-      throw BadArguments("the number of cycles must be a whole number "
-                         "from 1 to " +
-                         std::to_string(max_cycles) + ", not '" + text + "'");
+      text.find_first_not_of("0123456789") == std::string::npos;
+    const unsigned int cycles = digits ? std::stoul(text) : 0;
+    if (cycles < 1 || cycles > max)
+      throw std::invalid_argument(
+        "the number of cycles must be a whole number from 1 to " +
+        std::to_string(max) + ", not '" + text + "'");
     return cycles;
   }
 } // namespace CommandLine
@@ -1713,46 +1873,51 @@ int
 main(int argc, char **argv)
 {
   using namespace Step4;
-  unsigned int n_cycles = 0; // 0: the default run
+  const std::vector<std::string> arguments(argv + 1, argv + argc);
+  const std::string              mode = arguments.empty() ? "" : arguments[0];
+  unsigned int                   n_cycles = 0; // 0: the default run
   try
     {
-      const std::vector<std::string> arguments(argv + 1, argv + argc);
-      const std::string mode = arguments.empty() ? "" : arguments[0];
-      if (mode == "--help" || mode == "-h")
-        {
-          if (arguments.size() > 1)
-            throw CommandLine::BadArguments("too many arguments: '" +
-                                            arguments[1] + "' after '" + mode +
-                                            "'");
-          std::cout << CommandLine::usage << std::endl;
-          return 0;
-        }
+      // Each mode and the number of arguments it takes, itself included;
+      // the empty mode is the run without arguments.
+      const std::map<std::string, std::size_t> modes = {{"", 0},
+                                                        {"adaptive", 2},
+                                                        {"--help", 1}};
+      if (arguments.size() > 0 && (mode.empty() || modes.count(mode) == 0))
+        throw std::invalid_argument("unknown mode '" + mode +
+                                    "' (the mode is adaptive)");
+      if (arguments.size() > modes.at(mode))
+        throw std::invalid_argument("too many arguments: '" +
+                                    arguments[modes.at(mode)] + "' after '" +
+                                    arguments[modes.at(mode) - 1] + "'");
+      // The mode "adaptive" needs its number: without one, the check
+      // refuses the empty text.
       if (mode == "adaptive")
-        {
-          if (arguments.size() != 2)
-            throw CommandLine::BadArguments(
-              arguments.size() < 2 ?
-                "the mode 'adaptive' needs a number of cycles" :
-                "too many arguments: '" + arguments[2] + "' after '" +
-                  arguments[1] + "'");
-          n_cycles = CommandLine::parse_cycles(arguments[1]);
-        }
-      // No mode at all is the default run; anything else is a typo that
-      // should not start a computation of some seconds.
-      else if (!arguments.empty())
-        throw CommandLine::BadArguments("unknown mode '" + mode +
-                                        "' (the mode is adaptive)");
+        n_cycles =
+          CommandLine::parse_cycles(arguments.size() == 2 ? arguments[1] : "",
+                                    16);
     }
-  catch (const CommandLine::BadArguments &error)
+  // Every bad argument ends here: the message names it, the usage follows,
+  // and the exit code 2 tells a script that nothing was computed.
+  catch (const std::invalid_argument &error)
     {
       std::cerr << "step-4: " << error.what() << ".\n"
                 << CommandLine::usage << std::endl;
-      return CommandLine::exit_bad_arguments;
+      return 2;
+    }
+  // The arguments are valid. --help prints the usage and stops here, before
+  // any output file is opened.
+  if (mode == "--help")
+    {
+      std::cout << CommandLine::usage << std::endl;
+      return 0;
     }
 
   try
     {
+      // One problem for both modes: the L-shaped body with its load.
       const LShapeData data;
+      // The mode "adaptive CYCLES": the loop alone, no reference, no errors.
       if (n_cycles > 0)
         {
           // The loop alone, its rows in adaptive.csv without errors.
@@ -1760,6 +1925,8 @@ main(int argc, char **argv)
           write_csv(rows,
                     std::numeric_limits<double>::quiet_NaN(),
                     "adaptive.csv");
+          // One line per cycle, with the energy in full and the estimate: what
+          // the comparison with the full program reads.
           std::printf("cycle cells  dofs Newton    J_h        eta\n");
           for (unsigned int k = 0; k < rows.size(); ++k)
             std::printf("%5u %5u %5u %6u %.6e %9.3e\n",
@@ -1784,7 +1951,8 @@ main(int argc, char **argv)
       Timer                          timer;
       const unsigned int             n_table_cycles = 9, n_reference = 15;
       const std::vector<CycleResult> all = adaptive_study(data, n_reference);
-      const double                   J_reference = all.back().energy;
+      // The energy of the last cycle, on the finest mesh, is the reference.
+      const double J_reference = all.back().energy;
       // The reference's own estimate is printed too: against the estimate
       // of the table's last cycle it says how much smaller the reference's
       // error is.
@@ -1793,13 +1961,22 @@ main(int argc, char **argv)
                 << J_reference << std::setprecision(4)
                 << ", eta = " << all.back().eta << std::setprecision(6)
                 << std::endl;
+      // The adaptive table is the first nine cycles of the same run: the loop
+      // runs once, and its first cycles are measured against its last.
       const std::vector<CycleResult> adaptive(all.begin(),
                                               all.begin() + n_table_cycles);
+      // Four uniform levels, up to 6,402 unknowns: about as many as cycle 8 of
+      // the adaptive table, so that the two tables end at a comparable size.
       const std::vector<CycleResult> uniform = uniform_study(data, 4);
+      // Both tables on the terminal, with the rates against the unknowns, and
+      // then in full precision in the CSV files, for the figure and for the
+      // comparison with the full program.
       print_table("Uniform refinement (E_J, eta, rates against the dofs)",
                   "level",
                   uniform,
                   J_reference);
+      // (the adaptive rows are measured with the same reference and the same
+      // rates as the uniform ones, so that the two tables compare line by line)
       print_table("Adaptive refinement (E_J, eta, rates against the dofs)",
                   "cycle",
                   adaptive,
@@ -1837,6 +2014,9 @@ main(int argc, char **argv)
           return 1;
         }
     }
+  // A computation that fails (a Newton iteration that does not converge, a
+  // file that cannot be written) throws; as deal.II's tutorial programs do,
+  // we print the reason and return 1.
   catch (std::exception &exc)
     {
       std::cerr << "\nException: " << exc.what() << "\nAborting!" << std::endl;
