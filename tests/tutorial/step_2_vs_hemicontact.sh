@@ -18,7 +18,8 @@ rm -rf "$work"; mkdir -p "$work"; cd "$work"
 } > block.prm
 "$hemicontact" block.prm > hemicontact.log 2>&1 ||
   { echo "FAIL: hemicontact"; cat hemicontact.log; exit 1; }
-"$step2" block step-2 > step-2.log 2>&1 ||
+mkdir step-2
+(cd step-2 && "$step2" block > ../step-2.log 2>&1) ||
   { echo "FAIL: step-2"; cat step-2.log; exit 1; }
 /usr/bin/python3 "$src/tests/tutorial/step_2_vs_hemicontact.py" \
   hemicontact step-2 step-2.log

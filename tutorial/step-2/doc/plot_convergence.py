@@ -12,10 +12,10 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 lines = open(sys.argv[1]).read().splitlines()
-header = next(i for i, l in enumerate(lines) if l.split()[:2] == ["level", "h"])
+header = next(i for i, l in enumerate(lines) if l.split()[:2] == ["1/h", "dofs"])
 rows = [l.split() for l in lines[header + 1:] if l.strip()]
-h = np.array([float(r[1]) for r in rows])
-# columns: level h k dofs E_H [rate] E_V [rate] E_u [rate] Newton; the
+h = np.array([1 / float(r[0]) for r in rows])
+# columns: 1/h dofs Newton lambda_1 E_H [rate] E_V [rate] E_u [rate]; the
 # first row has '-' in place of each rate
 errors = {"E_H": [], "E_V": [], "E_u": []}
 for r in rows:
@@ -25,7 +25,7 @@ fig, ax = plt.subplots(figsize=(5, 4))
 for name, values in errors.items():
     ax.loglog(h, values, "o-", label=name)
 ax.loglog(h, errors["E_V"][0] * h / h[0], "k--", label="order 1")
-ax.set_xlabel("h (k = h/√2)")
+ax.set_xlabel("h (k = h)")
 ax.set_ylabel("error")
 ax.set_title("step-2: coupled refinement")
 ax.legend()
