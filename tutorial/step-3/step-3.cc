@@ -1671,7 +1671,7 @@ namespace Step3
     data_out.write_vtu(vtu);
 
     // The contact quantities come from the residual at the solution, as in
-    // solve(); the residual is now $Ku - b_n$, so the traction read from it is
+    // solve(); the residual is $Ku - b_n$ here, so the traction read from it is
     // the laws' part, and we add the memory pressure $N$ for the whole normal
     // traction.
     Vector<double> residual(dof_handler.n_dofs());
