@@ -732,7 +732,7 @@ namespace Step1
   // (they do not move). The constant $c_i$ of the complementarity
   // functions is the mean diagonal entry of $K$ at the node over $m_i$,
   // and at least twice the law's steepest rise. Why a floor: on a free
-  // segment the multiplier $s$ falls by $p'$ as $u_\nu$ grows, so $q =
+  // segment the multiplier $s_\nu$ falls by $p'$ as $u_\nu$ grows, so $q =
   // s + c\,u_\nu$ grows along the law only if $c > p'$; below that an
   // iterate could be held on the wrong branch. The diagonal of $K$ makes
   // $c_i u_\nu$ and $s$ forces of the same size, so that neither term of
@@ -920,17 +920,18 @@ namespace Step1
   // From the residual $R = K u - F_n$ the nodal contact force is
   // $G_i = -R_i$ (the force the laws must supply for equilibrium), and
   // the traction is $G_i/m_i$. Split into normal and tangential parts, the
-  // multipliers of the convex parts of the laws are
+  // multipliers of the convex parts of the laws are (the members s and
+  // lambda of NodeState; $\lambda$ alone stays Lam\'e's constant)
   // @f[
-  //   s = G_i\cdot\nu/m_i - p(u_\nu),\qquad
-  //   \lambda = G_{i,\tau}/m_i
+  //   s_\nu = G_i\cdot\nu/m_i - p(u_\nu),\qquad
+  //   s_\tau = G_{i,\tau}/m_i
   // @f]
   // (Tresca friction has no remainder), and the complementarity functions
   // (the introduction shows why they vanish exactly where the laws hold)
   // are
   // @f[
-  //   C_\nu = s - P_{[0,a]}(s + c\,u_\nu),\qquad
-  //   C_\tau = \lambda - P_{|\cdot|\le F_b}(\lambda + c\,u_\tau).
+  //   C_\nu = s_\nu - P_{[0,a]}(s_\nu + c\,u_\nu),\qquad
+  //   C_\tau = s_\tau - P_{|\cdot|\le F_b}(s_\tau + c\,u_\tau).
   // @f]
   // Both vanish exactly at a solution of the nodal contact conditions.
   template <int dim>
@@ -973,7 +974,7 @@ namespace Step1
     return m;
   }
 
-  // The projection onto the friction disk $|\lambda| \le F_b$.
+  // The projection onto the friction disk $|s_\tau| \le F_b$.
   template <int dim>
   Tensor<1, dim>
   project_on_disk(const Tensor<1, dim> &q, const double F_b)
@@ -1062,7 +1063,7 @@ namespace Step1
   //   F_b c /(|q_\tau| - F_b)\,(I - \nu\otimes\nu - d\otimes d)$, which
   //   vanishes in 2D (the denominator is kept above $|q_\tau|/100$ for
   //   nodes that barely slip). The term $T_i u_\tau$: the Newton step of
-  //   $C_\tau = 0$ gives the new multiplier $\lambda = F_b d + T_i x_i /
+  //   $C_\tau = 0$ gives the new multiplier $s_\tau = F_b d + T_i x_i /
   //   m_i$, whose part across $d$ grows with the new slip $x_i$. Written as
   //   $f_i + L_i(x_i - u_i)$, like the other forces, it needs $f_i = m_i
   //   F_b d + T_i u_i$, and $T_i u_i = T_i u_\tau$ since $T_i\nu = 0$.
@@ -1084,10 +1085,9 @@ namespace Step1
         const bool tangent_held =
           node.tangential_branch == TangentialBranch::stick;
         // A held condition is solved for one component, and we divide by that
-        // component of the normal: we pick the largest, $|\nu_k| \ge 1/\sqrt
-        // d$, so that the division is always well conditioned, whatever the
-        // shape of
-        // $\Gamma_3$.
+        // component of the normal: we pick the largest, $|\nu_k| \ge
+        // 1/\sqrt{d}$, so that the division is always well conditioned,
+        // whatever the shape of $\Gamma_3$.
         unsigned int k = 0;
         for (unsigned int c = 1; c < dim; ++c)
           if (std::abs(node.normal[c]) > std::abs(node.normal[k]))
@@ -1427,9 +1427,9 @@ namespace Step1
       }
 
     // The contact quantities come from the residual at the solution, as in
-    // solve(): the column minus_sigma_nu is $s + p(u_\nu)$, the whole
+    // solve(): the column minus_sigma_nu is $s_\nu + p(u_\nu)$, the whole
     // normal traction, and sigma_tau the first component of the
-    // multiplier $\lambda$ (the tangent of the bottom is $e_x$).
+    // multiplier $s_\tau$ (the tangent of the bottom is $e_x$).
     // (The residual at the solution is the contact force that balances the
     // body; dividing by $m_i$ turns it into the traction a pressure sensor in
     // the foundation would read.)
