@@ -1,0 +1,1612 @@
+/* ---------------------------------------------------------------------
+ *
+ * hemicontact tutorial, step-5: static elastic contact with a rigid
+ * foundation (Signorini's conditions) and Coulomb friction, solved by
+ * step-1's primal-dual active set method inside a fixed-point iteration on
+ * the friction bound. This is the contact problem of deal.II's step-41
+ * (an obstacle) and step-42 (elastoplastic contact), with friction, and
+ * step-1 plus two ideas: a wall instead of a compliant foundation, and a
+ * friction bound proportional to the contact pressure.
+ *
+ * The introduction (doc/intro.md) states the model and lists every change
+ * against step-1.cc; the results (doc/results.md) show what this program
+ * prints. The program depends on deal.II alone, and it computes the same
+ * discrete solution as the full program hemicontact (problem/class =
+ * static, the normal law signorini, friction bound = mu*pos(p_nu)):
+ * tests/tutorial/step_5_vs_hemicontact.sh compares the two.
+ *
+ * ---------------------------------------------------------------------
+ */
+
+// @sect3{Include files}
+
+// The usual deal.II headers of a serial program (step-8 for elasticity,
+// step-7 for the convergence table, step-41 for an active set).
+#include <deal.II/base/convergence_table.h>
+#include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/vector_tools.h>
+
+// And a few headers of the C++ standard library: containers for the
+// breakpoints and the contact nodes, streams for the output files, and
+// <limits> for the start of the power iteration.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace Step5
+{
+  using namespace dealii;
+
+  // @sect3{The normal law}
+
+  // step-1's foundation was compliant: it answered a penetration $u_\nu >
+  // 0$ with a finite response. Here the foundation is rigid, and the body
+  // may touch it but not enter it: Signorini's conditions
+  // @f[
+  //   u_\nu \le 0,\qquad \sigma_\nu \le 0,\qquad \sigma_\nu u_\nu = 0 .
+  // @f]
+  // They are a normal law too, $-\sigma_\nu \in \partial I(u_\nu)$, with the
+  // indicator $I$ of $(-\infty, 0]$ as the potential: $\partial I(r) = 0$ for
+  // $r < 0$ and $[0, \infty)$ at $r = 0$. That is step-1's law with an
+  // infinite jump $a = \infty$ and nothing after it. We give the class the
+  // members of step-1's law that the rest of the program uses, so that
+  // nothing else sees the change:
+  // - jump() is $+\infty$: the projection $P_{[0,a]}$ of the
+  //   complementarity function becomes $P_{[0,\infty)}$, $q_\nu \le a$
+  //   always holds, and no node is ever penetrating;
+  // - remainder(), remainder_derivative(): zero, the law has no smooth
+  //   part;
+  // - potential(): zero. The true potential is $I$, infinite for $r > 0$;
+  //   the line search evaluates $J$ without it, since the active set, not
+  //   the energy, keeps the nodes out of the wall (an infinite energy
+  //   would defeat the line search's comparison $J \le J_0 + \dots$);
+  // - alpha and steepest_rise: zero. The law is convex ($\alpha_\nu = 0$),
+  //   and the smallness condition always holds.
+  //
+  // step-1's response(), breakpoints() and write_law() have no use here.
+  class SignoriniLaw
+  {
+  public:
+    // The jump $a = \infty$ of the subdifferential at $r = 0$.
+    double
+    jump() const
+    {
+      return std::numeric_limits<double>::infinity();
+    }
+
+    double
+    remainder(const double) const
+    {
+      return 0.;
+    }
+
+    double
+    remainder_derivative(const double) const
+    {
+      return 0.;
+    }
+
+    double
+    potential(const double) const
+    {
+      return 0.;
+    }
+
+    double alpha = 0, steepest_rise = 0;
+  };
+
+  // @sect3{The problem data}
+
+  // The boundary is split by boundary id: $\Gamma_1$ (clamped) has id 0,
+  // $\Gamma_3$ (contact) id 2, and every other boundary is $\Gamma_2$
+  // (traction). GridGenerator::subdivided_hyper_rectangle() with
+  // colorize = true numbers a rectangle's sides left 0, right 1, bottom 2,
+  // top 3: the left side clamped, the bottom in contact.
+  namespace BoundaryIds
+  {
+    constexpr types::boundary_id clamped = 0;
+    constexpr types::boundary_id contact = 2;
+  } // namespace BoundaryIds
+
+  // What defines one problem: the material (Lamé constants of $B$), the
+  // laws, the loads $f_0$ in $\Omega$ and $f_2$ on $\Gamma_2$ at the load
+  // parameter $t$, and, in a manufactured solution, a traction $f_3$ on
+  // $\Gamma_3$ and the exact solution. Where step-1 had the friction bound
+  // $F_b$, a number, we have Coulomb's friction coefficient $\mathcal F$: the
+  // bound at a node is $F_b = \mathcal F\,p_\nu$, with the contact pressure
+  // $p_\nu = -\sigma_\nu \ge 0$ there. The law is the wall, the same for
+  // every problem.
+  template <int dim>
+  class ProblemData
+  {
+  public:
+    ProblemData(const double mu, const double lambda, const double coulomb)
+      : mu(mu)
+      , lambda(lambda)
+      , friction_coefficient(coulomb)
+    {}
+
+    virtual ~ProblemData() = default;
+
+    // What a problem supplies, in the way deal.II's Function class asks for
+    // values: the coarse mesh with its boundary ids, and the two loads as
+    // functions of the point and the load parameter. Everything the solver
+    // needs beyond these (the stress, the laws) is the same for every problem
+    // of this program and lives in this base class.
+    virtual void
+    make_coarse_grid(Triangulation<dim> &triangulation) const = 0;
+
+    // $f_0(x, t)$ and the prescribed traction at $x$ on the boundary
+    // with id @p id and outward normal @p normal ($f_2$, or $f_3$ on
+    // $\Gamma_3$).
+    virtual Tensor<1, dim>
+    body_force(const Point<dim> &x, const double t) const = 0;
+
+    virtual Tensor<1, dim>
+    traction(const Point<dim>        &x,
+             const Tensor<1, dim>    &normal,
+             const types::boundary_id id,
+             const double             t) const = 0;
+
+    // $\sigma = B\varepsilon = 2\mu\varepsilon + \lambda\,\mathrm{tr}
+    // (\varepsilon) I$.
+    SymmetricTensor<2, dim>
+    stress(const SymmetricTensor<2, dim> &eps) const
+    {
+      return 2 * mu * eps + lambda * trace(eps) * unit_symmetric_tensor<dim>();
+    }
+
+    const double       mu, lambda;
+    const double       friction_coefficient;
+    const SignoriniLaw law;
+  };
+
+  // @sect4{The block}
+
+  // step-1's block, which the program shares with the full code (the test
+  // tests/tutorial/step_5_vs_hemicontact.sh runs it in both): a block
+  // $[0,4]\times[0,1]$ clamped on the left, free on the right, on a
+  // foundation along its bottom, loaded on its top by a traction that
+  // pulls up left of $x = 1$, presses down right of it and shears, all
+  // growing with $t$. The material and the loads are step-1's; the
+  // foundation is now rigid, and the friction coefficient is $\mathcal F =
+  // 0.3$.
+  class BlockData : public ProblemData<2>
+  {
+  public:
+    BlockData()
+      : ProblemData<2>(/*mu=*/100, /*lambda=*/150, /*coulomb=*/0.3)
+    {}
+
+    void
+    make_coarse_grid(Triangulation<2> &triangulation) const override
+    {
+      GridGenerator::subdivided_hyper_rectangle(
+        triangulation, {4, 1}, Point<2>(0, 0), Point<2>(4, 1), true);
+    }
+
+    Tensor<1, 2>
+    body_force(const Point<2> &, const double) const override
+    {
+      return Tensor<1, 2>();
+    }
+
+    Tensor<1, 2>
+    traction(const Point<2> &x,
+             const Tensor<1, 2> &,
+             const types::boundary_id id,
+             const double             t) const override
+    {
+      if (id != 3) // the top; the right side is free
+        return Tensor<1, 2>();
+      // The traction on the top, $f_2(x, t) = t\,(0.5\,x/4,\ -2.5\,(x - 1)/3)$:
+      // the shear grows from the clamped end to $0.5\,t$ at the free end; the
+      // normal part is positive (upwards) left of $x = 1$ and presses down
+      // right of it, up to $2.5\,t$ at the free end. So the block is lifted
+      // near the clamp and pressed into the foundation further out, and the
+      // contact zone has all three normal branches at once.
+      return Tensor<1, 2>({0.5 * t * x[0] / 4, -2.5 * t * (x[0] - 1) / 3});
+    }
+  };
+
+  // @sect4{A manufactured solution}
+
+  // On the unit square, clamped on the left, with $\Gamma_3$ the bottom
+  // ($\nu = (0,-1)$), the field
+  // @f[
+  //   u(x, y) = (1 + y)\,\bigl(a(x),\; -b(x)\bigr),\qquad
+  //   a(x) = (x - \tfrac34)_+^3,\quad
+  //   b(x) = -8 x (\tfrac14 - x)_+^3,
+  // @f]
+  // step-1's field without its penetration: on $\Gamma_3$ $u_\nu = b(x)$,
+  // separation on $(0, \frac14)$ and contact with the wall, $u_\nu = 0$, on
+  // $[\frac14, 1]$; and $u_\tau = a(x)$: stick on $(0, \frac34]$, slip
+  // beyond. $u$ is $C^2$, so $f_0 = -\mathrm{Div}\,\sigma(u)$ is continuous.
+  // It solves the problem with $f_2 = \sigma\nu$ and, on $\Gamma_3$,
+  // $f_3 = \sigma\nu + \xi_\nu\nu + \xi_\tau$ with $\xi_\nu \in \partial
+  // I(u_\nu)$ the contact pressure and $\xi_\tau \in \partial(\mathcal F
+  // \xi_\nu|\cdot|)(u_\tau)$: the extra traction $f_3$ is exactly what the
+  // laws would have to supply for $u$ to be in equilibrium. Where the body
+  // touches the wall we choose the pressure $\xi_\nu = 1$, and where it
+  // sticks $\xi_\tau = \mathcal F\xi_\nu/2$, strictly inside the friction
+  // interval, so that no node sits at the switch between stick and slip.
+  // The slip, where $u_\tau > 0$, has $\xi_\tau = \mathcal F\xi_\nu$: the
+  // friction bound is the pressure times the coefficient, as Coulomb's law
+  // asks. The points $\frac14$ and $\frac34$ where $f_3$ jumps are mesh
+  // vertices.
+  class ManufacturedData : public ProblemData<2>
+  {
+  public:
+    ManufacturedData()
+      : ProblemData<2>(/*mu=*/100, /*lambda=*/150, /*coulomb=*/0.3)
+    {}
+
+    // The contact pressure of the exact solution where it touches the wall.
+    static constexpr double pressure = 1;
+
+    void
+    make_coarse_grid(Triangulation<2> &triangulation) const override
+    {
+      GridGenerator::subdivided_hyper_rectangle(
+        triangulation, {1, 1}, Point<2>(0, 0), Point<2>(1, 1), true);
+    }
+
+    // The exact solution is built from $z_+^3$, a $C^2$ function whose third
+    // derivative jumps at $z = 0$: smooth enough for the data to be
+    // continuous, and with kinks exactly where the contact conditions switch.
+    // $z_+^3$ and its first two derivatives.
+    static std::array<double, 3>
+    cube_plus(const double z)
+    {
+      const double zp = std::max(z, 0.);
+      return {{zp * zp * zp, 3 * zp * zp, 6 * zp}};
+    }
+
+    // $a$, $b$ and their derivatives up to the second.
+    static std::array<double, 3>
+    a(const double x)
+    {
+      return cube_plus(x - 0.75);
+    }
+
+    static std::array<double, 3>
+    b(const double x)
+    {
+      const auto h = cube_plus(0.25 - x); // h' = -g'(0.25 - x)
+      return {
+        {-8 * x * h[0], -8 * (h[0] - x * h[1]), -8 * (-2 * h[1] + x * h[2])}};
+    }
+
+    Tensor<1, 2>
+    exact_value(const Point<2> &p) const
+    {
+      const double phi = 1 + p[1];
+      return Tensor<1, 2>({phi * a(p[0])[0], -phi * b(p[0])[0]});
+    }
+
+    Tensor<2, 2>
+    exact_gradient(const Point<2> &p) const
+    {
+      const double phi = 1 + p[1];
+      const auto   A = a(p[0]), B = b(p[0]);
+      return Tensor<2, 2>({{phi * A[1], A[0]}, {-phi * B[1], -B[0]}});
+    }
+
+    // $f_0 = -\mu\Delta u - (\mu+\lambda)\nabla\,\mathrm{div}\,u$, with
+    // $\Delta u = (1+y)(a'', -b'')$ and
+    // $\nabla\,\mathrm{div}\,u = ((1+y) a'' - b',\; a')$.
+    Tensor<1, 2>
+    body_force(const Point<2> &p, const double) const override
+    {
+      const double phi = 1 + p[1];
+      const auto   A = a(p[0]), B = b(p[0]);
+      return Tensor<1, 2>(
+        {-mu * phi * A[2] - (mu + lambda) * (phi * A[2] - B[1]),
+         mu * phi * B[2] - (mu + lambda) * A[1]});
+    }
+
+    Tensor<1, 2>
+    traction(const Point<2>          &p,
+             const Tensor<1, 2>      &normal,
+             const types::boundary_id id,
+             const double) const override
+    {
+      // On $\Gamma_2$ the traction is simply $\sigma(u)\nu$. On $\Gamma_3$ we
+      // add what the laws would supply at the exact solution, so that the
+      // discrete problem with the laws on $\Gamma_3$ has $u$ as its solution in
+      // the limit.
+      const Tensor<1, 2> sigma_nu =
+        stress(symmetrize(exact_gradient(p))) * normal;
+      if (id != BoundaryIds::contact)
+        return sigma_nu;
+      const double u_nu   = exact_value(p) * normal;
+      const double u_tau  = exact_value(p)[0]; // the tangent is e_x
+      const double xi_nu  = u_nu < 0 ? 0. : pressure;
+      const double F_b    = friction_coefficient * xi_nu;
+      const double xi_tau = u_tau == 0 ? 0.5 * F_b : F_b;
+      return sigma_nu + xi_nu * normal + Tensor<1, 2>({xi_tau, 0.});
+    }
+  };
+
+  // @sect3{One contact node}
+
+  // The contact conditions hold node by node (nodal quadrature on
+  // $\Gamma_3$): each node $x_i$ of $\Gamma_3$ keeps its degrees of
+  // freedom, its weight $m_i = \int_{\Gamma_3}\varphi_i$, its normal
+  // $\nu_i$, the constant $c_i$ of the complementarity functions, and its
+  // current branches. With the wall ($a = \infty$) a node is separating
+  // or in contact ("stick": held at $u_\nu = 0$); the branch
+  // "penetrating" is never taken, and we keep it only so that the code and
+  // the output stay step-1's.
+  enum class NormalBranch
+  {
+    separating, // s + c u_nu < 0:       s = 0, u_nu free
+    stick,      // 0 <= s + c u_nu <= a: u_nu = 0
+    penetrating // s + c u_nu > a:       s = a, u_nu free
+  };
+
+  enum class TangentialBranch
+  {
+    stick, // |lambda + c u_tau| <= F_b: u_tau = 0
+    slip   // lambda = F_b q/|q|, q = lambda + c u_tau
+  };
+
+  template <int dim>
+  struct ContactNode
+  {
+    // The position serves the output only (the x column of contact-NN.csv);
+    // the dofs are the node's $d$ degrees of freedom, in the order of the
+    // components; mass is $m_i$; normal is $\nu_i$; c is $c_i$. The branches
+    // start as "separating" and "stick": the first update_active_set(), before
+    // any Newton step, replaces them by those of the start.
+    Point<dim>                               position;
+    std::array<types::global_dof_index, dim> dofs;
+    double                                   mass = 0;
+    Tensor<1, dim>                           normal;
+    double                                   c = 0;
+    NormalBranch     normal_branch             = NormalBranch::separating;
+    TangentialBranch tangential_branch         = TangentialBranch::stick;
+    // New: the node's own friction bound $F_{b,i} = \mathcal F\,p_{\nu,i}$,
+    // fixed during one solve() and updated between solves by
+    // update_friction_bounds(). It starts at zero: no pressure, no friction.
+    double friction_bound = 0;
+  };
+
+  // @sect3{The StaticContactProblem class}
+
+  // The structure of step-8 (elasticity) and step-41 (an active set
+  // method): make_grid(), setup_system() (which also finds the contact
+  // nodes), assemble_system() for the stiffness matrix $K = B$ and the
+  // load $F_n$, solve() for the active-set Newton method with its helpers,
+  // and output_results(). run() solves one load value.
+  template <int dim>
+  class StaticContactProblem
+  {
+  public:
+    // The problem keeps a reference to its data (the material, the law and
+    // the loads), which must outlive it, and builds its mesh with the given
+    // number of global refinements of the data's coarse mesh.
+    StaticContactProblem(const ProblemData<dim> &data,
+                         const unsigned int      n_refinements);
+
+    // Solve at load parameter $t$, starting from the previous solution:
+    // the fixed-point iteration on the friction bounds, with one solve()
+    // per iteration.
+    void
+    run(const double t);
+
+    // Write the files of one solution, their names ending in @p name
+    // (the number of the load value), and print its summary line.
+    void
+    output_results(const std::string &name) const;
+
+    // $\|u - u_h\|_{L^2}$ and $\|\varepsilon(u - u_h)\|_{L^2}$.
+    // Exact is any class with exact_value() and exact_gradient(). A template
+    // rather than virtual functions of ProblemData, because only the
+    // manufactured solution has an exact solution to compare with.
+    template <class Exact>
+    std::pair<double, double>
+    compute_errors(const Exact &exact) const;
+
+    unsigned int
+    n_dofs() const
+    {
+      return dof_handler.n_dofs();
+    }
+
+    // The constant $\lambda_1$ of the smallness condition (the
+    // introduction, "Uniqueness"): $J_h$ is strictly convex, and the
+    // discrete problem has exactly one solution, when $\alpha_\nu <
+    // \lambda_1$.
+    double
+    smallness_constant() const;
+
+    // The Newton iterations of the last run(), summed over its solves,
+    // for the convergence table, and the number of its fixed-point
+    // iterations on the friction bounds.
+    unsigned int newton_iterations = 0;
+    unsigned int bound_iterations  = 0;
+
+    double
+    energy(const Vector<double> &u) const;
+
+  private:
+    void
+    make_grid(const unsigned int n_refinements);
+    void
+    setup_system();
+    void
+    setup_contact_nodes();
+    void
+    assemble_system(const AffineConstraints<double> &constraints,
+                    SparseMatrix<double>            &matrix,
+                    Vector<double>                  &rhs) const;
+    void
+    solve();
+
+    // The pieces of solve(): the state of a node at the current iterate,
+    // the branches, the nonsmooth residual, the Newton system and the
+    // energy of the line search.
+    struct NodeState;
+    NodeState
+    node_state(const ContactNode<dim> &node,
+               const Vector<double>   &residual) const;
+    unsigned int
+    update_active_set(const Vector<double> &residual);
+    double
+    nonsmooth_residual(const Vector<double> &residual) const;
+    void
+    assemble_newton_system(const Vector<double> &residual);
+
+    // New: $F_{b,i} = \mathcal F\,(p_{\nu,i})_+$ at every node from the
+    // pressure of the current solution; returns the largest change.
+    double
+    update_friction_bounds();
+
+    const ProblemData<dim> &data;
+    double                  time = 0; // the load parameter t
+
+    // The finite element machinery of step-8: a mesh, $Q_1$ in each of the
+    // $d$ components, and the numbering of the degrees of freedom.
+    Triangulation<dim> triangulation;
+    FESystem<dim>      fe;
+    DoFHandler<dim>    dof_handler;
+
+    // Two sets of constraints: the clamped boundary alone, with which $K$
+    // and $F_n$ are assembled, and the clamped boundary plus the held
+    // conditions of the current branches, rebuilt in every Newton
+    // iteration (as step-41 rebuilds its active set).
+    AffineConstraints<double> clamped_constraints;
+    AffineConstraints<double> newton_constraints;
+
+    // $K$ and the matrix of one Newton step share one sparsity pattern:
+    // the contact terms couple only the components of one node, which the
+    // pattern of $K$ already holds.
+    SparsityPattern      sparsity_pattern;
+    SparseMatrix<double> stiffness_matrix;
+    SparseMatrix<double> newton_matrix;
+
+    Vector<double> solution;   // $u$, kept from one load value to the next
+    Vector<double> load;       // $F_n$
+    Vector<double> newton_rhs; // $g$ of the Newton step, condensed
+
+    std::vector<ContactNode<dim>> contact_nodes;
+  };
+
+  // The constructor builds the mesh and the system; the solution starts
+  // at zero.
+  template <int dim>
+  StaticContactProblem<dim>::StaticContactProblem(
+    const ProblemData<dim> &data,
+    const unsigned int      n_refinements)
+    : data(data)
+    , fe(FE_Q<dim>(1), dim)
+    , dof_handler(triangulation)
+  {
+    make_grid(n_refinements);
+    setup_system();
+  }
+
+  // @sect4{StaticContactProblem::make_grid}
+
+  template <int dim>
+  void
+  StaticContactProblem<dim>::make_grid(const unsigned int n_refinements)
+  {
+    // The coarse mesh comes from the data (one cell per unit length), so
+    // that every refinement halves $h$ and the points where the
+    // manufactured solution switches branches stay mesh vertices.
+    data.make_coarse_grid(triangulation);
+    triangulation.refine_global(n_refinements);
+  }
+
+  // @sect4{StaticContactProblem::setup_system}
+
+  // $V^h$: continuous $Q_1$ vector fields vanishing on $\Gamma_1$. The
+  // sparsity pattern couples every component of a node with every
+  // component of its neighbours, so it also holds the entries that the
+  // contact constraints of solve() create (they tie the components of one
+  // node together).
+  template <int dim>
+  void
+  StaticContactProblem<dim>::setup_system()
+  {
+    // The clamped boundary $\Gamma_1$ (boundary id 0) becomes constraints
+    // $u = 0$ on its degrees of freedom; assembling with them (as step-8
+    // does) keeps $K$ symmetric and positive definite on the remaining ones.
+    dof_handler.distribute_dofs(fe);
+
+    clamped_constraints.clear();
+    VectorTools::interpolate_boundary_values(dof_handler,
+                                             BoundaryIds::clamped,
+                                             Functions::ZeroFunction<dim>(dim),
+                                             clamped_constraints);
+    clamped_constraints.close();
+
+    // We build the pattern without the constraints: the Newton constraints
+    // change from iteration to iteration, and a pattern that ignores them has
+    // room for every set of them (each ties only the components of one node,
+    // which are coupled anyway).
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler, dsp);
+    sparsity_pattern.copy_from(dsp);
+    stiffness_matrix.reinit(sparsity_pattern);
+    newton_matrix.reinit(sparsity_pattern);
+
+    solution.reinit(dof_handler.n_dofs());
+    load.reinit(dof_handler.n_dofs());
+    newton_rhs.reinit(dof_handler.n_dofs());
+
+    // The contact nodes need the diagonal of $K$ (their constants $c_i$),
+    // so $K$ is assembled here, before any load value; run() assembles it
+    // again together with the load of its $t$ (one function computes both,
+    // and $K$ comes out the same).
+    assemble_system(clamped_constraints, stiffness_matrix, load);
+    setup_contact_nodes();
+  }
+
+  // @sect4{The contact nodes}
+
+  // The nodal weights $m_i = \int_{\Gamma_3}\varphi_i$ and the nodal
+  // normals $\nu_i = \int_{\Gamma_3}\varphi_i\nu / |\cdot|$ are assembled
+  // like a right-hand side. Nodes on $\Gamma_1$ are not contact nodes
+  // (they do not move). The constant $c_i$ of the complementarity
+  // functions is the mean diagonal entry of $K$ at the node over $m_i$,
+  // and at least twice the law's steepest rise. Why a floor: on a free
+  // segment the multiplier $s$ falls by $p'$ as $u_\nu$ grows, so $q =
+  // s + c\,u_\nu$ grows along the law only if $c > p'$; below that an
+  // iterate could be held on the wrong branch. The diagonal of $K$ makes
+  // $c_i u_\nu$ and $s$ forces of the same size, so that neither term of
+  // $q$ drowns the other. $c_i$ changes the path of the iteration, never
+  // its solution (the complementarity functions vanish at the same
+  // points for every $c > 0$).
+  template <int dim>
+  void
+  StaticContactProblem<dim>::setup_contact_nodes()
+  {
+    Vector<double> mass(dof_handler.n_dofs()), normal(dof_handler.n_dofs());
+    const QGauss<dim - 1>                face_quadrature(2);
+    FEFaceValues<dim>                    fe_face_values(fe,
+                                     face_quadrature,
+                                     update_values | update_normal_vectors |
+                                       update_JxW_values);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() == BoundaryIds::contact)
+          {
+            // The face integrals of $\varphi_i$ and $\varphi_i\nu$ with two
+            // Gauss points are exact for $Q_1$ on straight faces. Each
+            // component's shape function contributes to its own entry, so that
+            // mass and normal come out per degree of freedom: we read the mass
+            // at the node's first component and the normal's components at
+            // its components.
+            fe_face_values.reinit(cell, face);
+            cell->get_dof_indices(dofs);
+            for (const unsigned int q :
+                 fe_face_values.quadrature_point_indices())
+              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                {
+                  const unsigned int c = fe.system_to_component_index(i).first;
+                  const double       phi_JxW =
+                    fe_face_values.shape_value_component(i, q, c) *
+                    fe_face_values.JxW(q);
+                  mass(dofs[i]) += phi_JxW;
+                  normal(dofs[i]) +=
+                    phi_JxW * fe_face_values.normal_vector(q)[c];
+                }
+          }
+
+    // Every vertex of $\Gamma_3$ is met once per face it belongs to: the
+    // flags keep the first meeting. A vertex that is also on $\Gamma_1$
+    // (the corner of the clamped side) is held at zero by the clamped
+    // constraints and must not get contact conditions too: a degree of
+    // freedom can carry only one constraint.
+    contact_nodes.clear();
+    std::vector<bool> seen(dof_handler.n_dofs(), false);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() == BoundaryIds::contact)
+          for (const unsigned int v : face->vertex_indices())
+            {
+              ContactNode<dim> node;
+              for (unsigned int c = 0; c < dim; ++c)
+                node.dofs[c] = face->vertex_dof_index(v, c);
+              if (seen[node.dofs[0]] ||
+                  clamped_constraints.is_constrained(node.dofs[0]))
+                continue;
+              seen[node.dofs[0]] = true;
+              node.position      = face->vertex(v);
+              node.mass          = mass(node.dofs[0]);
+              double diagonal    = 0;
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  node.normal[c] = normal(node.dofs[c]);
+                  diagonal += stiffness_matrix.diag_element(node.dofs[c]) / dim;
+                }
+              node.normal /= node.normal.norm();
+              node.c =
+                std::max(diagonal / node.mass, 2 * data.law.steepest_rise);
+              contact_nodes.push_back(node);
+            }
+  }
+
+  // @sect4{StaticContactProblem::assemble_system}
+
+  // The cell terms of the energy, condensed with the given constraints:
+  // the stiffness $\int_K B\varepsilon(\varphi_j) : \varepsilon(
+  // \varphi_i)$ (Gauss, 2 points per direction, exact for $Q_1$ on
+  // parallelograms) and the load $\int_K f_0\cdot\varphi_i +
+  // \int_{\partial K\cap(\Gamma_2\cup\Gamma_3)} f\cdot\varphi_i$ (3
+  // points per direction). With the clamped constraints alone this is $K$
+  // and $F_n$, the quadratic part $\frac12 u\cdot K u - F_n\cdot u$ of the
+  // energy $J$; solve() calls it again with the constraints of each
+  // Newton step.
+  template <int dim>
+  void
+  StaticContactProblem<dim>::assemble_system(
+    const AffineConstraints<double> &constraints,
+    SparseMatrix<double>            &matrix,
+    Vector<double>                  &rhs) const
+  {
+    const FEValuesExtractors::Vector     displacement(0);
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    FEValues<dim>                        fe_values(fe,
+                            QGauss<dim>(2),
+                            update_gradients | update_JxW_values);
+    FEValues<dim>                        fe_load(fe,
+                          QGauss<dim>(3),
+                          update_values | update_quadrature_points |
+                            update_JxW_values);
+    FEFaceValues<dim>                    fe_face(fe,
+                              QGauss<dim - 1>(3),
+                              update_values | update_quadrature_points |
+                                update_normal_vectors | update_JxW_values);
+    FullMatrix<double>                   cell_matrix(n, n);
+    Vector<double>                       cell_rhs(n);
+    std::vector<types::global_dof_index> dofs(n);
+
+    // The constraints are applied while assembling
+    // (distribute_local_to_global()), so the matrix and the vector come out
+    // condensed: for the clamped constraints that is $K$ and $F_n$ with the
+    // clamped rows decoupled, for those of a Newton step the reduced
+    // system of that step. The load uses one Gauss point more than the
+    // matrix: the data are not polynomials (the manufactured ones are
+    // piecewise cubic and jump on $\Gamma_3$), and their quadrature error
+    // must stay below the discretisation error on the finest mesh.
+    matrix = 0;
+    rhs    = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        // The cell matrix is step-8's: $\sigma(\varphi_i) = B\varepsilon(
+        // \varphi_i)$ against $\varepsilon(\varphi_j)$, with the stress law of
+        // the problem data, so that a different material changes one function.
+        cell_matrix = 0;
+        cell_rhs    = 0;
+        fe_values.reinit(cell);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const SymmetricTensor<2, dim> sigma_i =
+                data.stress(fe_values[displacement].symmetric_gradient(i, q));
+              for (unsigned int j = 0; j < n; ++j)
+                cell_matrix(i, j) +=
+                  sigma_i * fe_values[displacement].symmetric_gradient(j, q) *
+                  fe_values.JxW(q);
+            }
+
+        fe_load.reinit(cell);
+        for (const unsigned int q : fe_load.quadrature_point_indices())
+          {
+            const Tensor<1, dim> f0 =
+              data.body_force(fe_load.quadrature_point(q), time);
+            for (unsigned int i = 0; i < n; ++i)
+              cell_rhs(i) +=
+                f0 * fe_load[displacement].value(i, q) * fe_load.JxW(q);
+          }
+        for (const auto &face : cell->face_iterators())
+          // Every boundary face that is not clamped carries a traction: $f_2$
+          // on
+          // $\Gamma_2$, and, for the manufactured solution, $f_3$ on $\Gamma_3$
+          // (the block's data return zero there, since its contact forces come
+          // from the laws alone).
+          if (face->at_boundary() &&
+              face->boundary_id() != BoundaryIds::clamped)
+            {
+              fe_face.reinit(cell, face);
+              for (const unsigned int q : fe_face.quadrature_point_indices())
+                {
+                  const Tensor<1, dim> f =
+                    data.traction(fe_face.quadrature_point(q),
+                                  fe_face.normal_vector(q),
+                                  face->boundary_id(),
+                                  time);
+                  for (unsigned int i = 0; i < n; ++i)
+                    cell_rhs(i) +=
+                      f * fe_face[displacement].value(i, q) * fe_face.JxW(q);
+                }
+            }
+
+        cell->get_dof_indices(dofs);
+        constraints.distribute_local_to_global(
+          cell_matrix, cell_rhs, dofs, matrix, rhs);
+      }
+  }
+
+  // @sect3{The active-set Newton method}
+
+  // @sect4{The state of a node}
+
+  // From the residual $R = K u - F_n$ the nodal contact force is
+  // $G_i = -R_i$ (the force the laws must supply for equilibrium), and
+  // the traction is $G_i/m_i$. Split into normal and tangential parts, the
+  // multipliers of the convex parts of the laws are
+  // @f[
+  //   s = G_i\cdot\nu/m_i - p(u_\nu),\qquad
+  //   \lambda = G_{i,\tau}/m_i
+  // @f]
+  // (Tresca friction has no remainder), and the complementarity functions
+  // (the introduction shows why they vanish exactly where the laws hold)
+  // are
+  // @f[
+  //   C_\nu = s - P_{[0,a]}(s + c\,u_\nu),\qquad
+  //   C_\tau = \lambda - P_{|\cdot|\le F_b}(\lambda + c\,u_\tau).
+  // @f]
+  // Both vanish exactly at a solution of the nodal contact conditions.
+  template <int dim>
+  // The members, in the order of the formulas above: the normal
+  // displacement and the slip, the two multipliers, and the arguments of
+  // the two projections. We recompute them from the residual whenever they
+  // are needed instead of storing them in ContactNode: they change with
+  // every iterate, and a stored copy could go stale.
+  struct StaticContactProblem<dim>::NodeState
+  {
+    double         u_nu;
+    Tensor<1, dim> u_tau;
+    double         s;
+    Tensor<1, dim> lambda;
+    double         q_nu;  // s + c u_nu
+    Tensor<1, dim> q_tau; // lambda + c u_tau
+  };
+
+  template <int dim>
+  typename StaticContactProblem<dim>::NodeState
+  StaticContactProblem<dim>::node_state(const ContactNode<dim> &node,
+                                        const Vector<double>   &residual) const
+  {
+    Tensor<1, dim> u, traction;
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        u[c]        = solution(node.dofs[c]);
+        traction[c] = -residual(node.dofs[c]) / node.mass;
+      }
+    // The residual at a contact node is the force the laws do not yet
+    // supply; divided by the weight $m_i$ it is a traction, comparable with
+    // the law's response $\xi$ and the friction bound $F_b$.
+    NodeState m;
+    m.u_nu   = u * node.normal;
+    m.u_tau  = u - m.u_nu * node.normal;
+    m.s      = traction * node.normal - data.law.remainder(m.u_nu);
+    m.lambda = traction - (traction * node.normal) * node.normal;
+    m.q_nu   = m.s + node.c * m.u_nu;
+    m.q_tau  = m.lambda + node.c * m.u_tau;
+    return m;
+  }
+
+  // The projection onto the friction disk $|\lambda| \le F_b$.
+  template <int dim>
+  Tensor<1, dim>
+  project_on_disk(const Tensor<1, dim> &q, const double F_b)
+  {
+    return q.norm() <= F_b ? q : F_b / q.norm() * q;
+  }
+
+  // @sect4{The branches}
+
+  // The branch of each node follows from the projections: $q_\nu < 0$
+  // separating, $0 \le q_\nu \le a$ stick (held at $u_\nu = 0$), $q_\nu >
+  // a$ penetrating; $|q_\tau| \le F_b$ stick ($u_\tau = 0$), otherwise
+  // slip. Returns the number of nodes whose branches changed.
+  template <int dim>
+  unsigned int
+  StaticContactProblem<dim>::update_active_set(const Vector<double> &residual)
+  {
+    unsigned int n_changed = 0;
+    for (ContactNode<dim> &node : contact_nodes)
+      {
+        const NodeState m = node_state(node, residual);
+        // The thresholds are the kinks of the projections: a value exactly on a
+        // kink goes to the held branch, where the projection is the identity.
+        const NormalBranch     nb = m.q_nu < 0 ? NormalBranch::separating :
+                                    m.q_nu <= data.law.jump() ?
+                                                 NormalBranch::stick :
+                                                 NormalBranch::penetrating;
+        const TangentialBranch tb = m.q_tau.norm() <= node.friction_bound ?
+                                      TangentialBranch::stick :
+                                      TangentialBranch::slip;
+        if (nb != node.normal_branch || tb != node.tangential_branch)
+          ++n_changed;
+        node.normal_branch     = nb;
+        node.tangential_branch = tb;
+      }
+    return n_changed;
+  }
+
+  // The nonsmooth residual: equilibrium $R$ on the free degrees of freedom
+  // that are not at contact nodes, plus the complementarity functions at
+  // the contact nodes, weighted by $m_i$ to be forces too.
+  template <int dim>
+  double
+  StaticContactProblem<dim>::nonsmooth_residual(
+    const Vector<double> &residual) const
+  {
+    // At a contact node the residual is not expected to vanish (it is the
+    // contact force); there the complementarity functions take its place.
+    // The clamped rows of the residual are zero already (the condensed
+    // $K$ times a $u$ that vanishes there, minus a zero load).
+    // Both parts are forces, so we add their squares: a mixed norm in which
+    // neither the equilibrium nor the contact conditions can hide behind the
+    // other.
+    Vector<double> free_part(residual);
+    double         contact_part = 0;
+    for (const ContactNode<dim> &node : contact_nodes)
+      {
+        for (unsigned int c = 0; c < dim; ++c)
+          free_part(node.dofs[c]) = 0;
+        const NodeState m = node_state(node, residual);
+        const double    C_nu =
+          m.s - std::min(std::max(m.q_nu, 0.), data.law.jump());
+        const Tensor<1, dim> C_tau =
+          m.lambda - project_on_disk(m.q_tau, node.friction_bound);
+        contact_part +=
+          node.mass * node.mass * (C_nu * C_nu + C_tau.norm_square());
+      }
+    return std::sqrt(free_part.norm_sqr() + contact_part);
+  }
+
+  // @sect4{The Newton system}
+
+  // On the current branches the problem is smooth, and one Newton step
+  // minimises its quadratic model $\frac12 x\cdot(K + L)x - g\cdot x$
+  // over the displacements that satisfy the held conditions:
+  // - a stick node in the normal direction: $x_i\cdot\nu_i = 0$;
+  // - a stick node in the tangential direction: $x_i - (x_i\cdot\nu_i)
+  //   \nu_i = 0$.
+  //
+  // Free branches add the nodal force $f_i$ of the laws and its
+  // derivative $L_i$, with $g_i = F_i + L_i u_i - f_i$:
+  // - penetrating: $f_i = m_i (a + p(u_\nu))\nu$, $L_i = m_i p'(u_\nu)
+  //   \nu\otimes\nu$ (negative on a falling segment of the law);
+  // - slip: $f_i = m_i F_b d + T_i u_\tau$, $d = q_\tau/|q_\tau|$, and
+  //   $L_i = T_i$, the condensed tangent of the friction disk $T_i = m_i
+  //   F_b c /(|q_\tau| - F_b)\,(I - \nu\otimes\nu - d\otimes d)$, which
+  //   vanishes in 2D (the denominator is kept above $|q_\tau|/100$ for
+  //   nodes that barely slip). The term $T_i u_\tau$: the Newton step of
+  //   $C_\tau = 0$ gives the new multiplier $\lambda = F_b d + T_i x_i /
+  //   m_i$, whose part across $d$ grows with the new slip $x_i$. Written as
+  //   $f_i + L_i(x_i - u_i)$, like the other forces, it needs $f_i = m_i
+  //   F_b d + T_i u_i$, and $T_i u_i = T_i u_\tau$ since $T_i\nu = 0$.
+  //
+  // The held conditions are linear constraints between the components of
+  // a node, solved for its component of largest $|\nu_c|$; deal.II's
+  // AffineConstraints eliminates them while assembling, as step-41 does
+  // for its active set.
+  template <int dim>
+  void
+  StaticContactProblem<dim>::assemble_newton_system(
+    const Vector<double> &residual)
+  {
+    newton_constraints.clear();
+    newton_constraints.merge(clamped_constraints);
+    for (const ContactNode<dim> &node : contact_nodes)
+      {
+        const bool normal_held = node.normal_branch == NormalBranch::stick;
+        const bool tangent_held =
+          node.tangential_branch == TangentialBranch::stick;
+        // A held condition is solved for one component, and we divide by that
+        // component of the normal: we pick the largest, $|\nu_k| \ge
+        // 1/\sqrt{d}$, so that the division is always well conditioned,
+        // whatever the shape of $\Gamma_3$.
+        unsigned int k = 0;
+        for (unsigned int c = 1; c < dim; ++c)
+          if (std::abs(node.normal[c]) > std::abs(node.normal[k]))
+            k = c;
+        if (normal_held && tangent_held) // x_i = 0
+          for (unsigned int c = 0; c < dim; ++c)
+            newton_constraints.add_line(node.dofs[c]);
+        else if (normal_held) // x_k = -sum_{c != k} nu_c/nu_k x_c
+          {
+            newton_constraints.add_line(node.dofs[k]);
+            for (unsigned int c = 0; c < dim; ++c)
+              if (c != k && node.normal[c] != 0)
+                newton_constraints.add_entry(node.dofs[k],
+                                             node.dofs[c],
+                                             -node.normal[c] / node.normal[k]);
+          }
+        else if (tangent_held) // x_c = nu_c/nu_k x_k for c != k
+          for (unsigned int c = 0; c < dim; ++c)
+            if (c != k)
+              {
+                newton_constraints.add_line(node.dofs[c]);
+                if (node.normal[c] != 0)
+                  newton_constraints.add_entry(node.dofs[c],
+                                               node.dofs[k],
+                                               node.normal[c] / node.normal[k]);
+              }
+      }
+    newton_constraints.close();
+
+    assemble_system(newton_constraints, newton_matrix, newton_rhs);
+
+    // The constraints are closed, and the cell terms are in the matrix and the
+    // right-hand side. What remains are the nodal terms of the free branches,
+    // which we add through the same constraints, as if each contact node were
+    // a little element with $d$ degrees of freedom.
+    // the nodal terms of the free branches
+    FullMatrix<double>                   node_matrix(dim, dim);
+    Vector<double>                       node_rhs(dim);
+    std::vector<types::global_dof_index> node_dofs(dim);
+    for (const ContactNode<dim> &node : contact_nodes)
+      {
+        const NodeState      m  = node_state(node, residual);
+        const Tensor<1, dim> nu = node.normal;
+        Tensor<2, dim>       L;
+        Tensor<1, dim>       f;
+        if (node.normal_branch == NormalBranch::penetrating)
+          {
+            f +=
+              node.mass * (data.law.jump() + data.law.remainder(m.u_nu)) * nu;
+            L += node.mass * data.law.remainder_derivative(m.u_nu) *
+                 outer_product(nu, nu);
+          }
+        if (node.tangential_branch == TangentialBranch::slip)
+          {
+            const double         F_b    = node.friction_bound;
+            const double         qn     = m.q_tau.norm();
+            const Tensor<1, dim> d      = m.q_tau / qn;
+            const double         excess = std::max(qn - F_b, 1e-2 * qn);
+            const Tensor<2, dim> tangent =
+              node.mass * F_b * node.c / excess *
+              (unit_symmetric_tensor<dim>() - outer_product(nu, nu) -
+               outer_product(d, d));
+            L += tangent;
+            f += node.mass * F_b * d + tangent * m.u_tau;
+          }
+        Tensor<1, dim> u;
+        for (unsigned int c = 0; c < dim; ++c)
+          u[c] = solution(node.dofs[c]);
+        const Tensor<1, dim> g = L * u - f;
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            node_dofs[i] = node.dofs[i];
+            node_rhs(i)  = g[i];
+            for (unsigned int j = 0; j < dim; ++j)
+              node_matrix(i, j) = L[i][j];
+          }
+        newton_constraints.distribute_local_to_global(
+          node_matrix, node_rhs, node_dofs, newton_matrix, newton_rhs);
+      }
+  }
+
+  // @sect4{The energy}
+
+  // $J(u) = \frac12 u\cdot K u - F_n\cdot u + \sum_i m_i [j_\nu(u_{i,\nu})
+  // + F_b |u_{i,\tau}|]$, the function the line search decreases.
+  template <int dim>
+  double
+  StaticContactProblem<dim>::energy(const Vector<double> &u) const
+  {
+    // matrix_norm_square() is $u\cdot Ku$. The clamped rows of $K$ are
+    // decoupled and $u$ vanishes there, so they add nothing.
+    double J = 0.5 * stiffness_matrix.matrix_norm_square(u) - load * u;
+    for (const ContactNode<dim> &node : contact_nodes)
+      {
+        Tensor<1, dim> v;
+        for (unsigned int c = 0; c < dim; ++c)
+          v[c] = u(node.dofs[c]);
+        const double u_nu = v * node.normal;
+        J +=
+          node.mass * (data.law.potential(u_nu) +
+                       node.friction_bound * (v - u_nu * node.normal).norm());
+      }
+    return J;
+  }
+
+  // @sect4{StaticContactProblem::solve}
+
+  // The primal-dual active set iteration: compute the residual, update the
+  // branches, stop when no branch changed and the nonsmooth residual is
+  // below the tolerance (relative to $|F_n|$), else solve the Newton
+  // system on the current branches with a direct solver and take the
+  // step, halved until it does not raise $J$ (the full step if no length
+  // lowers it; the rule is explained where it is coded).
+  template <int dim>
+  void
+  StaticContactProblem<dim>::solve()
+  {
+    // The tolerance is relative to the load: the residual is a force, and
+    // $10^{-11}|F_n|$ lies well above the round-off of evaluating it while
+    // being tight enough for the comparison with the full program at
+    // $10^{-10}$. Once the residual is a hundred times below it, the
+    // iteration stops even if a branch still changes: a node whose
+    // $q$ lies within round-off of a switch may flip back and forth
+    // without changing the solution.
+    const double   tolerance = 1e-11 * load.l2_norm();
+    Vector<double> residual(dof_handler.n_dofs());
+    for (unsigned int iteration = 0;; ++iteration)
+      {
+        // The residual of the current iterate decides everything else: the
+        // branches, the stopping test and the right-hand side of the Newton
+        // step.
+        stiffness_matrix.vmult(residual, solution);
+        residual -= load;
+        const unsigned int n_changed = update_active_set(residual);
+        const double       r         = nonsmooth_residual(residual);
+        if ((n_changed == 0 && r <= tolerance) || r <= 1e-2 * tolerance)
+          break;
+        AssertThrow(iteration < 50,
+                    ExcMessage("The active set Newton method did not "
+                               "converge in 50 iterations."));
+
+        assemble_newton_system(residual);
+        // The matrix changes with the branches, so we factorise it in every
+        // iteration. On the meshes of this program UMFPACK does this
+        // quickly, and a direct solver keeps the iteration count a property
+        // of the nonsmooth method alone, with no inner tolerance to tune.
+        SparseDirectUMFPACK direct_solver;
+        direct_solver.initialize(newton_matrix);
+        Vector<double> trial(newton_rhs);
+        direct_solver.solve(trial);
+        newton_constraints.distribute(trial);
+
+        // The line search on $J$, the same rule as in step-2: try $\theta
+        // = 1, \frac12, \frac14, \dots, 2^{-10}$ and take the first step
+        // $u + \theta d$ that does not raise $J$ beyond round-off (a
+        // relative $10^{-12}$, since $J$ is a sum of terms of either sign
+        // and its last digits are noise). A full Newton step can raise $J$
+        // because $j_\nu$ is not convex: the quadratic model of one branch
+        // is wrong beyond that branch's segment of the law. If no step
+        // length lowers $J$ (the direction is not one of descent, which
+        // happens only while the branches are still wrong), the full step
+        // is taken: a tiny step would leave the branches as they are and
+        // stall the iteration, while the full step moves to the branches
+        // the next update_active_set() corrects. The default run (the block
+        // and five levels) never reaches that fallback.
+        // The trial vector holds the new iterate $u + d$; the direction is the
+        // difference, and the loop below tries fractions of it.
+        Vector<double> direction(trial);
+        direction -= solution;
+        const double J0    = energy(solution);
+        double       theta = 1;
+        for (; theta >= 1. / 1024; theta /= 2)
+          {
+            trial = solution;
+            trial.add(theta, direction);
+            const double J = energy(trial);
+            if (J <= J0 + 1e-12 * (std::abs(J0) + std::abs(J)))
+              break;
+          }
+        if (theta < 1. / 1024)
+          theta = 1;
+        solution.add(theta, direction);
+        ++newton_iterations;
+      }
+  }
+
+  // @sect4{StaticContactProblem::run}
+
+  // One load value: assemble the load at $t$, then Coulomb's friction by a
+  // fixed point. The bound $F_b = \mathcal F p_\nu$ depends on the pressure,
+  // which depends on the solution, which depends on the bound: the problem
+  // with the pressure in the bound is not a minimisation (Coulomb friction
+  // has no potential). With the bounds held fixed it is step-1's problem,
+  // Tresca friction with a bound per node, a strictly convex minimisation
+  // that solve() finds. So we iterate: solve with the bounds of the last
+  // pressure, compute the pressure of the new solution and from it new
+  // bounds, until no bound changes by more than $10^{-12}$ times the
+  // largest. The first bounds are those of the previous load value's
+  // solution (zero before the first: frictionless contact). For a small
+  // enough $\mathcal F$ the map from bounds to bounds is a contraction and
+  // the iteration converges; for a large one it may not, and we stop after
+  // 100 iterations with a message. The full program does the same
+  // (doc/theory.md, section 9.9).
+  template <int dim>
+  void
+  StaticContactProblem<dim>::run(const double t)
+  {
+    // $K$ does not depend on $t$, so assembling it again is wasted work; we
+    // accept it because one function assembles both, and every Newton step
+    // that follows assembles a matrix of the same size anyway.
+    time = t;
+    assemble_system(clamped_constraints, stiffness_matrix, load);
+    newton_iterations = 0;
+    for (bound_iterations = 1;; ++bound_iterations)
+      {
+        solve();
+        if (update_friction_bounds() <= 1e-12)
+          break;
+        AssertThrow(bound_iterations < 100,
+                    ExcMessage("The friction bounds did not settle in 100 "
+                               "fixed-point iterations."));
+      }
+  }
+
+  // @sect4{StaticContactProblem::update_friction_bounds}
+
+  // The pressure at a node is the normal part of its contact traction,
+  // $p_\nu = -\sigma_\nu = G_i\cdot\nu_i/m_i$, which node_state() gives as
+  // $s + p(u_\nu) = s$ (the wall has no remainder). At a separating node it
+  // is zero up to the solver's tolerance and may be slightly negative, so
+  // we take its positive part. We return the largest change of a bound
+  // relative to the largest new bound (zero if all bounds stay zero).
+  template <int dim>
+  double
+  StaticContactProblem<dim>::update_friction_bounds()
+  {
+    Vector<double> residual(dof_handler.n_dofs());
+    stiffness_matrix.vmult(residual, solution);
+    residual -= load;
+    double change = 0, largest = 0;
+    for (ContactNode<dim> &node : contact_nodes)
+      {
+        const NodeState m   = node_state(node, residual);
+        const double    F_b = data.friction_coefficient *
+                           std::max(m.s + data.law.remainder(m.u_nu), 0.);
+        change  = std::max(change, std::abs(F_b - node.friction_bound));
+        largest = std::max(largest, F_b);
+        node.friction_bound = F_b;
+      }
+    return largest > 0 ? change / largest : change;
+  }
+
+  // @sect4{StaticContactProblem::smallness_constant}
+
+  // The uniqueness condition of the introduction asks that
+  // @f[
+  //   \lambda_1 = \min_{v \ne 0}
+  //     \frac{v\cdot K v}{\sum_i m_i (v_i\cdot\nu_i)^2} > \alpha_\nu,
+  // @f]
+  // the smallest eigenvalue of $K x = \lambda N x$ with the normal boundary
+  // mass $N = \sum_i m_i \nu_i\otimes\nu_i$ (nodal quadrature of
+  // $\int_{\Gamma_3} v_\nu^2$). $N$ is singular (it sees only the normal
+  // components on $\Gamma_3$), so we compute the largest eigenvalue
+  // $1/\lambda_1$ of $K^{-1}N$ instead, by the power iteration
+  // $x \leftarrow K^{-1} N x$: each step is one solve with the UMFPACK
+  // factorisation of $K$, computed once. The Rayleigh quotient
+  // $x\cdot Kx / x\cdot Nx$ of the iterate approaches $\lambda_1$ from
+  // above, with an error of the square of the iterate's; we stop when it
+  // changes by less than $10^{-12}$ relative. The start is the normal
+  // field on $\Gamma_3$, which the lowest mode resembles. The full program
+  // estimates the same number (by a preconditioned eigensolver) and warns
+  // when $\alpha_\nu$ is not below it. Nothing here changes the solution.
+  template <int dim>
+  double
+  StaticContactProblem<dim>::smallness_constant() const
+  {
+    // We never assemble $N$ as a matrix: it is diagonal in the nodes, and
+    // applying it is one loop over the contact nodes, which project $v$ onto
+    // their normals and weight it with $m_i$.
+    const auto apply_N = [&](const Vector<double> &v, Vector<double> &Nv) {
+      Nv = 0;
+      for (const ContactNode<dim> &node : contact_nodes)
+        {
+          double v_nu = 0;
+          for (unsigned int c = 0; c < dim; ++c)
+            v_nu += v(node.dofs[c]) * node.normal[c];
+          for (unsigned int c = 0; c < dim; ++c)
+            Nv(node.dofs[c]) = node.mass * v_nu * node.normal[c];
+        }
+    };
+
+    // The clamped degrees of freedom have a nonzero diagonal entry in the
+    // condensed $K$ (deal.II puts one there when it condenses), so $K$ is
+    // invertible, and the power iteration never sees them: $N$ vanishes
+    // there.
+    SparseDirectUMFPACK K_inverse;
+    K_inverse.initialize(stiffness_matrix);
+    Vector<double> x(dof_handler.n_dofs()), Nx(x), Kx(x);
+    for (const ContactNode<dim> &node : contact_nodes)
+      for (unsigned int c = 0; c < dim; ++c)
+        x(node.dofs[c]) = node.normal[c];
+
+    // The power iteration. Each step applies $K^{-1}N$ and normalises; the
+    // iterate approaches the eigenvector of the largest eigenvalue of
+    // $K^{-1}N$ at the rate of the ratio of the two largest, and the cap of
+    // 1000 steps guards against a pair too close to separate.
+    double lambda = std::numeric_limits<double>::max();
+    for (unsigned int iteration = 0; iteration < 1000; ++iteration)
+      {
+        apply_N(x, Nx);
+        K_inverse.vmult(x, Nx);
+        x /= x.l2_norm();
+        stiffness_matrix.vmult(Kx, x);
+        apply_N(x, Nx);
+        const double quotient = (x * Kx) / (x * Nx);
+        if (std::abs(quotient - lambda) <= 1e-12 * quotient)
+          return quotient;
+        lambda = quotient;
+      }
+    AssertThrow(false,
+                ExcMessage("The power iteration for the smallness constant "
+                           "did not converge in 1000 steps."));
+    return lambda;
+  }
+
+  // @sect4{StaticContactProblem::output_results}
+
+  // Four files per solution, their names ending in @p name: the
+  // displacement for ParaView (solution-NN.vtu), the contact quantities
+  // along $\Gamma_3$ (contact-NN.csv: $u_\nu$, $u_\tau$, $-\sigma_\nu$,
+  // $\sigma_\tau$ and the branches; the traction is $-R_i/m_i$), the nodal
+  // displacement in full double precision (displacement-NN.txt, for the
+  // comparison with the full program) and the cells with the displacement
+  // of their vertices (body-NN.csv, from which doc/plot_body.py draws the
+  // deformed mesh without ParaView). A short summary line goes to the
+  // terminal.
+  template <int dim>
+  void
+  StaticContactProblem<dim>::output_results(const std::string &name) const
+  {
+    DataOut<dim> data_out;
+    // The VTU file, as in step-8: the $d$ components together form one vector
+    // field, so that ParaView can warp the mesh by it.
+    data_out.attach_dof_handler(dof_handler);
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(dim,
+                     DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(solution,
+                             std::vector<std::string>(dim, "displacement"),
+                             DataOut<dim>::type_dof_data,
+                             interpretation);
+    data_out.build_patches();
+    std::ofstream vtu("solution-" + name + ".vtu");
+    data_out.write_vtu(vtu);
+
+    // The picture of the body needs only what a plot library can draw: one
+    // polygon per cell. We write each cell's vertices in counterclockwise
+    // order (deal.II numbers the vertices of a quadrilateral
+    // lexicographically, 0 1 / 2 3, so the order around it is 0, 1, 3, 2)
+    // with the displacement there and, at a contact node, its two branches
+    // (-1 elsewhere); the script adds position and displacement and
+    // colours the contact nodes by branch.
+    if (dim == 2)
+      {
+        std::map<types::global_dof_index, const ContactNode<dim> *> node_at;
+        for (const ContactNode<dim> &node : contact_nodes)
+          node_at[node.dofs[0]] = &node;
+        std::ofstream body("body-" + name + ".csv");
+        body << "cell,x,y,u_x,u_y,normal_branch,tangential_branch\n"
+             << std::setprecision(10);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int v : {0u, 1u, 3u, 2u})
+            {
+              body << cell->active_cell_index();
+              for (unsigned int c = 0; c < dim; ++c)
+                body << ',' << cell->vertex(v)[c];
+              for (unsigned int c = 0; c < dim; ++c)
+                body << ',' << solution(cell->vertex_dof_index(v, c));
+              const auto node = node_at.find(cell->vertex_dof_index(v, 0));
+              if (node == node_at.end())
+                body << ",-1,-1\n";
+              else
+                body << ',' << static_cast<int>(node->second->normal_branch)
+                     << ',' << static_cast<int>(node->second->tangential_branch)
+                     << '\n';
+            }
+      }
+
+    // The contact quantities come from the residual at the solution, as in
+    // solve(): the column minus_sigma_nu is $s + p(u_\nu)$, the whole
+    // normal traction, and sigma_tau the first component of the
+    // multiplier $\lambda$ (the tangent of the bottom is $e_x$).
+    // (The residual at the solution is the contact force that balances the
+    // body; dividing by $m_i$ turns it into the traction a pressure sensor in
+    // the foundation would read.)
+    Vector<double> residual(dof_handler.n_dofs());
+    stiffness_matrix.vmult(residual, solution);
+    residual -= load;
+    std::ofstream csv("contact-" + name + ".csv");
+    csv << "x,u_nu,u_tau,minus_sigma_nu,sigma_tau,normal_branch,"
+           "tangential_branch\n";
+    unsigned int n_normal[3] = {0, 0, 0}, n_tangential[2] = {0, 0};
+    for (const ContactNode<dim> &node : contact_nodes)
+      {
+        const NodeState m = node_state(node, residual);
+        csv << std::setprecision(10) << node.position[0] << ',' << m.u_nu << ','
+            << m.u_tau[0] << ',' << m.s + data.law.remainder(m.u_nu) << ','
+            << m.lambda[0] << ',' << static_cast<int>(node.normal_branch) << ','
+            << static_cast<int>(node.tangential_branch) << '\n';
+        ++n_normal[static_cast<int>(node.normal_branch)];
+        ++n_tangential[static_cast<int>(node.tangential_branch)];
+      }
+
+    // The nodal file uses printf's %.17g, which prints a double so that it
+    // reads back bit for bit: the comparison with the full program at
+    // $10^{-10}$ must not be limited by the output.
+    std::FILE *nodal =
+      std::fopen(("displacement-" + name + ".txt").c_str(), "w");
+    std::vector<bool> written(triangulation.n_vertices(), false);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        if (!written[cell->vertex_index(v)])
+          {
+            written[cell->vertex_index(v)] = true;
+            for (unsigned int c = 0; c < dim; ++c)
+              std::fprintf(nodal, "%.17g ", cell->vertex(v)[c]);
+            for (unsigned int c = 0; c < dim; ++c)
+              std::fprintf(nodal,
+                           c + 1 < dim ? "%.17g " : "%.17g\n",
+                           solution(cell->vertex_dof_index(v, c)));
+          }
+    std::fclose(nodal);
+
+    // The line that the results page shows for every load value: the
+    // fixed-point iterations, the Newton iterations of all their solves and
+    // how many nodes are on each branch.
+    std::cout << "t = " << std::fixed << std::setprecision(2) << time << ": "
+              << bound_iterations << " bound iterations, " << newton_iterations
+              << " Newton iterations, normal separating/stick/penetrating "
+              << n_normal[0] << '/' << n_normal[1] << '/' << n_normal[2]
+              << ", tangential stick/slip " << n_tangential[0] << '/'
+              << n_tangential[1] << std::defaultfloat << std::endl;
+  }
+
+  // @sect4{StaticContactProblem::compute_errors}
+
+  // $E_H = \|u - u_h\|_{L^2}$ and $E_V = \|\varepsilon(u - u_h)\|_{L^2}$
+  // with a 4-point Gauss rule per direction: two points more than the
+  // assembly, since the exact solution is a cubic and the quadrature error
+  // must stay below the discretisation error on the finest mesh.
+  template <int dim>
+  template <class Exact>
+  std::pair<double, double>
+  StaticContactProblem<dim>::compute_errors(const Exact &exact) const
+  {
+    const QGauss<dim>                    quadrature(4);
+    FEValues<dim>                        fe_values(fe,
+                            quadrature,
+                            update_values | update_gradients |
+                              update_quadrature_points | update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<Tensor<1, dim>>          values(quadrature.size());
+    std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
+    double                               E_H2 = 0, E_V2 = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        // We integrate the squared errors cell by cell, with the exact solution
+        // at the quadrature points and the discrete one interpolated there by
+        // FEValues.
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_values(solution, values);
+        fe_values[displacement].get_function_symmetric_gradients(solution,
+                                                                 strains);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const Point<dim> &x = fe_values.quadrature_point(q);
+            E_H2 += (exact.exact_value(x) - values[q]).norm_square() *
+                    fe_values.JxW(q);
+            const SymmetricTensor<2, dim> e =
+              symmetrize(exact.exact_gradient(x)) - strains[q];
+            E_V2 += scalar_product(e, e) * fe_values.JxW(q);
+          }
+      }
+    return {std::sqrt(E_H2), std::sqrt(E_V2)};
+  }
+} // namespace Step5
+
+// @sect3{The command line}
+
+// The program runs everything without arguments, or one part by its mode.
+// We check every argument before anything is computed, and a bad one ends
+// the program with a message that quotes it, the usage and the exit code 2
+// (1 is kept for a computation that fails). The check is ours, not
+// std::stoi()'s, because std::stoi() takes "3x" as 3, and a negative
+// number read into an unsigned int asks for four billion levels.
+namespace CommandLine
+{
+  const char *const usage =
+    "usage: step-5                        the block, then 5 levels of the\n"
+    "                                     manufactured solution\n"
+    "       step-5 block                  the block only\n"
+    "       step-5 convergence [LEVELS]   LEVELS levels (1 to 7, default 5)\n"
+    "                                     of the manufactured solution\n"
+    "       step-5 --help                 this text\n"
+    "exit codes: 0 done, 1 the computation failed, 2 a bad argument";
+
+  // A number of levels: one to three decimal digits and nothing else, from
+  // 1 to @p max. Each level has four times the unknowns of the one before
+  // and, with UMFPACK, about four times the memory: level 7 (132,098
+  // unknowns) took 96 s and 0.63 GB, an eighth would take ten minutes and
+  // 2.5 GB, so we refuse it rather than let a typo exhaust the machine.
+  unsigned int
+  parse_levels(const std::string &text, const unsigned int max)
+  {
+    const bool digits =
+      !text.empty() && text.size() <= 3 &&
+      text.find_first_not_of("0123456789") == std::string::npos;
+    const unsigned int levels = digits ? std::stoul(text) : 0;
+    if (levels < 1 || levels > max)
+      throw std::invalid_argument(
+        "the number of levels must be a whole number from 1 to " +
+        std::to_string(max) + ", not '" + text + "' (level 7 has 132,098 " +
+        "unknowns and takes 0.63 GB; each further level four times more)");
+    return levels;
+  }
+} // namespace CommandLine
+
+// @sect3{The main function}
+
+// The program has step-1's first two parts. First the block at four load
+// values $t = 0.25, 0.5, 0.75, 1$, each one static problem started from the
+// previous solution and the previous friction bounds; then the
+// manufactured solution on the meshes $h = 1/4, \dots, 1/64$, with the
+// errors and their observed orders in a ConvergenceTable. The modes
+// "block" and "convergence LEVELS" run one of them. step-1's third part,
+// the study of nonconvexity, has no counterpart: the wall is convex.
+int
+main(int argc, char **argv)
+{
+  using namespace Step5;
+  const std::vector<std::string> arguments(argv + 1, argv + argc);
+  const std::string              mode = arguments.empty() ? "" : arguments[0];
+  // The default of the convergence study: five levels, $h = 1/4$ to $1/64$,
+  // a few seconds in all.
+  unsigned int n_levels = 5;
+  try
+    {
+      // Each mode and the number of arguments it takes, itself included.
+      // One table says which modes exist and how many arguments each takes,
+      // the mode included; the empty mode is the run without arguments. Two
+      // checks against it, and the check of the number of levels, are the
+      // whole validation.
+      const std::map<std::string, std::size_t> modes = {{"", 0},
+                                                        {"block", 1},
+                                                        {"convergence", 2},
+                                                        {"--help", 1}};
+      if (arguments.size() > 0 && (mode.empty() || modes.count(mode) == 0))
+        throw std::invalid_argument("unknown mode '" + mode + "' (the modes " +
+                                    "are block and convergence)");
+      if (arguments.size() > modes.at(mode))
+        throw std::invalid_argument("too many arguments: '" +
+                                    arguments[modes.at(mode)] + "' after '" +
+                                    arguments[modes.at(mode) - 1] + "'");
+      if (arguments.size() == 2)
+        n_levels = CommandLine::parse_levels(arguments[1], 7);
+    }
+  // Every bad argument ends here: the message names it, the usage follows,
+  // and the exit code 2 tells a script that nothing was computed.
+  catch (const std::invalid_argument &error)
+    {
+      std::cerr << "step-5: " << error.what() << ".\n"
+                << CommandLine::usage << std::endl;
+      return 2;
+    }
+  // The arguments are valid. --help prints the usage and stops here, before
+  // any output file is opened.
+  if (mode == "--help")
+    {
+      std::cout << CommandLine::usage << std::endl;
+      return 0;
+    }
+
+  try
+    {
+      if (mode.empty() || mode == "block")
+        {
+          std::cout << "The block, 3 global refinements:" << std::endl;
+          // Part 1: the block on the wall, four load values.
+          const BlockData         block;
+          StaticContactProblem<2> block_problem(block, 3);
+          // The uniqueness condition of step-1, checked before solving. With
+          // the wall $\alpha_\nu = 0$ and it always holds: for fixed friction
+          // bounds there is one solution. Whether the fixed point on the
+          // bounds has one is a question of $\mathcal F$ (the introduction).
+          const double lambda_1 = block_problem.smallness_constant();
+          std::cout << "  " << block_problem.n_dofs()
+                    << " dofs, alpha_nu = " << block.law.alpha
+                    << ", lambda_1 = " << lambda_1
+                    << (block.law.alpha < lambda_1 ?
+                          " (alpha_nu < lambda_1: one solution)" :
+                          " (alpha_nu >= lambda_1: maybe several solutions)")
+                    << std::endl;
+          for (unsigned int n = 1; n <= 4; ++n)
+            {
+              block_problem.run(0.25 * n);
+              std::cout << "  ";
+              block_problem.output_results(Utilities::int_to_string(n, 2));
+            }
+        }
+
+      if (mode.empty() || mode == "convergence")
+        {
+          std::cout << (mode.empty() ? "\n" : "")
+                    << "The manufactured solution:" << std::endl;
+          // Part 2: the manufactured solution on successively refined meshes, a
+          // new problem on each, since the coarse mesh is refined globally. The
+          // table collects the errors and the constant $\lambda_1$ of each
+          // mesh.
+          const ManufacturedData manufactured;
+          ConvergenceTable       table;
+          for (unsigned int refinements = 2; refinements < 2 + n_levels;
+               ++refinements)
+            {
+              StaticContactProblem<2> problem(manufactured, refinements);
+              problem.run(1);
+              const auto [E_H, E_V] = problem.compute_errors(manufactured);
+              table.add_value("1/h", 1u << refinements);
+              table.add_value("dofs", problem.n_dofs());
+              table.add_value("bounds", problem.bound_iterations);
+              table.add_value("Newton", problem.newton_iterations);
+              table.add_value("lambda_1", problem.smallness_constant());
+              table.set_precision("lambda_1", 1);
+              table.add_value("E_H", E_H);
+              table.add_value("E_V", E_V);
+            }
+          for (const std::string column : {"E_H", "E_V"})
+            {
+              table.set_scientific(column, true);
+              table.set_precision(column, 3);
+              table.evaluate_convergence_rates(
+                column, ConvergenceTable::reduction_rate_log2);
+            }
+          table.write_text(std::cout);
+        }
+    }
+  // A computation that fails (a Newton iteration that does not converge, a
+  // file that cannot be written) throws; as deal.II's tutorial programs do,
+  // we print the reason and return 1.
+  catch (std::exception &exc)
+    {
+      std::cerr << "\nException: " << exc.what() << "\nAborting!" << std::endl;
+      return 1;
+    }
+  return 0;
+}
