@@ -39,8 +39,8 @@ main(int argc, char **argv)
   state.time_step   = 0.1;
   state.n_steps     = 10;
   state.n_ranks     = 1;
-  for (const auto &[term, member] : saved_energy_terms())
-    state.energy.emplace_back(term, 1.);
+  for (const SavedEnergyTerm &term : saved_energy_terms())
+    state.energy.emplace_back(term.name, 1.);
   state.fields = {{"displacement", {"velocity", "displacement"}},
                   {"theta", {"theta"}}};
 
@@ -69,10 +69,9 @@ main(int argc, char **argv)
       const std::string why  = read_state("shorter.state", read);
       const auto       &last = saved_energy_terms().back();
       out() << (renamed ? "a term renamed: " : "without the last term: ")
-            << (why.empty() ?
-                  "read, " + last.first + " = " +
-                    std::to_string(read.energy_balance().*last.second) :
-                  "refused")
+            << (why.empty() ? "read, " + last.name + " = " +
+                                std::to_string(last.in(read.energy_balance())) :
+                              "refused")
             << "\n";
     }
 

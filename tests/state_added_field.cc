@@ -13,6 +13,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/coupling/plain_field.h>
 #include <hemicontact/input/parameters.h>
 #include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/simulation/simulation.h>
@@ -81,10 +82,10 @@ end
         auto initial = std::make_shared<FunctionParser<2>>(1);
         initial->initialize("x,y", name == "theta" ? "1 + x*y" : "2 - y", {});
         // the one entry
-        problem->add_field({name,
-                            std::make_shared<FE_Q<2>>(1),
-                            initial,
-                            FieldLayout::scalar_nodal});
+        problem->add_field(plain_field<2>({name,
+                                           std::make_shared<FE_Q<2>>(1),
+                                           initial,
+                                           FieldLayout::scalar_nodal}));
       }
     return problem;
   }

@@ -20,6 +20,7 @@
 #include <hemicontact/input/parameters.h>
 #include <hemicontact/laws/contact_laws.h>
 #include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/thermal/heat_field.h>
 
 #include <cmath>
 #include <iomanip>
@@ -112,6 +113,17 @@ end
     return problem;
   }
 
+  /** The heat model's balance of @p problem's temperature. */
+  template <int dim>
+  const HeatBalance &
+  heat_balance(const ContactProblem<dim> &problem)
+  {
+    return dynamic_cast<const HeatField<dim> &>(
+             *problem.state().coupled_fields.list().at(0).field)
+      .model()
+      .balance();
+  }
+
   /** The mean of the nodal values of @p v's component @p c where x_c = @p at. */
   template <int dim>
   double
@@ -155,7 +167,7 @@ main(int argc, char **argv)
   {
     const auto   problem = run(free_expansion);
     const double theta =
-      problem->state().heat->balance().heat_content; // |Omega| = 1, c_theta = 1
+      heat_balance(*problem).heat_content; // |Omega| = 1, c_theta = 1
     const double e_x = mean_on(*problem, 0, 1) - mean_on(*problem, 0, 0);
     const double e_y = mean_on(*problem, 1, 1) - mean_on(*problem, 1, 0);
     const double e   = 0.5 * theta / (2 * (1 + 1));
@@ -175,7 +187,7 @@ main(int argc, char **argv)
   // 3 c_e e / c_theta
   {
     const auto   problem = run<3>(free_expansion);
-    const double theta   = problem->state().heat->balance().heat_content;
+    const double theta   = heat_balance(*problem).heat_content;
     double       worst   = 0;
     for (unsigned int c = 0; c < 3; ++c)
       worst =
@@ -209,15 +221,16 @@ end
     double       lumped = 0;
     for (unsigned int n = 0; n < 20; ++n)
       lumped = (lumped + a * k * 1) / (1 + a * k);
-    const double theta = problem->state().heat->balance().heat_content;
+    const double theta = heat_balance(*problem).heat_content;
     out() << "(b) Robin contact: mean theta(1) = " << theta
           << ", lumped first mode " << lumped << ", within 2e-4: "
           << (std::abs(theta - lumped) < 2e-4 ? "yes" : "no") << std::endl;
-    const HeatBalance   &h = problem->state().heat->balance();
+    const HeatBalance   &h = heat_balance(*problem);
     const EnergyBalance &e = problem->state().energy;
     out() << "    heat content gained = exchanged heat to 1e-8: "
           << (std::abs(h.heat_content - h.initial_heat_content -
-                       e.exchanged_heat) < 1e-8 * e.exchanged_heat ?
+                       e.coupled_term("exchanged_heat")) <
+                  1e-8 * e.coupled_term("exchanged_heat") ?
                 "yes" :
                 "no")
           << std::endl;
@@ -243,13 +256,15 @@ subsection temperature
   set frictional heat fraction = 0.8
 end
 )");
-    const HeatBalance   &h       = problem->state().heat->balance();
+    const HeatBalance   &h       = heat_balance(*problem);
     const double         gained  = h.heat_content - h.initial_heat_content;
     const EnergyBalance &e       = problem->state().energy;
     out() << "(c) frictional heating: heat gained " << gained
-          << ", frictional heat " << e.frictional_heat << ", equal to 1e-8: "
-          << (e.frictional_heat > 0 && std::abs(gained - e.frictional_heat) <
-                                         1e-8 * e.frictional_heat ?
+          << ", frictional heat " << e.coupled_term("frictional_heat")
+          << ", equal to 1e-8: "
+          << (e.coupled_term("frictional_heat") > 0 &&
+                  std::abs(gained - e.coupled_term("frictional_heat")) <
+                    1e-8 * e.coupled_term("frictional_heat") ?
                 "yes" :
                 "no")
           << std::endl;

@@ -105,7 +105,7 @@ namespace hemicontact
       // the list as written, or without the terms added at its end since
       bool energy_terms = state.energy.size() <= saved_energy_terms().size();
       for (std::size_t i = 0; energy_terms && i < state.energy.size(); ++i)
-        energy_terms = state.energy[i].first == saved_energy_terms()[i].first;
+        energy_terms = state.energy[i].first == saved_energy_terms()[i].name;
       if (!energy_terms || state.n_ranks == 0 || !(state.time_step > 0) ||
           state.step_number > state.n_steps || state.constrained_amg > 2)
         return name + " holds an invalid state (" +

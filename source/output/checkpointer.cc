@@ -94,9 +94,9 @@ namespace hemicontact
     // read_state() checked that the names are those of the list
     EnergyBalance e;
     for (const auto &[name, value] : energy)
-      for (const auto &[term, member] : saved_energy_terms())
-        if (term == name)
-          e.*member = value;
+      for (const SavedEnergyTerm &term : saved_energy_terms())
+        if (term.name == name)
+          term.in(e) = value;
     return e;
   }
 
@@ -238,8 +238,8 @@ namespace hemicontact
         state.step_number = step_number;
         state.time_step   = s.time_step;
         state.n_steps     = s.n_steps;
-        for (const auto &[term, member] : saved_energy_terms())
-          state.energy.emplace_back(term, s.energy.*member);
+        for (const SavedEnergyTerm &term : saved_energy_terms())
+          state.energy.emplace_back(term.name, term.in(s.energy));
         state.fields = by_space;
         for (const SeriesRecord &record : series)
           state.pvd_records.push_back(record.stored());

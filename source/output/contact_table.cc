@@ -118,21 +118,11 @@ namespace hemicontact
       extra.push_back("s_tau");
     if (wear)
       extra.push_back("wear");
-    // with temperature (13.2): theta, and in the velocity classes the heat
-    // the heat step booked, the exchanged k_e (theta_F - theta) and the
-    // frictional gamma |sigma_tau . w_tau| (0 where theta is prescribed);
-    // the static class has no contact heat law (theta is data)
-    std::vector<NodeHeat> heat;
-    const bool            heat_law = s.heat && !s.scheme.is_static();
-    if (s.heat)
-      {
-        heat = s.heat->contact_heat(
-          s.time, s, s.added_fields.vector(HeatModel<dim>::field_name));
-        extra.push_back("temperature");
-        if (heat_law)
-          for (const char *name : {"exchanged_heat", "frictional_heat"})
-            extra.push_back(name);
-      }
+    // the coupled fields' columns, e.g. theta and the contact heat (13.2)
+    const std::vector<std::vector<double>> field_values =
+      s.coupled_fields.contact_values(mechanical_view(s), s.added_fields);
+    for (const std::string &name : s.coupled_fields.contact_columns())
+      extra.push_back(name);
     const unsigned int width =
       dim + dim + 1 + 2 + dim + 2 + dim + 3 + 2 + 1 + extra.size();
     std::vector<double> rows;
@@ -188,15 +178,9 @@ namespace hemicontact
             rows.push_back(s.memory.contact_memory().slip()[node.dofs[0]]);
           if (wear)
             rows.push_back(s.memory.contact_memory().wear()[node.dofs[0]]);
-          if (s.heat)
-            {
-              rows.push_back(heat[i].temperature);
-              if (heat_law)
-                {
-                  rows.push_back(heat[i].exchanged());
-                  rows.push_back(heat[i].frictional());
-                }
-            }
+          rows.insert(rows.end(),
+                      field_values[i].begin(),
+                      field_values[i].end());
         }
 
     const std::vector<std::vector<double>> gathered =

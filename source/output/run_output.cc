@@ -390,8 +390,8 @@ namespace hemicontact
         if (has_holds)
           line << ", at breakpoint/wall " << s.n_at_breakpoint << "/"
                << s.n_at_wall;
-        if (state.heat)
-          line << ", heat content " << state.heat->balance().heat_content;
+        for (const SummaryValue &v : state.coupled_fields.summary())
+          line << ", " << v.long_label << " " << v.value;
         if (s.coupling_passes > 1)
           line << ", coupling passes " << s.coupling_passes;
         if (s.adapted)
@@ -434,8 +434,8 @@ namespace hemicontact
         if (has_holds)
           line << "  breakpoint/wall " << s.n_at_breakpoint << "/"
                << s.n_at_wall;
-        if (state.heat)
-          line << "  heat " << state.heat->balance().heat_content;
+        for (const SummaryValue &v : state.coupled_fields.summary())
+          line << "  " << v.short_label << " " << v.value;
         if (s.coupling_passes > 1)
           line << "  coupling passes " << s.coupling_passes;
       }

@@ -251,12 +251,10 @@ namespace hemicontact
                                      xyz[j],
                                    memory_stress[c++]);
       }
-    // the thermal part -c_e theta of the stress and the heat flux
-    // (doc/theory.md, section 13)
-    if (state.heat)
-      for (auto &field : state.heat->cell_output(
-             state.added_fields.vector(HeatModel<dim>::field_name)))
-        cell_data.push_back(std::move(field));
+    // the coupled fields' cell data, e.g. the thermal part -c_e theta of
+    // the stress and the heat flux (doc/theory.md, section 13)
+    for (auto &field : state.coupled_fields.cell_output(state.added_fields))
+      cell_data.push_back(std::move(field));
     // eta_K of the step written; 0 before the first step
     if (parameters.output.error_estimate)
       {

@@ -235,9 +235,7 @@ namespace hemicontact
     stats.kinetic_after_adaptation = after.kinetic;
     stats.elastic_after_adaptation = after.elastic;
     stats.adapted                  = true;
-    energy.kinetic                 = after.kinetic;
-    energy.elastic                 = after.elastic;
-    energy.thermal                 = after.thermal;
+    after.book_into(energy);
     energy.transfer_change += after.change_from(before);
     // a finer mesh may have a smaller stability limit
     memory_rule_unstable =

@@ -241,12 +241,12 @@ namespace hemicontact
       if (!message.empty())
         throw InputError(message);
     load.compress(VectorOperation::add);
-    // the thermal stress, +(c_e theta, div v) (doc/theory.md 13.2)
-    if (heat)
-      heat->add_thermal_stress(time,
-                               state(),
-                               added_fields.vector(HeatModel<dim>::field_name),
-                               load);
+    // the coupled fields' loads, e.g. the thermal stress +(c_e theta, div
+    // v) (doc/theory.md 13.2)
+    coupled_fields.add_mechanical_loads(time,
+                                        mechanical_view(state()),
+                                        added_fields,
+                                        load);
   }
 
   template <int dim>

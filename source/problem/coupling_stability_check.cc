@@ -3,7 +3,6 @@
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/model/time_step_stability.h>
 #include <hemicontact/problem/stability.h>
-#include <hemicontact/thermal/heat_model.h>
 
 #include <cmath>
 #include <iomanip>
@@ -16,12 +15,9 @@ namespace hemicontact
   double
   staggered_coupling_ratio(const ProblemState<dim> &state)
   {
-    // the static class has no heat step; the iterated coupling solves the
-    // monolithic step (doc/theory.md 13.2)
-    if (state.heat == nullptr || state.scheme.is_static() ||
-        state.parameters.temperature.coupling != TemperatureCoupling::staggered)
-      return 0;
-    return state.heat->largest_coupling_ratio();
+    // each field decides: the static class has no heat step, an iterated
+    // coupling solves the monolithic step (doc/theory.md 13.2)
+    return state.coupled_fields.staggered_coupling().ratio;
   }
 
   template <int dim>
@@ -32,7 +28,9 @@ namespace hemicontact
     // (stability.cc), which counts the mass
     if (state.scheme.time_scheme() != TimeScheme::implicit)
       return;
-    const double ratio = staggered_coupling_ratio(state);
+    const StaggeredCoupling coupling =
+      state.coupled_fields.staggered_coupling();
+    const double ratio = coupling.ratio;
     if (ratio == 0)
       return;
     TimerOutput::Scope              t(timer, "stability check");
@@ -55,24 +53,22 @@ namespace hemicontact
     std::ostringstream message;
     message
       << std::setprecision(4) << "the time step k = " << k
-      << " is above the stability limit of the staggered thermal coupling, "
-         "k <= "
-      << limit << " = 2 kappa_A / (c - kappa_B) with the bulk moduli kappa_A = "
+      << " is above the stability limit of the staggered "
+      << coupling.coupling_name << ", k <= " << limit
+      << " = 2 kappa_A / (c - kappa_B) with the bulk moduli kappa_A = "
       << kappa_v << " and kappa_B = " << kappa
-      << " (2 mu/d + lambda) and c = max c_e^2/c_theta = " << ratio
-      << " (doc/theory.md 13.2): the mechanical step sees the temperature "
-         "of the step before, and the energy of the run would grow without "
+      << " (2 mu/d + lambda) and c = " << coupling.ratio_formula << " = "
+      << ratio << " (doc/theory.md 13.2): the mechanical step sees "
+      << coupling.lagged_field
+      << " of the step before, and the energy of the run would grow without "
          "bound. Choose a time step that divides the end time and is at "
          "most "
       << limit << " (e.g. " << parameters.time.end_time << " / "
-      << std::ceil(parameters.time.end_time / limit)
-      << "), a smaller 'temperature/thermal stress coefficient', a larger "
-         "heat capacity or viscosity. 'temperature/coupling = iterated' "
-         "solves the monolithic step, but its passes converge only below "
-         "about half this limit. 'time/allow unstable time step = true' "
-         "runs it anyway.";
+      << std::ceil(parameters.time.end_time / limit) << "), "
+      << coupling.remedies
+      << " 'time/allow unstable time step = true' runs it anyway.";
     if (!parameters.time.allow_unstable_time_step)
-      throw InputError("temperature: " + message.str());
+      throw InputError(coupling.subsection + ": " + message.str());
     if (Utilities::MPI::this_mpi_process(state.mpi_communicator) == 0)
       std::cerr << "hemicontact: warning: " << message.str() << std::endl;
   }

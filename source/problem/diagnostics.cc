@@ -126,9 +126,7 @@ namespace hemicontact
     StoredEnergy stored;
     stored.kinetic = kinetic;
     stored.elastic = 0.5 * (u_next * tmp);
-    if (state.heat && !scheme.is_static())
-      stored.thermal = state.heat->stored_heat(
-        state.added_fields.vector(HeatModel<dim>::field_name));
+    state.coupled_fields.stored_energies(state.added_fields, stored.coupled);
     return stored;
   }
 
@@ -164,9 +162,7 @@ namespace hemicontact
         return;
       }
     const StoredEnergy stored = stored_energy(state());
-    energy.kinetic            = stored.kinetic;
-    energy.elastic            = stored.elastic;
-    energy.thermal            = stored.thermal;
+    stored.book_into(energy);
     if (initial)
       {
         energy.initial_energy = energy.total_energy();

@@ -56,8 +56,7 @@ namespace hemicontact
     memory_rule_unstable =
       check_time_step_limits(state(), preconditioner, timer);
     check_convexity();
-    if (heat)
-      heat->start(added_fields.vector(HeatModel<dim>::field_name));
+    coupled_fields.start(added_fields);
 
     // the preconditioner as the interrupted run left it (after the checks
     // above, which build AMGs of their own, as at the run's start)

@@ -2,8 +2,8 @@
 #include <deal.II/base/timer.h>
 
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/coupling/partitioned_coupling.h>
 #include <hemicontact/problem/error_indicators.h>
-#include <hemicontact/thermal/coupling_iteration.h>
 
 #include <algorithm>
 #include <functional>
@@ -121,57 +121,50 @@ namespace hemicontact
     update_friction_bounds(start + k, pressure);
     if (const auto context = convexity_recheck(state(), start + k))
       check_convexity(*context);
-    assemble_load(start + k);
-    assemble_step_rhs();
     try
       {
-        StepStatistics stats =
-          solve_with_bound(start + k, pressure, wall_length, false);
-        scheme.displacement_after_step(displacement, velocity, k);
-        // the heat step, staggered or iterated with the mechanical step
-        // (doc/theory.md 13.2)
-        HeatStepEnergy heat_terms;
-        if (heat && !scheme.is_static())
-          {
-            TrilinosWrappers::MPI::Vector &theta =
-              added_fields.vector(HeatModel<dim>::field_name);
-            const auto heat_step = [&]() {
-              TimerOutput::Scope t(timer, "heat step");
-              return heat->heat_step(
-                start + k, k, state(), linear_solver, theta);
-            };
-            const auto undo_mechanical_step = [&]() {
-              scheme.undo_displacement_after_step(displacement, velocity, k);
-            };
-            const auto redo_mechanical_step = [&]() {
-              undo_mechanical_step();
-              assemble_load(start + k);
-              assemble_step_rhs();
-              const StepStatistics again =
-                solve_with_bound(start + k, pressure, wall_length, false);
-              scheme.displacement_after_step(displacement, velocity, k);
-              const unsigned int newton = stats.newton_iterations,
-                                 linear = stats.linear_iterations,
-                                 bound  = stats.bound_iterations;
-              stats                     = again;
-              stats.newton_iterations += newton;
-              stats.linear_iterations += linear;
-              stats.bound_iterations += bound;
-            };
-            unsigned int passes   = 0;
-            heat_terms            = couple_heat_step(parameters.temperature,
-                                          velocity,
-                                          theta,
-                                          heat_step,
-                                          redo_mechanical_step,
-                                          undo_mechanical_step,
-                                          passes);
-            stats.coupling_passes = passes;
-          }
+        // the mechanical step with the coupled fields' steps before and
+        // after it, staggered or iterated (doc/theory.md 13.2)
+        StepStatistics stats;
+        bool           first_solve     = true;
+        const auto     mechanical_step = [&]() {
+          assemble_load(start + k);
+          assemble_step_rhs();
+          const StepStatistics solved =
+            solve_with_bound(start + k, pressure, wall_length, false);
+          scheme.displacement_after_step(displacement, velocity, k);
+          // a repeated solve (an iterated coupling) adds its iterations
+          const unsigned int newton = first_solve ? 0 : stats.newton_iterations,
+                             linear = first_solve ? 0 : stats.linear_iterations,
+                             bound = first_solve ? 0 : stats.bound_iterations;
+          stats                    = solved;
+          stats.newton_iterations += newton;
+          stats.linear_iterations += linear;
+          stats.bound_iterations += bound;
+          first_solve = false;
+        };
+        const auto undo_mechanical_step = [&]() {
+          scheme.undo_displacement_after_step(displacement, velocity, k);
+        };
+        unsigned int                       passes      = 1;
+        const std::vector<FieldStepEnergy> field_terms = couple_step(
+          coupled_fields,
+          added_fields,
+          start + k,
+          k,
+          linear_solver,
+          timer,
+          velocity,
+          [this]() { return mechanical_view(state()); },
+          mechanical_step,
+          undo_mechanical_step,
+          passes);
+        if (coupled_fields.have_steps())
+          stats.coupling_passes = passes;
         if (memory.active())
           memory.commit_step(&velocity, &contact_traction);
         update_energy_balance(/*initial=*/false);
-        book_heat_step(energy, heat_terms);
+        coupled_fields.book(energy, field_terms);
         last_step_length = k;
         return stats;
       }

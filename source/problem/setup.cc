@@ -6,6 +6,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/fields/coupled_field_registry.h>
 #include <hemicontact/problem/contact_node_setup.h>
 #include <hemicontact/problem/contact_problem.h>
 #include <hemicontact/problem/stability.h>
@@ -68,16 +69,17 @@ namespace hemicontact
       memory.measure_slip(scheme.is_static());
     // the wear of the foundation (section 11.12)
     memory.set_static_class(scheme.is_static());
-    // the temperature, one more field of the state (section 13)
-    if (parameters.temperature.enabled)
-      {
-        heat = std::make_unique<HeatModel<dim>>(parameters.temperature,
-                                                parameters.data.constants,
-                                                scheme.is_static(),
-                                                this->data.heat,
-                                                comm);
-        add_field(heat->field(discretization.is_simplex()));
-      }
+    // the coupled fields the parameters enable, each a field of the state
+    // (the temperature, section 13)
+    std::vector<std::string> taken;
+    for (const StateField<dim> &f : state_fields({}))
+      taken.push_back(f.name);
+    create_coupled_fields<dim>(
+      {parameters, scheme.is_static(), this->data, comm},
+      discretization.is_simplex(),
+      added_fields,
+      taken,
+      coupled_fields);
   }
 
   template <int dim>
@@ -157,8 +159,7 @@ namespace hemicontact
     require(Utilities::MPI::sum(n_owned, mpi_communicator) > 0,
             "boundary: the contact boundary Gamma_3 has no free node (every "
             "node is clamped); check 'contact boundary ids'.");
-    if (heat)
-      heat->reinit(added_fields.space(HeatModel<dim>::field_name), state());
+    coupled_fields.reinit(added_fields, mechanical_view(state()));
     preconditioner.reinit(dof_handler, *discretization.mapping);
     memory.reinit(dof_handler,
                   *discretization.mapping,
@@ -357,8 +358,7 @@ namespace hemicontact
       }
     energy = EnergyBalance();
     update_energy_balance(/*initial=*/true);
-    if (heat)
-      heat->start(added_fields.vector(HeatModel<dim>::field_name));
+    coupled_fields.start(added_fields);
   }
 
 #define HEMICONTACT_INSTANTIATE(dim)                               \

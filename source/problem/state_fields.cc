@@ -149,19 +149,27 @@ namespace hemicontact
 
   template <int dim>
   void
-  ContactProblem<dim>::add_field(const FieldDefinition<dim> &definition)
+  ContactProblem<dim>::add_field(std::unique_ptr<CoupledField<dim>> field)
   {
+    AssertThrow(field->energy_terms().empty(),
+                ExcMessage("A coupled field with energy terms is a kind of "
+                           "the registry (fields/coupled_field_registry.cc)."));
     std::vector<std::string> taken;
     for (const StateField<dim> &f : state_fields({}))
       taken.push_back(f.name);
-    added_fields.add(definition, taken);
+    coupled_fields.add(std::move(field),
+                       coupled_energy_terms().size(),
+                       discretization.is_simplex(),
+                       added_fields,
+                       taken);
   }
 
 #define HEMICONTACT_INSTANTIATE(dim)                                         \
   template std::vector<StateField<dim>> ContactProblem<dim>::state_fields(   \
     const std::vector<TrilinosWrappers::MPI::Vector *> &);                   \
   template std::vector<StateField<dim>> ContactProblem<dim>::fields() const; \
-  template void ContactProblem<dim>::add_field(const FieldDefinition<dim> &);
+  template void                         ContactProblem<dim>::add_field(      \
+    std::unique_ptr<CoupledField<dim>>);
   HEMICONTACT_INSTANTIATE(2)
   HEMICONTACT_INSTANTIATE(3)
 #undef HEMICONTACT_INSTANTIATE

@@ -243,8 +243,8 @@ namespace hemicontact
 
   template <int dim>
   void
-  HeatModel<dim>::reinit(const FieldSpace<dim>   &theta_space,
-                         const ProblemState<dim> &state)
+  HeatModel<dim>::reinit(const FieldSpace<dim>     &theta_space,
+                         const MechanicalView<dim> &state)
   {
     space          = &theta_space;
     discretization = &state.discretization;
@@ -361,7 +361,7 @@ namespace hemicontact
   template <int dim>
   void
   HeatModel<dim>::add_thermal_stress(const double                   t,
-                                     const ProblemState<dim>       &state,
+                                     const MechanicalView<dim>     &state,
                                      TrilinosWrappers::MPI::Vector &theta,
                                      TrilinosWrappers::MPI::Vector &load)
   {
@@ -437,7 +437,7 @@ namespace hemicontact
   template <int dim>
   std::vector<NodeHeat>
   HeatModel<dim>::contact_heat(const double                         t,
-                               const ProblemState<dim>             &state,
+                               const MechanicalView<dim>           &state,
                                const TrilinosWrappers::MPI::Vector &theta) const
   {
     const TrilinosWrappers::MPI::Vector w =
@@ -554,7 +554,7 @@ namespace hemicontact
   HeatStepEnergy
   HeatModel<dim>::heat_step(const double                   t,
                             const double                   k,
-                            const ProblemState<dim>       &state,
+                            const MechanicalView<dim>     &state,
                             LinearSolver                  &solver,
                             TrilinosWrappers::MPI::Vector &theta)
   {

@@ -86,7 +86,7 @@ namespace hemicontact
   HeatStepEnergy
   HeatModel<dim>::step_energy(const double                         t,
                               const double                         k,
-                              const ProblemState<dim>             &state,
+                              const MechanicalView<dim>           &state,
                               const TrilinosWrappers::MPI::Vector &theta_old,
                               const TrilinosWrappers::MPI::Vector &theta_new,
                               const std::vector<NodeHeat>         &nodes) const
@@ -151,7 +151,7 @@ namespace hemicontact
   template HeatStepEnergy HeatModel<dim>::step_energy(                    \
     const double,                                                         \
     const double,                                                         \
-    const ProblemState<dim> &,                                            \
+    const MechanicalView<dim> &,                                          \
     const TrilinosWrappers::MPI::Vector &,                                \
     const TrilinosWrappers::MPI::Vector &,                                \
     const std::vector<NodeHeat> &) const;

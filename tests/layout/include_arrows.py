@@ -15,7 +15,7 @@ import os
 import re
 import sys
 
-BELOW_OUTPUT = {"base", "expressions", "laws", "model", "memory", "mesh", "thermal",
+BELOW_OUTPUT = {"base", "coupling", "expressions", "fields", "laws", "model", "memory", "mesh", "thermal",
                 "solver", "state", "problem"}
 FORBIDDEN = {folder: {"output", "simulation"} for folder in BELOW_OUTPUT}
 FORBIDDEN["output"] = {"simulation"}

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <hemicontact/model/energy_term.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -52,32 +54,59 @@ namespace hemicontact
      */
     double memory_work = 0;
     /**
-     * The temperature's terms (doc/theory.md 13.4), zero without one: the
-     * heat step tested with theta_n. thermal = 1/2 c_theta |theta_n|^2;
-     * thermal_dissipation = sum k (K grad theta_n, grad theta_n) (its
-     * numerical dissipation 1/2 c_theta |theta_n - theta_{n-1}|^2 is in
-     * numerical_dissipation); heat_supply = sum k (heat sources, theta_n)
-     * with the prescribed temperature's boundary heat; thermal_coupling_work
-     * = -sum k (c_e div w_n, theta_n), which with the thermal stress's work
-     * in external_work leaves the staggering's sum k (c_e (theta_{n-1} -
-     * theta_n), div w_n).
+     * The terms of the coupled fields (doc/theory.md 13.4), in the order
+     * and with the roles of coupled_energy_terms(): zero for a field the
+     * run does not enable. The numerical dissipation of a field's step is
+     * in numerical_dissipation.
      */
-    double thermal = 0, thermal_dissipation = 0, heat_supply = 0,
-           thermal_coupling_work = 0;
-    /** sum k (c_e theta, div w_n) of the mechanical steps' thermal load:
-     *  the part of external_work that is heat turned into motion. */
-    double thermal_stress_work = 0;
+    std::vector<double> coupled =
+      std::vector<double>(coupled_energy_terms().size(), 0.);
+
+    /** The coupled term named @p name (coupled_energy_terms()). */
+    double
+    coupled_term(const std::string &name) const
+    {
+      const std::vector<EnergyTermSpec> &terms = coupled_energy_terms();
+      for (std::size_t i = 0; i < terms.size(); ++i)
+        if (terms[i].name == name)
+          return coupled[i];
+      return 0;
+    }
+
     /**
-     * The heat booked (doc/theory.md 13.4): sum k sum_i m_i gamma
-     * |sigma_tau . w_tau|_i (frictional) and sum k sum_i m_i k_e,i
-     * (theta_F - theta_n)_i (exchanged), both into the body.
+     * The coupled terms of role @p role summed in their order, each with
+     * its sign @p sign(role) (so that the sums are the numbers the balance
+     * had before a field was added: 0 + x is x).
      */
-    double frictional_heat = 0, exchanged_heat = 0;
+    template <class Term>
+    double
+    coupled_sum(const EnergyRole role, Term term) const
+    {
+      const std::vector<EnergyTermSpec> &terms = coupled_energy_terms();
+      double                             sum   = 0;
+      for (std::size_t i = 0; i < terms.size() && i < coupled.size(); ++i)
+        if (terms[i].role == role)
+          sum = term(sum, coupled[i]);
+      return sum;
+    }
+
+    /** The stored energies of the coupled fields. */
+    double
+    coupled_stored() const
+    {
+      return coupled_sum(EnergyRole::stored,
+                         [](double s, double v) { return s + v; });
+    }
 
     double
     total_energy() const
     {
-      return kinetic + elastic + thermal;
+      double                             e     = kinetic + elastic;
+      const std::vector<EnergyTermSpec> &terms = coupled_energy_terms();
+      for (std::size_t i = 0; i < terms.size() && i < coupled.size(); ++i)
+        if (terms[i].role == EnergyRole::stored)
+          e += coupled[i];
+      return e;
     }
 
     /** E_n - E_0 + dissipations - work: zero up to solver tolerance. */
@@ -88,12 +117,19 @@ namespace hemicontact
                        viscous_dissipation + friction_dissipation +
                        damping_dissipation + numerical_dissipation -
                        external_work;
-      const double thermal_terms =
-        thermal_dissipation - heat_supply - thermal_coupling_work;
+      // the coupled fields' dissipation - supply - coupling, in their order
+      double                             field = 0;
+      const std::vector<EnergyTermSpec> &terms = coupled_energy_terms();
+      for (std::size_t i = 0; i < terms.size() && i < coupled.size(); ++i)
+        if (terms[i].role == EnergyRole::dissipated)
+          field += coupled[i];
+        else if (terms[i].role == EnergyRole::supplied ||
+                 terms[i].role == EnergyRole::coupling)
+          field -= coupled[i];
       // the terms a run without them has are added only where they are,
       // so that such a run's defect is the same number
       return (memory_work == 0. ? d : d + memory_work) +
-             (thermal_terms == 0. ? 0. : thermal_terms);
+             (field == 0. ? 0. : field);
     }
 
     /**
@@ -125,20 +161,25 @@ namespace hemicontact
 
     /**
      * The energy the data put into the body: |E_0| + |sum k <f_n, w_n>| +
-     * |transfer changes| (+ |heat supply| with a temperature), without the
-     * memory's work, which an unstable memory rule inflates with the
-     * energy it creates (doc/theory.md 11.13). The thermal stress's work
-     * (thermal_stress_work, in external_work) and thermal_coupling_work
-     * move energy between the body's motion and its heat: neither is put
-     * in (doc/theory.md 13.4), so that a coupling that creates energy
-     * cannot count its own growth as supplied.
+     * |transfer changes| (+ the |supplied| terms of the coupled fields),
+     * without the memory's work, which an unstable memory rule inflates
+     * with the energy it creates (doc/theory.md 11.13). A field's
+     * converted terms (its load's work, in external_work) and its coupling
+     * terms move energy between the body's motion and the field: neither
+     * is put in (doc/theory.md 13.4), so that a coupling that creates
+     * energy cannot count its own growth as supplied.
      */
     double
     data_energy() const
     {
-      return std::abs(initial_energy) +
-             std::abs(external_work - thermal_stress_work) +
-             std::abs(transfer_change) + std::abs(heat_supply);
+      const double converted =
+        coupled_sum(EnergyRole::converted,
+                    [](double s, double v) { return s + v; });
+      const double supplied =
+        coupled_sum(EnergyRole::supplied,
+                    [](double s, double v) { return s + std::abs(v); });
+      return std::abs(initial_energy) + std::abs(external_work - converted) +
+             std::abs(transfer_change) + supplied;
     }
 
     /** E_n relative to data_energy(). */
@@ -149,35 +190,56 @@ namespace hemicontact
     }
   };
 
+  /** A term of an EnergyBalance that a checkpoint stores, by name: a
+   *  mechanical member or a coupled field's term. */
+  struct SavedEnergyTerm
+  {
+    std::string name;
+    /** The mechanical term; nullptr for EnergyBalance::coupled[index]. */
+    double EnergyBalance::*member = nullptr;
+    std::size_t            index  = 0;
+
+    double &
+    in(EnergyBalance &e) const
+    {
+      return member != nullptr ? e.*member : e.coupled[index];
+    }
+    double
+    in(const EnergyBalance &e) const
+    {
+      return member != nullptr ? e.*member : e.coupled[index];
+    }
+  };
+
   /**
    * The terms of an EnergyBalance that a checkpoint stores, by name: the
    * one list that writing and reading a checkpoint loop over (J_n is the
-   * step's own and is not stored). A term is added at the end: a
-   * checkpoint that holds the list without the terms added after it
-   * resumes with their sums from zero.
+   * step's own and is not stored): the mechanical terms, then
+   * coupled_energy_terms(). A term is added at the end: a checkpoint that
+   * holds the list without the terms added after it resumes with their
+   * sums from zero.
    */
-  inline const std::vector<std::pair<std::string, double EnergyBalance::*>> &
+  inline const std::vector<SavedEnergyTerm> &
   saved_energy_terms()
   {
-    using E = EnergyBalance;
-    static const std::vector<std::pair<std::string, double E::*>> terms{
-      {"kinetic", &E::kinetic},
-      {"elastic", &E::elastic},
-      {"initial_energy", &E::initial_energy},
-      {"viscous_dissipation", &E::viscous_dissipation},
-      {"friction_dissipation", &E::friction_dissipation},
-      {"damping_dissipation", &E::damping_dissipation},
-      {"external_work", &E::external_work},
-      {"numerical_dissipation", &E::numerical_dissipation},
-      {"transfer_change", &E::transfer_change},
-      {"memory_work", &E::memory_work},
-      {"thermal", &E::thermal},
-      {"thermal_dissipation", &E::thermal_dissipation},
-      {"heat_supply", &E::heat_supply},
-      {"thermal_coupling_work", &E::thermal_coupling_work},
-      {"frictional_heat", &E::frictional_heat},
-      {"exchanged_heat", &E::exchanged_heat},
-      {"thermal_stress_work", &E::thermal_stress_work}};
+    static const std::vector<SavedEnergyTerm> terms = []() {
+      using E = EnergyBalance;
+      std::vector<SavedEnergyTerm> list{
+        {"kinetic", &E::kinetic},
+        {"elastic", &E::elastic},
+        {"initial_energy", &E::initial_energy},
+        {"viscous_dissipation", &E::viscous_dissipation},
+        {"friction_dissipation", &E::friction_dissipation},
+        {"damping_dissipation", &E::damping_dissipation},
+        {"external_work", &E::external_work},
+        {"numerical_dissipation", &E::numerical_dissipation},
+        {"transfer_change", &E::transfer_change},
+        {"memory_work", &E::memory_work}};
+      const std::vector<EnergyTermSpec> &coupled = coupled_energy_terms();
+      for (std::size_t i = 0; i < coupled.size(); ++i)
+        list.push_back({coupled[i].name, nullptr, i});
+      return list;
+    }();
     return terms;
   }
 } // namespace hemicontact

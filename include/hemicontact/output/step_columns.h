@@ -3,6 +3,7 @@
 #include <hemicontact/model/energy_balance.h>
 #include <hemicontact/solver/step_statistics.h>
 
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -17,9 +18,9 @@ namespace hemicontact
   struct StepColumn
   {
     std::string name;
-    void (*write)(std::ostream &,
-                  const StepStatistics &,
-                  const EnergyBalance &);
+    std::function<
+      void(std::ostream &, const StepStatistics &, const EnergyBalance &)>
+      write;
   };
 
   /** The columns of steps.csv, in their order: the one list of them. */

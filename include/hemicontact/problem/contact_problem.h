@@ -29,7 +29,6 @@
 #include <hemicontact/state/added_fields.h>
 #include <hemicontact/state/state_field.h>
 #include <hemicontact/state/state_source.h>
-#include <hemicontact/thermal/heat_model.h>
 
 #include <memory>
 #include <string>
@@ -191,11 +190,13 @@ namespace hemicontact
     /**
      * Add a field to the state (before setup() or resume()): one entry,
      * and checkpoints, resume, adaptation and the output take it
-     * (doc/extending.md, "The state"). Throws InputError if its name is
-     * taken.
+     * (doc/extending.md, "The state"): plain_field() of a definition, or
+     * a coupled field with its hooks but no energy terms (those of a
+     * registered kind are in the registry). Throws InputError if its name
+     * is taken.
      */
     void
-    add_field(const FieldDefinition<dim> &definition);
+    add_field(std::unique_ptr<CoupledField<dim>> field);
 
     /** The added fields (their vectors, to set and to read). */
     AddedFields<dim> &
@@ -257,7 +258,7 @@ namespace hemicontact
               n_steps,
               memory,
               memory_rule_unstable,
-              heat.get(),
+              coupled_fields,
               added_fields};
     }
     /** @} */
@@ -380,11 +381,11 @@ namespace hemicontact
      */
     bool memory_rule_unstable = false;
     /**
-     * The temperature (doc/theory.md, section 13): the field
-     * "temperature" of the state, its load and its heat step; nullptr
-     * without 'temperature/enabled'.
+     * The coupled fields (doc/extending.md, "A coupled field"): those the
+     * parameters enable (the temperature, doc/theory.md section 13), by the
+     * registry, and those add_field() adds.
      */
-    std::unique_ptr<HeatModel<dim>> heat;
+    CoupledFields<dim> coupled_fields;
 
     Discretization<dim> discretization;
     DoFHandler<dim>     dof_handler;

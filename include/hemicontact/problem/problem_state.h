@@ -6,6 +6,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <hemicontact/coupling/coupled_fields.h>
+#include <hemicontact/coupling/mechanical_view.h>
 #include <hemicontact/input/parameters.h>
 #include <hemicontact/laws/friction_law.h>
 #include <hemicontact/laws/normal_law.h>
@@ -26,9 +28,6 @@
 namespace hemicontact
 {
   using namespace dealii;
-
-  template <int dim>
-  class HeatModel;
 
   /** The last check of the convexity of the step energy (diagnostics.cc). */
   struct ConvexityCheck
@@ -97,11 +96,30 @@ namespace hemicontact
      * (allowed by 'time/allow unstable time step').
      */
     bool memory_rule_unstable;
-    /** The temperature's model, or nullptr (no 'temperature'). */
-    const HeatModel<dim> *heat;
-    /** The fields added to the state (the temperature among them). */
+    /** The coupled fields of the run (the temperature among them). */
+    const CoupledFields<dim> &coupled_fields;
+    /** The fields added to the state (the coupled fields' among them). */
     const AddedFields<dim> &added_fields;
   };
+
+  /** What the coupled fields read of @p state. */
+  template <int dim>
+  MechanicalView<dim>
+  mechanical_view(const ProblemState<dim> &state)
+  {
+    return {state.discretization,
+            state.dof_handler,
+            state.locally_owned_dofs,
+            state.locally_relevant_dofs,
+            state.base_constraints,
+            state.velocity,
+            state.displacement,
+            state.contact_traction,
+            state.contact_nodes,
+            state.time,
+            state.scheme.is_static(),
+            state.added_fields};
+  }
 
   /**
    * Whether an adaptation is due after the step just taken: every
@@ -121,16 +139,36 @@ namespace hemicontact
   {
     double kinetic = 0; ///< rho/2 |w_n|^2
     double elastic = 0; ///< 1/2 a_B(u, u), u held after step n
-    /** 1/2 c_theta |theta_n|^2 in the velocity classes' heat equation */
-    double thermal = 0;
+    /** The coupled fields' stored terms in EnergyBalance::coupled's
+     *  layout (the others zero). */
+    std::vector<double> coupled =
+      std::vector<double>(coupled_energy_terms().size(), 0.);
 
     /** The change from @p before (in the order of the terms, so that a
-     *  run without temperature books the same number as it always has). */
+     *  run without coupled fields books the same number as it always has). */
     double
     change_from(const StoredEnergy &before) const
     {
-      return kinetic + elastic + thermal - before.kinetic - before.elastic -
-             before.thermal;
+      double change = kinetic + elastic;
+      for (const double e : coupled)
+        change += e;
+      change -= before.kinetic;
+      change -= before.elastic;
+      for (const double e : before.coupled)
+        change -= e;
+      return change;
+    }
+
+    /** The stored terms into @p energy. */
+    void
+    book_into(EnergyBalance &energy) const
+    {
+      energy.kinetic                           = kinetic;
+      energy.elastic                           = elastic;
+      const std::vector<EnergyTermSpec> &terms = coupled_energy_terms();
+      for (std::size_t i = 0; i < terms.size(); ++i)
+        if (terms[i].role == EnergyRole::stored)
+          energy.coupled[i] = coupled[i];
     }
   };
 

@@ -9,11 +9,10 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <hemicontact/coupling/mechanical_view.h>
 #include <hemicontact/expressions/expression.h>
 #include <hemicontact/input/parameters.h>
-#include <hemicontact/model/energy_balance.h>
 #include <hemicontact/model/problem_data.h>
-#include <hemicontact/problem/problem_state.h>
 #include <hemicontact/solver/linear_solver.h>
 #include <hemicontact/state/added_fields.h>
 
@@ -49,19 +48,6 @@ namespace hemicontact
     /** k sum_i m_i k_e,i (theta_F - theta_n)_i: the heat exchanged in */
     double exchanged_heat = 0;
   };
-
-  /** Add the terms of heat step @p step to the sums of @p energy. */
-  inline void
-  book_heat_step(EnergyBalance &energy, const HeatStepEnergy &step)
-  {
-    energy.numerical_dissipation += step.numerical;
-    energy.thermal_dissipation += step.dissipation;
-    energy.heat_supply += step.supply;
-    energy.thermal_coupling_work += step.coupling;
-    energy.thermal_stress_work += step.stress_work;
-    energy.frictional_heat += step.frictional_heat;
-    energy.exchanged_heat += step.exchanged_heat;
-  }
 
   /** What the heat model reports of the run (doc/theory.md, section 13.4). */
   struct HeatBalance
@@ -149,7 +135,8 @@ namespace hemicontact
      * are checked to exist on the mesh (InputError).
      */
     void
-    reinit(const FieldSpace<dim> &theta_space, const ProblemState<dim> &state);
+    reinit(const FieldSpace<dim>     &theta_space,
+           const MechanicalView<dim> &state);
 
     /**
      * Add the thermal stress load (c_e theta, div v) to @p load (the
@@ -158,7 +145,7 @@ namespace hemicontact
      */
     void
     add_thermal_stress(const double                   t,
-                       const ProblemState<dim>       &state,
+                       const MechanicalView<dim>     &state,
                        TrilinosWrappers::MPI::Vector &theta,
                        TrilinosWrappers::MPI::Vector &load);
 
@@ -170,7 +157,7 @@ namespace hemicontact
     HeatStepEnergy
     heat_step(const double                   t,
               const double                   k,
-              const ProblemState<dim>       &state,
+              const MechanicalView<dim>     &state,
               LinearSolver                  &solver,
               TrilinosWrappers::MPI::Vector &theta);
 
@@ -182,7 +169,7 @@ namespace hemicontact
      */
     std::vector<NodeHeat>
     contact_heat(const double                         t,
-                 const ProblemState<dim>             &state,
+                 const MechanicalView<dim>           &state,
                  const TrilinosWrappers::MPI::Vector &theta) const;
 
     /**
@@ -243,7 +230,7 @@ namespace hemicontact
     HeatStepEnergy
     step_energy(const double                         t,
                 const double                         k,
-                const ProblemState<dim>             &state,
+                const MechanicalView<dim>           &state,
                 const TrilinosWrappers::MPI::Vector &theta_old,
                 const TrilinosWrappers::MPI::Vector &theta_new,
                 const std::vector<NodeHeat>         &nodes) const;
