@@ -51,6 +51,9 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 
+// And a few headers of the C++ standard library: containers for the
+// contact nodes, streams for the output files, and <limits> for the start
+// of the power iteration and for nothing else.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -119,6 +122,8 @@ namespace Step2
     // The response $\xi(r)$ for $r > 0$, the remainder $p(r)$ and its
     // derivative $p'(r)$.
     double
+    // The response is the jump plus the remainder: $a$ at $r = 0^+$, falling
+    // towards $b$ as $r$ grows.
     response(const double r) const
     {
       return a + remainder(r);
@@ -142,6 +147,10 @@ namespace Step2
     // for small $\beta r$ where the difference would cancel them: the line
     // search compares energies that differ in their last digits.
     double
+    // The energy of the line search, and so the choice of step lengths,
+    // rests on this number: an approximate potential would let the line
+    // search accept steps that raise the true $J_n$, so we integrate $\xi$
+    // in closed form.
     potential(const double r) const
     {
       if (r <= 0)
@@ -202,6 +211,11 @@ namespace Step2
 
     virtual ~ProblemData() = default;
 
+    // What a problem supplies, in the way deal.II's Function class asks for
+    // values: the coarse mesh with its boundary ids, and the two loads as
+    // functions of the point and the time. Everything the solver
+    // needs beyond these (the stress, the laws) is the same for every problem
+    // of this program and lives in this base class.
     virtual void
     make_coarse_grid(Triangulation<dim> &triangulation) const = 0;
 
@@ -555,6 +569,11 @@ namespace Step2
   template <int dim>
   struct ContactNode
   {
+    // The position serves the output only (the x column of contact-NN.csv);
+    // the dofs are the node's $d$ degrees of freedom, in the order of the
+    // components; mass is $m_i$; normal is $\nu_i$; c is $c_i$. The branches
+    // start as "separating" and "stick": the first update_active_set(), before
+    // any Newton step, replaces them by those of the start.
     Point<dim>                               position;
     std::array<types::global_dof_index, dim> dofs;
     double                                   mass = 0;
@@ -648,6 +667,8 @@ namespace Step2
     const double time_step; // $k$
     double       time = 0;  // $t_n$
 
+    // The finite element machinery of step-8: a mesh, $Q_1$ in each of the
+    // $d$ components, and the numbering of the degrees of freedom.
     Triangulation<dim> triangulation;
     FESystem<dim>      fe;
     DoFHandler<dim>    dof_handler;
@@ -731,6 +752,9 @@ namespace Step2
   void
   DynamicContactProblem<dim>::setup_system()
   {
+    // The clamped boundary $\Gamma_1$ (boundary id 0) becomes constraints
+    // $w = 0$ on its degrees of freedom; assembling with them (as step-8
+    // does) keeps $K_0$ symmetric and positive definite on the remaining ones.
     dof_handler.distribute_dofs(fe);
 
     clamped_constraints.clear();
@@ -740,6 +764,10 @@ namespace Step2
                                              clamped_constraints);
     clamped_constraints.close();
 
+    // We build the pattern without the constraints: the Newton constraints
+    // change from iteration to iteration, and a pattern that ignores them has
+    // room for every set of them (each ties only the components of one node,
+    // which are coupled anyway).
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     DoFTools::make_sparsity_pattern(dof_handler, dsp);
     sparsity_pattern.copy_from(dsp);
@@ -770,7 +798,7 @@ namespace Step2
   // (they do not move). The constant $c_i$ of the complementarity
   // functions is the mean diagonal entry of $K_0$ at the node over $m_i$,
   // and at least twice the law's steepest rise. Why a floor: on a free
-  // segment the multiplier $s$ falls by $p'$ as $w_\nu$ grows, so $q =
+  // segment the multiplier $s_\nu$ falls by $p'$ as $w_\nu$ grows, so $q =
   // s + c\,w_\nu$ grows along the law only if $c > p'$; below that an
   // iterate could be held on the wrong branch. The exponential law never
   // rises, so here the floor is zero. The diagonal of $K_0$ makes $c_i
@@ -794,6 +822,12 @@ namespace Step2
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary() && face->boundary_id() == BoundaryIds::contact)
           {
+            // The face integrals of $\varphi_i$ and $\varphi_i\nu$ with two
+            // Gauss points are exact for $Q_1$ on straight faces. Each
+            // component's shape function contributes to its own entry, so that
+            // mass and normal come out per degree of freedom: we read the mass
+            // at the node's first component and the normal's components at
+            // its components.
             fe_face_values.reinit(cell, face);
             cell->get_dof_indices(dofs);
             for (const unsigned int q :
@@ -908,6 +942,11 @@ namespace Step2
     rhs    = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
+        // The cell matrix has step-8's form with the viscosity for the
+        // elasticity, $A\varepsilon(\varphi_i)$ against
+        // $\varepsilon(\varphi_j)$, plus the inertia; the stress laws come
+        // from the problem data, so that a different material changes one
+        // function.
         cell_matrix = 0;
         cell_rhs    = 0;
         fe_values.reinit(cell);
@@ -948,6 +987,11 @@ namespace Step2
                 f0 * fe_load[velocity].value(i, q) * fe_load.JxW(q);
           }
         for (const auto &face : cell->face_iterators())
+          // Every boundary face that is not clamped carries a traction: $f_2$
+          // on
+          // $\Gamma_2$, and, for the manufactured solution, $f_3$ on $\Gamma_3$
+          // (the block's data return zero there, since its contact forces come
+          // from the laws alone).
           if (face->at_boundary() &&
               face->boundary_id() != BoundaryIds::clamped)
             {
@@ -982,17 +1026,18 @@ namespace Step2
   // From the residual $R = K_0 w - \ell_n$ the nodal contact force is
   // $G_i = -R_i$ (the force the laws must supply for equilibrium), and
   // the traction is $G_i/m_i$. Split into normal and tangential parts, the
-  // multipliers of the convex parts of the laws are
+  // multipliers of the convex parts of the laws are (the members s and
+  // lambda of NodeState; $\lambda$ alone stays Lam\'e's constant)
   // @f[
-  //   s = G_i\cdot\nu/m_i - p(w_\nu),\qquad
-  //   \lambda = G_{i,\tau}/m_i
+  //   s_\nu = G_i\cdot\nu/m_i - p(w_\nu),\qquad
+  //   s_\tau = G_{i,\tau}/m_i
   // @f]
   // (Tresca friction has no remainder), and the complementarity functions
   // (the introduction shows why they vanish exactly where the laws hold)
   // are
   // @f[
-  //   C_\nu = s - P_{[0,a]}(s + c\,w_\nu),\qquad
-  //   C_\tau = \lambda - P_{|\cdot|\le F_b}(\lambda + c\,w_\tau).
+  //   C_\nu = s_\nu - P_{[0,a]}(s_\nu + c\,w_\nu),\qquad
+  //   C_\tau = s_\tau - P_{|\cdot|\le F_b}(s_\tau + c\,w_\tau).
   // @f]
   // Both vanish exactly at a solution of the nodal contact conditions.
   template <int dim>
@@ -1030,7 +1075,7 @@ namespace Step2
     return m;
   }
 
-  // The projection onto the friction disk $|\lambda| \le F_b$.
+  // The projection onto the friction disk $|s_\tau| \le F_b$.
   template <int dim>
   Tensor<1, dim>
   project_on_disk(const Tensor<1, dim> &q, const double F_b)
@@ -1051,7 +1096,9 @@ namespace Step2
     unsigned int n_changed = 0;
     for (ContactNode<dim> &node : contact_nodes)
       {
-        const NodeState        m  = node_state(node, residual);
+        const NodeState m = node_state(node, residual);
+        // The thresholds are the kinks of the projections: a value exactly on a
+        // kink goes to the held branch, where the projection is the identity.
         const NormalBranch     nb = m.q_nu < 0 ? NormalBranch::separating :
                                     m.q_nu <= data.law.jump() ?
                                                  NormalBranch::stick :
@@ -1114,7 +1161,7 @@ namespace Step2
   //   F_b c /(|q_\tau| - F_b)\,(I - \nu\otimes\nu - d\otimes d)$, which
   //   vanishes in 2D (the denominator is kept above $|q_\tau|/100$ for
   //   nodes that barely slip). The term $T_i w_\tau$: the Newton step of
-  //   $C_\tau = 0$ gives the new multiplier $\lambda = F_b d + T_i x_i /
+  //   $C_\tau = 0$ gives the new multiplier $s_\tau = F_b d + T_i x_i /
   //   m_i$, whose part across $d$ grows with the new slip $x_i$. Written as
   //   $f_i + L_i(x_i - w_i)$, like the other forces, it needs $f_i = m_i
   //   F_b d + T_i w_i$, and $T_i w_i = T_i w_\tau$ since $T_i\nu = 0$.
@@ -1135,6 +1182,10 @@ namespace Step2
         const bool normal_held = node.normal_branch == NormalBranch::stick;
         const bool tangent_held =
           node.tangential_branch == TangentialBranch::stick;
+        // A held condition is solved for one component, and we divide by that
+        // component of the normal: we pick the largest, $|\nu_k| \ge
+        // 1/\sqrt{d}$, so that the division is always well conditioned,
+        // whatever the shape of $\Gamma_3$.
         unsigned int k = 0;
         for (unsigned int c = 1; c < dim; ++c)
           if (std::abs(node.normal[c]) > std::abs(node.normal[k]))
@@ -1166,6 +1217,10 @@ namespace Step2
 
     assemble_system(newton_constraints, newton_matrix, newton_rhs);
 
+    // The constraints are closed, and the cell terms are in the matrix and the
+    // right-hand side. What remains are the nodal terms of the free branches,
+    // which we add through the same constraints, as if each contact node were
+    // a little element with $d$ degrees of freedom.
     // the nodal terms of the free branches
     FullMatrix<double>                   node_matrix(dim, dim);
     Vector<double>                       node_rhs(dim);
@@ -1271,6 +1326,9 @@ namespace Step2
     newton_iterations = 0;
     for (unsigned int iteration = 0;; ++iteration)
       {
+        // The residual of the current iterate decides everything else: the
+        // branches, the stopping test and the right-hand side of the Newton
+        // step.
         stiffness_matrix.vmult(residual, solution);
         residual -= load;
         const unsigned int n_changed = update_active_set(residual);
@@ -1282,6 +1340,10 @@ namespace Step2
                                "converge in 50 iterations."));
 
         assemble_newton_system(residual);
+        // The matrix changes with the branches, so we factorise it in every
+        // iteration. On the meshes of this program UMFPACK does this
+        // quickly, and a direct solver keeps the iteration count a property
+        // of the nonsmooth method alone, with no inner tolerance to tune.
         SparseDirectUMFPACK direct_solver;
         direct_solver.initialize(newton_matrix);
         Vector<double> trial(newton_rhs);
@@ -1381,6 +1443,9 @@ namespace Step2
   double
   DynamicContactProblem<dim>::smallness_constant() const
   {
+    // We never assemble $N$ as a matrix: it is diagonal in the nodes, and
+    // applying it is one loop over the contact nodes, which project $v$ onto
+    // their normals and weight it with $m_i$.
     const auto apply_N = [&](const Vector<double> &v, Vector<double> &Nv) {
       Nv = 0;
       for (const ContactNode<dim> &node : contact_nodes)
@@ -1393,6 +1458,10 @@ namespace Step2
         }
     };
 
+    // The clamped degrees of freedom have a nonzero diagonal entry in the
+    // condensed $K_0$ (deal.II puts one there when it condenses), so $K_0$
+    // is invertible, and the power iteration never sees them: $N$ vanishes
+    // there.
     SparseDirectUMFPACK K_inverse;
     K_inverse.initialize(stiffness_matrix);
     Vector<double> x(dof_handler.n_dofs()), Nx(x), Kx(x);
@@ -1400,6 +1469,10 @@ namespace Step2
       for (unsigned int c = 0; c < dim; ++c)
         x(node.dofs[c]) = node.normal[c];
 
+    // The power iteration. Each step applies $K_0^{-1}N$ and normalises; the
+    // iterate approaches the eigenvector of the largest eigenvalue of
+    // $K_0^{-1}N$ at the rate of the ratio of the two largest, and the cap of
+    // 1000 steps guards against a pair too close to separate.
     double lambda = std::numeric_limits<double>::max();
     for (unsigned int iteration = 0; iteration < 1000; ++iteration)
       {
@@ -1436,6 +1509,8 @@ namespace Step2
   DynamicContactProblem<dim>::output_results(const std::string &name) const
   {
     DataOut<dim> data_out;
+    // The VTU file, as in step-8: the $d$ components together form one vector
+    // field, so that ParaView can warp the mesh by it.
     data_out.attach_dof_handler(dof_handler);
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(dim,
@@ -1489,9 +1564,9 @@ namespace Step2
       }
 
     // The contact quantities come from the residual at the solution, as in
-    // solve(): the column minus_sigma_nu is $s + p(w_\nu)$, the whole
+    // solve(): the column minus_sigma_nu is $s_\nu + p(w_\nu)$, the whole
     // normal traction, and sigma_tau the first component of the
-    // multiplier $\lambda$ (the tangent of the bottom is $e_x$).
+    // multiplier $s_\tau$ (the tangent of the bottom is $e_x$).
     Vector<double> residual(dof_handler.n_dofs());
     stiffness_matrix.vmult(residual, solution);
     residual -= load;
@@ -1573,6 +1648,9 @@ namespace Step2
     double E_H2 = 0, E_V2 = 0, E_u2 = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
+        // We integrate the squared errors cell by cell, with the exact solution
+        // at the quadrature points and the discrete one interpolated there by
+        // FEValues.
         fe_values.reinit(cell);
         fe_values[velocity].get_function_values(solution, values);
         fe_values[velocity].get_function_symmetric_gradients(solution, strains);
@@ -1660,6 +1738,10 @@ main(int argc, char **argv)
   try
     {
       // Each mode and the number of arguments it takes, itself included.
+      // One table says which modes exist and how many arguments each takes,
+      // the mode included; the empty mode is the run without arguments. Two
+      // checks against it, and the check of the number of levels, are the
+      // whole validation.
       const std::map<std::string, std::size_t> modes = {{"", 0},
                                                         {"block", 1},
                                                         {"convergence", 2},
@@ -1674,12 +1756,16 @@ main(int argc, char **argv)
       if (arguments.size() == 2)
         n_levels = CommandLine::parse_levels(arguments[1], 5);
     }
+  // Every bad argument ends here: the message names it, the usage follows,
+  // and the exit code 2 tells a script that nothing was computed.
   catch (const std::invalid_argument &error)
     {
       std::cerr << "step-2: " << error.what() << ".\n"
                 << CommandLine::usage << std::endl;
       return 2;
     }
+  // The arguments are valid. --help prints the usage and stops here, before
+  // any output file is opened.
   if (mode == "--help")
     {
       std::cout << CommandLine::usage << std::endl;
@@ -1775,6 +1861,9 @@ main(int argc, char **argv)
           table.write_text(std::cout);
         }
     }
+  // A computation that fails (a Newton iteration that does not converge, a
+  // file that cannot be written) throws; as deal.II's tutorial programs do,
+  // we print the reason and return 1.
   catch (std::exception &exc)
     {
       std::cerr << "\nException: " << exc.what() << "\nAborting!" << std::endl;

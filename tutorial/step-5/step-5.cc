@@ -600,7 +600,7 @@ namespace Step5
   // (they do not move). The constant $c_i$ of the complementarity
   // functions is the mean diagonal entry of $K$ at the node over $m_i$,
   // and at least twice the law's steepest rise. Why a floor: on a free
-  // segment the multiplier $s$ falls by $p'$ as $u_\nu$ grows, so $q =
+  // segment the multiplier $s_\nu$ falls by $p'$ as $u_\nu$ grows, so $q =
   // s + c\,u_\nu$ grows along the law only if $c > p'$; below that an
   // iterate could be held on the wrong branch. The diagonal of $K$ makes
   // $c_i u_\nu$ and $s$ forces of the same size, so that neither term of
@@ -788,17 +788,18 @@ namespace Step5
   // From the residual $R = K u - F_n$ the nodal contact force is
   // $G_i = -R_i$ (the force the laws must supply for equilibrium), and
   // the traction is $G_i/m_i$. Split into normal and tangential parts, the
-  // multipliers of the convex parts of the laws are
+  // multipliers of the convex parts of the laws are (the members s and
+  // lambda of NodeState; $\lambda$ alone stays Lam\'e's constant)
   // @f[
-  //   s = G_i\cdot\nu/m_i - p(u_\nu),\qquad
-  //   \lambda = G_{i,\tau}/m_i
+  //   s_\nu = G_i\cdot\nu/m_i - p(u_\nu),\qquad
+  //   s_\tau = G_{i,\tau}/m_i
   // @f]
   // (Tresca friction has no remainder), and the complementarity functions
   // (the introduction shows why they vanish exactly where the laws hold)
   // are
   // @f[
-  //   C_\nu = s - P_{[0,a]}(s + c\,u_\nu),\qquad
-  //   C_\tau = \lambda - P_{|\cdot|\le F_b}(\lambda + c\,u_\tau).
+  //   C_\nu = s_\nu - P_{[0,a]}(s_\nu + c\,u_\nu),\qquad
+  //   C_\tau = s_\tau - P_{|\cdot|\le F_b}(s_\tau + c\,u_\tau).
   // @f]
   // Both vanish exactly at a solution of the nodal contact conditions.
   template <int dim>
@@ -841,7 +842,7 @@ namespace Step5
     return m;
   }
 
-  // The projection onto the friction disk $|\lambda| \le F_b$.
+  // The projection onto the friction disk $|s_\tau| \le F_b$.
   template <int dim>
   Tensor<1, dim>
   project_on_disk(const Tensor<1, dim> &q, const double F_b)
@@ -930,7 +931,7 @@ namespace Step5
   //   F_b c /(|q_\tau| - F_b)\,(I - \nu\otimes\nu - d\otimes d)$, which
   //   vanishes in 2D (the denominator is kept above $|q_\tau|/100$ for
   //   nodes that barely slip). The term $T_i u_\tau$: the Newton step of
-  //   $C_\tau = 0$ gives the new multiplier $\lambda = F_b d + T_i x_i /
+  //   $C_\tau = 0$ gives the new multiplier $s_\tau = F_b d + T_i x_i /
   //   m_i$, whose part across $d$ grows with the new slip $x_i$. Written as
   //   $f_i + L_i(x_i - u_i)$, like the other forces, it needs $f_i = m_i
   //   F_b d + T_i u_i$, and $T_i u_i = T_i u_\tau$ since $T_i\nu = 0$.
@@ -1183,9 +1184,9 @@ namespace Step5
 
   // The pressure at a node is the normal part of its contact traction,
   // $p_\nu = -\sigma_\nu = G_i\cdot\nu_i/m_i$, which node_state() gives as
-  // $s + p(u_\nu) = s$ (the wall has no remainder). At a separating node it
-  // is zero up to the solver's tolerance and may be slightly negative, so
-  // we take its positive part. We return the largest change of a bound
+  // $s_\nu + p(u_\nu) = s_\nu$ (the wall has no remainder). At a separating
+  // node it is zero up to the solver's tolerance and may be slightly negative,
+  // so we take its positive part. We return the largest change of a bound
   // relative to the largest new bound (zero if all bounds stay zero).
   template <int dim>
   double
@@ -1344,9 +1345,9 @@ namespace Step5
       }
 
     // The contact quantities come from the residual at the solution, as in
-    // solve(): the column minus_sigma_nu is $s + p(u_\nu)$, the whole
+    // solve(): the column minus_sigma_nu is $s_\nu + p(u_\nu)$, the whole
     // normal traction, and sigma_tau the first component of the
-    // multiplier $\lambda$ (the tangent of the bottom is $e_x$).
+    // multiplier $s_\tau$ (the tangent of the bottom is $e_x$).
     // (The residual at the solution is the contact force that balances the
     // body; dividing by $m_i$ turns it into the traction a pressure sensor in
     // the foundation would read.)
