@@ -1,6 +1,6 @@
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/expressions/constants.h>
 #include <hemicontact/laws/friction_bound.h>
-#include <hemicontact/model/problem_data.h>
 
 #include <cmath>
 #include <sstream>

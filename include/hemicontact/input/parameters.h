@@ -3,7 +3,7 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <hemicontact/solver/solver_tuning.h>
+#include <hemicontact/input/solver_tuning.h>
 
 #include <algorithm>
 #include <string>

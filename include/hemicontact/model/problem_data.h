@@ -4,6 +4,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/vector.h>
 
+#include <hemicontact/expressions/constants.h>
 #include <hemicontact/input/parameters.h>
 #include <hemicontact/laws/friction_bound.h>
 
@@ -93,13 +94,6 @@ namespace hemicontact
   template <int dim>
   ProblemData<dim>
   make_problem_data(const DataParameters &data);
-
-  /**
-   * The user constants of 'data/constants' ("a=1, b=2") plus pi, _pi and
-   * _e; a malformed entry throws an InputError.
-   */
-  std::map<std::string, double>
-  parse_constants(const std::string &text);
 
   /**
    * An ExpressionFunction for one parameter, with the variables x, y[, z], t

@@ -8,8 +8,8 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <hemicontact/base/memory_breakdown.h>
+#include <hemicontact/input/solver_tuning.h>
 #include <hemicontact/solver/projected_operator.h>
-#include <hemicontact/solver/solver_tuning.h>
 
 #include <array>
 #include <map>
