@@ -361,14 +361,14 @@ namespace Step1
   // On the unit square, clamped on the left, with $\Gamma_3$ the bottom
   // ($\nu = (0,-1)$), the field
   // @f[
-  //   u(x, y) = (1 + y)\,\bigl(a(x),\; -b(x)\bigr),\qquad
-  //   a(x) = (x - \tfrac34)_+^3,\quad
-  //   b(x) = 2 (x - \tfrac12)_+^3 - 8 x (\tfrac14 - x)_+^3,
+  //   u(x, y) = (1 + y)\,\bigl(g_\tau(x),\; -g_\nu(x)\bigr),\qquad
+  //   g_\tau(x) = (x - \tfrac34)_+^3,\quad
+  //   g_\nu(x) = 2 (x - \tfrac12)_+^3 - 8 x (\tfrac14 - x)_+^3,
   // @f]
-  // has on $\Gamma_3$ $u_\nu = b(x)$: separation on $(0, \frac14)$,
+  // has on $\Gamma_3$ $u_\nu = g_\nu(x)$: separation on $(0, \frac14)$,
   // contact without penetration on $[\frac14, \frac12]$, penetration
   // on $(\frac12, 1]$ up to $u_\nu = 0.25$ across all three segments of
-  // the law; and $u_\tau = a(x)$: stick on $(0, \frac34]$, slip beyond.
+  // the law; and $u_\tau = g_\tau(x)$: stick on $(0, \frac34]$, slip beyond.
   // $u$ is $C^2$, so $f_0 = -\mathrm{Div}\,\sigma(u)$ is continuous.
   // It solves the problem with $f_2 = \sigma\nu$ and, on $\Gamma_3$,
   // $f_3 = \sigma\nu + \xi_\nu\nu + \xi_\tau$ with $\xi_\nu \in \partial
@@ -404,49 +404,49 @@ namespace Step1
       return {{zp * zp * zp, 3 * zp * zp, 6 * zp}};
     }
 
-    // $a$, $b$ and their derivatives up to the second.
+    // $g_\tau$, $g_\nu$ and their derivatives up to the second.
     static std::array<double, 3>
-    a(const double x)
+    g_tau(const double x)
     {
       return cube_plus(x - 0.75);
     }
 
     static std::array<double, 3>
-    b(const double x)
+    g_nu(const double x)
     {
-      const auto g = cube_plus(x - 0.5);
-      const auto h = cube_plus(0.25 - x); // h' = -g'(0.25 - x)
-      return {{2 * g[0] - 8 * x * h[0],
-               2 * g[1] - 8 * (h[0] - x * h[1]),
-               2 * g[2] - 8 * (-2 * h[1] + x * h[2])}};
+      const auto r = cube_plus(x - 0.5);
+      const auto h = cube_plus(0.25 - x); // h' = -cube_plus'(0.25 - x)
+      return {{2 * r[0] - 8 * x * h[0],
+               2 * r[1] - 8 * (h[0] - x * h[1]),
+               2 * r[2] - 8 * (-2 * h[1] + x * h[2])}};
     }
 
     Tensor<1, 2>
     exact_value(const Point<2> &p) const
     {
       const double phi = 1 + p[1];
-      return Tensor<1, 2>({phi * a(p[0])[0], -phi * b(p[0])[0]});
+      return Tensor<1, 2>({phi * g_tau(p[0])[0], -phi * g_nu(p[0])[0]});
     }
 
     Tensor<2, 2>
     exact_gradient(const Point<2> &p) const
     {
       const double phi = 1 + p[1];
-      const auto   A = a(p[0]), B = b(p[0]);
-      return Tensor<2, 2>({{phi * A[1], A[0]}, {-phi * B[1], -B[0]}});
+      const auto   T = g_tau(p[0]), N = g_nu(p[0]);
+      return Tensor<2, 2>({{phi * T[1], T[0]}, {-phi * N[1], -N[0]}});
     }
 
     // $f_0 = -\mu\Delta u - (\mu+\lambda)\nabla\,\mathrm{div}\,u$, with
-    // $\Delta u = (1+y)(a'', -b'')$ and
-    // $\nabla\,\mathrm{div}\,u = ((1+y) a'' - b',\; a')$.
+    // $\Delta u = (1+y)(g_\tau'', -g_\nu'')$ and
+    // $\nabla\,\mathrm{div}\,u = ((1+y) g_\tau'' - g_\nu',\; g_\tau')$.
     Tensor<1, 2>
     body_force(const Point<2> &p, const double) const override
     {
       const double phi = 1 + p[1];
-      const auto   A = a(p[0]), B = b(p[0]);
+      const auto   T = g_tau(p[0]), N = g_nu(p[0]);
       return Tensor<1, 2>(
-        {-mu * phi * A[2] - (mu + lambda) * (phi * A[2] - B[1]),
-         mu * phi * B[2] - (mu + lambda) * A[1]});
+        {-mu * phi * T[2] - (mu + lambda) * (phi * T[2] - N[1]),
+         mu * phi * N[2] - (mu + lambda) * T[1]});
     }
 
     Tensor<1, 2>
@@ -482,15 +482,15 @@ namespace Step1
   // current branches.
   enum class NormalBranch
   {
-    separating, // s + c u_nu < 0:       s = 0, u_nu free
-    stick,      // 0 <= s + c u_nu <= a: u_nu = 0
-    penetrating // s + c u_nu > a:       s = a, u_nu free
+    separating, // s_nu + c u_nu < 0:    s_nu = 0, u_nu free
+    stick,      // 0 <= s_nu + c u_nu <= a: u_nu = 0
+    penetrating // s_nu + c u_nu > a:    s_nu = a, u_nu free
   };
 
   enum class TangentialBranch
   {
-    stick, // |lambda + c u_tau| <= F_b: u_tau = 0
-    slip   // lambda = F_b q/|q|, q = lambda + c u_tau
+    stick, // |s_tau + c u_tau| <= F_b: u_tau = 0
+    slip   // s_tau = F_b q/|q|, q = s_tau + c u_tau
   };
 
   template <int dim>
@@ -920,8 +920,8 @@ namespace Step1
   // From the residual $R = K u - F_n$ the nodal contact force is
   // $G_i = -R_i$ (the force the laws must supply for equilibrium), and
   // the traction is $G_i/m_i$. Split into normal and tangential parts, the
-  // multipliers of the convex parts of the laws are (the members s and
-  // lambda of NodeState; $\lambda$ alone stays Lam\'e's constant)
+  // multipliers of the convex parts of the laws are (the members s_nu and
+  // s_tau of NodeState)
   // @f[
   //   s_\nu = G_i\cdot\nu/m_i - p(u_\nu),\qquad
   //   s_\tau = G_{i,\tau}/m_i
@@ -944,10 +944,10 @@ namespace Step1
   {
     double         u_nu;
     Tensor<1, dim> u_tau;
-    double         s;
-    Tensor<1, dim> lambda;
-    double         q_nu;  // s + c u_nu
-    Tensor<1, dim> q_tau; // lambda + c u_tau
+    double         s_nu;
+    Tensor<1, dim> s_tau;
+    double         q_nu;  // s_nu + c u_nu
+    Tensor<1, dim> q_tau; // s_tau + c u_tau
   };
 
   template <int dim>
@@ -965,12 +965,12 @@ namespace Step1
     // supply; divided by the weight $m_i$ it is a traction, comparable with
     // the law's response $\xi$ and the friction bound $F_b$.
     NodeState m;
-    m.u_nu   = u * node.normal;
-    m.u_tau  = u - m.u_nu * node.normal;
-    m.s      = traction * node.normal - data.law.remainder(m.u_nu);
-    m.lambda = traction - (traction * node.normal) * node.normal;
-    m.q_nu   = m.s + node.c * m.u_nu;
-    m.q_tau  = m.lambda + node.c * m.u_tau;
+    m.u_nu  = u * node.normal;
+    m.u_tau = u - m.u_nu * node.normal;
+    m.s_nu  = traction * node.normal - data.law.remainder(m.u_nu);
+    m.s_tau = traction - (traction * node.normal) * node.normal;
+    m.q_nu  = m.s_nu + node.c * m.u_nu;
+    m.q_tau = m.s_tau + node.c * m.u_tau;
     return m;
   }
 
@@ -1036,9 +1036,9 @@ namespace Step1
           free_part(node.dofs[c]) = 0;
         const NodeState m = node_state(node, residual);
         const double    C_nu =
-          m.s - std::min(std::max(m.q_nu, 0.), data.law.jump());
+          m.s_nu - std::min(std::max(m.q_nu, 0.), data.law.jump());
         const Tensor<1, dim> C_tau =
-          m.lambda - project_on_disk(m.q_tau, data.friction_bound);
+          m.s_tau - project_on_disk(m.q_tau, data.friction_bound);
         contact_part +=
           node.mass * node.mass * (C_nu * C_nu + C_tau.norm_square());
       }
@@ -1297,7 +1297,7 @@ namespace Step1
   //   \lambda_1 = \min_{v \ne 0}
   //     \frac{v\cdot K v}{\sum_i m_i (v_i\cdot\nu_i)^2} > \alpha_\nu,
   // @f]
-  // the smallest eigenvalue of $K x = \lambda N x$ with the normal boundary
+  // the smallest eigenvalue of the pencil $(K, N)$ with the normal boundary
   // mass $N = \sum_i m_i \nu_i\otimes\nu_i$ (nodal quadrature of
   // $\int_{\Gamma_3} v_\nu^2$). $N$ is singular (it sees only the normal
   // components on $\Gamma_3$), so we compute the largest eigenvalue
@@ -1444,8 +1444,8 @@ namespace Step1
       {
         const NodeState m = node_state(node, residual);
         csv << std::setprecision(10) << node.position[0] << ',' << m.u_nu << ','
-            << m.u_tau[0] << ',' << m.s + data.law.remainder(m.u_nu) << ','
-            << m.lambda[0] << ',' << static_cast<int>(node.normal_branch) << ','
+            << m.u_tau[0] << ',' << m.s_nu + data.law.remainder(m.u_nu) << ','
+            << m.s_tau[0] << ',' << static_cast<int>(node.normal_branch) << ','
             << static_cast<int>(node.tangential_branch) << '\n';
         ++n_normal[static_cast<int>(node.normal_branch)];
         ++n_tangential[static_cast<int>(node.tangential_branch)];

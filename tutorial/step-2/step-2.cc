@@ -335,17 +335,17 @@ namespace Step2
   // $\Gamma_3$ the bottom ($\nu = (0,-1)$) and, unlike step-1, the top
   // clamped:
   // @f[
-  //   u(x, y, t) = \sin t\,(1 - y)\,\bigl(a(x),\; -b(x)\bigr)
+  //   u(x, y, t) = \sin t\,(1 - y)\,\bigl(g_\tau(x),\; -g_\nu(x)\bigr)
   //     + t^2\,\tfrac15\,y(1 - y)\,(\sin\pi x,\; \cos\pi x),
   // @f]
   // @f[
-  //   a(x) = 4 (x - 0.4)_+^3,\qquad
-  //   b(x) = 4 (x - 0.7)_+^3 - 4 (0.3 - x)_+^3,
+  //   g_\tau(x) = 4 (x - 0.4)_+^3,\qquad
+  //   g_\nu(x) = 4 (x - 0.7)_+^3 - 4 (0.3 - x)_+^3,
   // @f]
   // the form of step-1's field, with a second term that vanishes on
   // $\Gamma_3$. On $\Gamma_3$ the velocity $w = \dot u$ has $w_\nu = \cos t\,
-  // b(x)$: separating on $(0, 0.3)$, normal stick on $[0.3, 0.7]$, moving
-  // into the foundation beyond; and $w_\tau = \cos t\,a(x)$: stick on $(0,
+  // g_\nu(x)$: separating on $(0, 0.3)$, normal stick on $[0.3, 0.7]$, moving
+  // into the foundation beyond; and $w_\tau = \cos t\,g_\tau(x)$: stick on $(0,
   // 0.4]$, slip beyond. It starts undeformed ($u_0 = 0$) with $w_0 =
   // \dot u(0)$. With $w = \dot u$ and $\sigma = A\varepsilon(w) +
   // B\varepsilon(u)$ of the exact solution the data follow from the
@@ -399,7 +399,7 @@ namespace Step2
           face->set_boundary_id(face->boundary_id() == 3 ? 0 : 1);
     }
 
-    // $g(z) = 4 z_+^3$ and its first two derivatives.
+    // $4 z_+^3$ and its first two derivatives.
     static std::array<double, 3>
     cube_plus(const double z)
     {
@@ -407,7 +407,7 @@ namespace Step2
       return {{4 * zp * zp * zp, 12 * zp * zp, 24 * zp}};
     }
 
-    // The two spatial fields $\phi_1 = (1 - y)(a, -b)$ and $\phi_2 =
+    // The two spatial fields $\phi_1 = (1 - y)(g_\tau, -g_\nu)$ and $\phi_2 =
     // \frac15 y(1 - y)(\sin\pi x, \cos\pi x)$ at @p p, each as its value,
     // gradient and Hessian (hessian[c][i][j] $= \partial_i\partial_j
     // \phi_c$). Each is $Y(y)\,X_c(x)$; we give $X_c$, $Y$ and their
@@ -424,10 +424,10 @@ namespace Step2
       std::array<double, 3>                Y;
       if (k == 0)
         {
-          const auto a = cube_plus(x - 0.4), g = cube_plus(x - 0.7),
+          const auto g_tau = cube_plus(x - 0.4), r = cube_plus(x - 0.7),
                      h = cube_plus(0.3 - x);
-          X[0]         = a;
-          X[1]         = {{h[0] - g[0], -h[1] - g[1], h[2] - g[2]}}; // -b
+          X[0]         = g_tau;
+          X[1]         = {{h[0] - r[0], -h[1] - r[1], h[2] - r[2]}}; // -g_nu
           Y            = {{1 - y, -1., 0.}};
         }
       else
@@ -555,15 +555,15 @@ namespace Step2
   // calls this branch "damped").
   enum class NormalBranch
   {
-    separating, // s + c w_nu < 0:       s = 0, w_nu free
-    stick,      // 0 <= s + c w_nu <= a: w_nu = 0
-    penetrating // s + c w_nu > a:       s = a, w_nu free
+    separating, // s_nu + c w_nu < 0:    s_nu = 0, w_nu free
+    stick,      // 0 <= s_nu + c w_nu <= a: w_nu = 0
+    penetrating // s_nu + c w_nu > a:    s_nu = a, w_nu free
   };
 
   enum class TangentialBranch
   {
-    stick, // |lambda + c w_tau| <= F_b: w_tau = 0
-    slip   // lambda = F_b q/|q|, q = lambda + c w_tau
+    stick, // |s_tau + c w_tau| <= F_b: w_tau = 0
+    slip   // s_tau = F_b q/|q|, q = s_tau + c w_tau
   };
 
   template <int dim>
@@ -686,8 +686,8 @@ namespace Step2
     //
     // The names are step-1's, and what they hold is the step problem's
     // (the introduction, "One step is a minimisation"): stiffness_matrix is
-    // $K_0 = \rho/k\,M + A$ and load is $\ell_n = \rho/k\,M w_{n-1} - B
-    // u_n + F_n$, the effective stiffness matrix and the effective load of
+    // $K_0 = \rho/k\,M + K_A$ and load is $\ell_n = \rho/k\,M w_{n-1} -
+    // K_B u_n + F_n$ ($K_A$, $K_B$ the matrices of $a_A$, $a_B$), the effective stiffness matrix and the effective load of
     // structural dynamics; solution is the step's unknown, the velocity
     // $w_n$. New are $w_{n-1}$ and $u_n$.
     SparsityPattern      sparsity_pattern;
@@ -1026,8 +1026,8 @@ namespace Step2
   // From the residual $R = K_0 w - \ell_n$ the nodal contact force is
   // $G_i = -R_i$ (the force the laws must supply for equilibrium), and
   // the traction is $G_i/m_i$. Split into normal and tangential parts, the
-  // multipliers of the convex parts of the laws are (the members s and
-  // lambda of NodeState; $\lambda$ alone stays Lam\'e's constant)
+  // multipliers of the convex parts of the laws are (the members s_nu and
+  // s_tau of NodeState)
   // @f[
   //   s_\nu = G_i\cdot\nu/m_i - p(w_\nu),\qquad
   //   s_\tau = G_{i,\tau}/m_i
@@ -1045,10 +1045,10 @@ namespace Step2
   {
     double         w_nu;
     Tensor<1, dim> w_tau;
-    double         s;
-    Tensor<1, dim> lambda;
-    double         q_nu;  // s + c w_nu
-    Tensor<1, dim> q_tau; // lambda + c w_tau
+    double         s_nu;
+    Tensor<1, dim> s_tau;
+    double         q_nu;  // s_nu + c w_nu
+    Tensor<1, dim> q_tau; // s_tau + c w_tau
   };
 
   template <int dim>
@@ -1066,12 +1066,12 @@ namespace Step2
     // supply; divided by the weight $m_i$ it is a traction, comparable with
     // the law's response $\xi$ and the friction bound $F_b$.
     NodeState m;
-    m.w_nu   = w * node.normal;
-    m.w_tau  = w - m.w_nu * node.normal;
-    m.s      = traction * node.normal - data.law.remainder(m.w_nu);
-    m.lambda = traction - (traction * node.normal) * node.normal;
-    m.q_nu   = m.s + node.c * m.w_nu;
-    m.q_tau  = m.lambda + node.c * m.w_tau;
+    m.w_nu  = w * node.normal;
+    m.w_tau = w - m.w_nu * node.normal;
+    m.s_nu  = traction * node.normal - data.law.remainder(m.w_nu);
+    m.s_tau = traction - (traction * node.normal) * node.normal;
+    m.q_nu  = m.s_nu + node.c * m.w_nu;
+    m.q_tau = m.s_tau + node.c * m.w_tau;
     return m;
   }
 
@@ -1134,9 +1134,9 @@ namespace Step2
           free_part(node.dofs[c]) = 0;
         const NodeState m = node_state(node, residual);
         const double    C_nu =
-          m.s - std::min(std::max(m.q_nu, 0.), data.law.jump());
+          m.s_nu - std::min(std::max(m.q_nu, 0.), data.law.jump());
         const Tensor<1, dim> C_tau =
-          m.lambda - project_on_disk(m.q_tau, data.friction_bound);
+          m.s_tau - project_on_disk(m.q_tau, data.friction_bound);
         contact_part +=
           node.mass * node.mass * (C_nu * C_nu + C_tau.norm_square());
       }
@@ -1426,7 +1426,7 @@ namespace Step2
   // introduction). This is why a short enough time step makes every step
   // uniquely solvable, where step-1 needed a stiff enough body.
   //
-  // $\lambda_1$ is the smallest eigenvalue of $K_0 x = \lambda N x$ with the
+  // $\lambda_1$ is the smallest eigenvalue of the pencil $(K_0, N)$ with the
   // normal boundary mass $N = \sum_i m_i \nu_i\otimes\nu_i$ (nodal
   // quadrature of $\int_{\Gamma_3} v_\nu^2$). $N$ is singular (it sees only
   // the normal components on $\Gamma_3$), so we compute the largest
@@ -1578,8 +1578,8 @@ namespace Step2
       {
         const NodeState m = node_state(node, residual);
         csv << std::setprecision(10) << node.position[0] << ',' << m.w_nu << ','
-            << m.w_tau[0] << ',' << m.s + data.law.remainder(m.w_nu) << ','
-            << m.lambda[0] << ',' << static_cast<int>(node.normal_branch) << ','
+            << m.w_tau[0] << ',' << m.s_nu + data.law.remainder(m.w_nu) << ','
+            << m.s_tau[0] << ',' << static_cast<int>(node.normal_branch) << ','
             << static_cast<int>(node.tangential_branch) << '\n';
         ++n_normal[static_cast<int>(node.normal_branch)];
         ++n_tangential[static_cast<int>(node.tangential_branch)];
@@ -1625,12 +1625,12 @@ namespace Step2
 
   // The three norms of the error at the current time $t_n$,
   // $\|w(t_n) - w_n\|_{L^2}$, $\|\varepsilon(w(t_n) - w_n)\|_{L^2}$ and
-  // $\|\varepsilon(u(t_n) - u_n)\|_{L^2}$, from which main() forms $E_H$,
-  // $E_V$ and $E_u$ over the steps. As in step-1 we integrate with a
-  // 4-point Gauss rule per direction, two points more than the assembly of
-  // the matrix: the exact solution is not a polynomial, and the quadrature
-  // error must stay below the error measured. The exact values come from
-  // exact() of the data, at the time of the step.
+  // $\|\varepsilon(u(t_n) - u_n)\|_{L^2}$, from which main() forms $E^w_H$,
+  // $E^w_V$ and $E_V$ over the steps (the columns Ew_H, Ew_V, E_V). As in
+  // step-1 we integrate with a 4-point Gauss rule per direction, two points
+  // more than the assembly of the matrix: the exact solution is not a
+  // polynomial, and the quadrature error must stay below the error measured.
+  // The exact values come from exact() of the data, at the time of the step.
   template <int dim>
   template <class Exact>
   std::array<double, 3>
@@ -1645,7 +1645,7 @@ namespace Step2
     std::vector<Tensor<1, dim>>          values(quadrature.size());
     std::vector<SymmetricTensor<2, dim>> strains(quadrature.size()),
       strains_u(quadrature.size());
-    double E_H2 = 0, E_V2 = 0, E_u2 = 0;
+    double Ew_H2 = 0, Ew_V2 = 0, E_V2 = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         // We integrate the squared errors cell by cell, with the exact solution
@@ -1661,16 +1661,16 @@ namespace Step2
             // the exact values at the point, at the time of the step; the
             // velocity in $L^2$ and both fields in the strain norm
             const auto e = exact.exact(fe_values.quadrature_point(q), time);
-            E_H2 += (e.w - values[q]).norm_square() * fe_values.JxW(q);
+            Ew_H2 += (e.w - values[q]).norm_square() * fe_values.JxW(q);
             const SymmetricTensor<2, dim> e_w =
               symmetrize(e.grad_w) - strains[q];
-            E_V2 += scalar_product(e_w, e_w) * fe_values.JxW(q);
+            Ew_V2 += scalar_product(e_w, e_w) * fe_values.JxW(q);
             const SymmetricTensor<2, dim> e_u =
               symmetrize(e.grad_u) - strains_u[q];
-            E_u2 += scalar_product(e_u, e_u) * fe_values.JxW(q);
+            E_V2 += scalar_product(e_u, e_u) * fe_values.JxW(q);
           }
       }
-    return {{std::sqrt(E_H2), std::sqrt(E_V2), std::sqrt(E_u2)}};
+    return {{std::sqrt(Ew_H2), std::sqrt(Ew_V2), std::sqrt(E_V2)}};
   }
 } // namespace Step2
 
@@ -1806,9 +1806,9 @@ main(int argc, char **argv)
             }
         }
 
-      // The errors of the paper's estimates (the introduction): $E_H =
-      // \max_n \|w(t_n) - w_n\|_{L^2}$, $E_V = (k \sum_n \|\varepsilon(w(t_n)
-      // - w_n)\|_{L^2}^2)^{1/2}$ and $E_u = \max_n \|\varepsilon(u(t_n) -
+      // The errors of the paper's estimates (the introduction): $E^w_H =
+      // \max_n \|w(t_n) - w_n\|_{L^2}$, $E^w_V = (k \sum_n \|\varepsilon(w(t_n)
+      // - w_n)\|_{L^2}^2)^{1/2}$ and $E_V = \max_n \|\varepsilon(u(t_n) -
       // u_n)\|_{L^2}$, gathered step by step; the column Newton is the mean
       // number of iterations per step.
       if (mode.empty() || mode == "convergence")
@@ -1825,33 +1825,35 @@ main(int argc, char **argv)
                                                refinements,
                                                1. / n_steps);
               // The time loop of one level: after each step we add the
-              // step's errors to the maxima and to the sum of $E_V^2$; the
+              // step's errors to the maxima and to the sum of $(E^w_V)^2$; the
               // Newton iterations of all steps give the mean per step.
-              double       E_H = 0, E_V = 0, E_u = 0;
+              double       Ew_H = 0, Ew_V = 0, E_V = 0;
               unsigned int newton_iterations = 0;
               for (unsigned int n = 1; n <= n_steps; ++n)
                 {
                   problem.run(double(n) / n_steps);
                   newton_iterations += problem.newton_iterations;
                   const auto errors = problem.compute_errors(manufactured);
-                  E_H               = std::max(E_H, errors[0]);
-                  E_V = std::sqrt(E_V * E_V + errors[1] * errors[1] / n_steps);
-                  E_u = std::max(E_u, errors[2]);
+                  Ew_H              = std::max(Ew_H, errors[0]);
+                  Ew_V =
+                    std::sqrt(Ew_V * Ew_V + errors[1] * errors[1] / n_steps);
+                  E_V = std::max(E_V, errors[2]);
                 }
-              // step-1's columns with $E_u$ added; Newton is now a mean
-              // over the steps, and $h$ is the side of a cell, $1/h$ the
-              // number of cells along a side of the square and of steps
+              // step-1's columns, with the velocity's errors $E^w_H$, $E^w_V$
+              // in place of $E_H$; Newton is now a mean over the steps, and $h$
+              // is the side of a cell, $1/h$ the number of cells along a side
+              // of the square and of steps
               table.add_value("1/h", n_steps);
               table.add_value("dofs", problem.n_dofs());
               table.add_value("Newton", double(newton_iterations) / n_steps);
               table.set_precision("Newton", 2);
               table.add_value("lambda_1", problem.smallness_constant());
               table.set_precision("lambda_1", 1);
-              table.add_value("E_H", E_H);
+              table.add_value("Ew_H", Ew_H);
+              table.add_value("Ew_V", Ew_V);
               table.add_value("E_V", E_V);
-              table.add_value("E_u", E_u);
             }
-          for (const std::string column : {"E_H", "E_V", "E_u"})
+          for (const std::string column : {"Ew_H", "Ew_V", "E_V"})
             {
               table.set_scientific(column, true);
               table.set_precision(column, 3);

@@ -9,7 +9,7 @@
  *   sigma(t) = B eps(u(t)) + int_0^t R(t - s) eps(u(s)) ds
  * with a Prony-series relaxation kernel R, and a normal response that
  * grows with the time the foundation was penetrated,
- *   -sigma_nu in d j_nu(u_nu) + int_0^t b(t - s) (u_nu(s))_+ ds.
+ *   -sigma_nu in d j_nu(u_nu) + int_0^t kappa(t - s) (u_nu(s))_+ ds.
  * Each load value is still one static problem, the memory a known term
  * of its right-hand side.
  *
@@ -218,10 +218,10 @@ namespace Step3
   // one RelaxationTerm $(\mu_m, \lambda_m, \tau_m)$ per exponential; the
   // kernel of the foundation's memory is scalar,
   // @f[
-  //   b(t) = \sum_m b_m e^{-t/\tau_m},
+  //   \kappa(t) = \sum_m \kappa_m e^{-t/\tau_m},
   // @f]
-  // one NormalMemoryTerm $(b_m, \tau_m)$ per exponential. The program
-  // never evaluates $R(t)$ or $b(t)$ themselves: the recursion of the
+  // one NormalMemoryTerm $(\kappa_m, \tau_m)$ per exponential. The program
+  // never evaluates $R(t)$ or $\kappa(t)$ themselves: the recursion of the
   // memory (advance_memory()) needs only the amplitudes and the decay
   // factor $e^{-k/\tau_m}$ of one step, and the manufactured solution the
   // convolution of one exponential with its time factor. That is the
@@ -235,8 +235,8 @@ namespace Step3
 
   struct NormalMemoryTerm
   {
-    // The amplitude of one term of $b$ and its decay time.
-    double b, tau;
+    // The amplitude of one term of $\kappa$ and its decay time.
+    double kappa, tau;
   };
 
   // The kernels of this program, written once: the block and the
@@ -336,7 +336,7 @@ namespace Step3
   // right, on the foundation along its bottom, $\mu = 100$, $\lambda =
   // 150$, $F_b = 0.6$), now with memory: two relaxation terms with
   // $(\mu_m, \lambda_m, \tau_m) = (20, 30, 0.25)$ and $(10, 10, 2)$, and a
-  // foundation that remembers with $b(t) = 10 e^{-t/0.5} + 2 e^{-t/2}$.
+  // foundation that remembers with $\kappa(t) = 10 e^{-t/0.5} + 2 e^{-t/2}$.
   // Its top carries step-1's traction, pulling up left of $x = 1$,
   // pressing down right of it and shearing, times a load factor
   // @f[
@@ -405,18 +405,17 @@ namespace Step3
   // $\Gamma_3$ the bottom with $\nu = (0,-1)$), now growing in time:
   // @f[
   //   u(x, y, t) = \varphi(t)\,U(x, y),\qquad \varphi(t) = 1 + t,\qquad
-  //   U = (1 + y)\,\bigl(a(x),\; -d(x)\bigr),
+  //   U = (1 + y)\,\bigl(g_\tau(x),\; -g_\nu(x)\bigr),
   // @f]
   // @f[
-  //   a(x) = (x - \tfrac34)_+^3,\qquad
-  //   d(x) = 2 (x - \tfrac12)_+^3 - 8 x (\tfrac14 - x)_+^3,
+  //   g_\tau(x) = (x - \tfrac34)_+^3,\qquad
+  //   g_\nu(x) = 2 (x - \tfrac12)_+^3 - 8 x (\tfrac14 - x)_+^3,
   // @f]
-  // for $0 \le t \le T = 1$. On $\Gamma_3$, $u_\nu = \varphi d$: separation
+  // for $0 \le t \le T = 1$. On $\Gamma_3$, $u_\nu = \varphi g_\nu$: separation
   // on $(0, \frac14)$, contact without penetration on $[\frac14,
   // \frac12]$, penetration beyond, up to $u_\nu = 0.5$ at $t = 1$, across
-  // all three segments of the law; $u_\tau = \varphi a$: stick on $(0,
-  // \frac34]$, slip beyond. ($d$ is step-1's $b$, renamed so as not to
-  // clash with the kernel $b(t)$.)
+  // all three segments of the law; $u_\tau = \varphi g_\tau$: stick on $(0,
+  // \frac34]$, slip beyond.
   //
   // Because the time factor is separate, both memory integrals of the
   // exact solution are closed forms. With
@@ -435,8 +434,8 @@ namespace Step3
   // $\Gamma_3$
   // @f[
   //   f_3 = \sigma\nu + (\xi_\nu + N)\nu + \xi_\tau,\qquad
-  //   N(x, t) = \int_0^t b(t - s)\,(u_\nu(x, s))_+\,ds
-  //           = d(x)_+ \sum_m b_m I_{\tau_m}(t),
+  //   N(x, t) = \int_0^t \kappa(t - s)\,(u_\nu(x, s))_+\,ds
+  //           = g_\nu(x)_+ \sum_m \kappa_m I_{\tau_m}(t),
   // @f]
   // the extra traction the laws and the foundation's memory would have to
   // supply for $u$ to be in equilibrium. As in step-1, $\xi_\nu = a/2$
@@ -482,7 +481,7 @@ namespace Step3
       return tau * t - (1 - tau) * tau * std::expm1(-t / tau);
     }
 
-    // $g(z) = z_+^3$ and its first two derivatives; $a$, $d$ and theirs.
+    // $z_+^3$ and its first two derivatives; $g_\tau$, $g_\nu$ and theirs.
     static std::array<double, 3>
     cube_plus(const double z)
     {
@@ -491,35 +490,35 @@ namespace Step3
     }
 
     static std::array<double, 3>
-    a(const double x)
+    g_tau(const double x)
     {
       return cube_plus(x - 0.75);
     }
 
     static std::array<double, 3>
-    d(const double x)
+    g_nu(const double x)
     {
-      const auto g = cube_plus(x - 0.5);
-      const auto h = cube_plus(0.25 - x); // h' = -g'(0.25 - x)
-      return {{2 * g[0] - 8 * x * h[0],
-               2 * g[1] - 8 * (h[0] - x * h[1]),
-               2 * g[2] - 8 * (-2 * h[1] + x * h[2])}};
+      const auto r = cube_plus(x - 0.5);
+      const auto h = cube_plus(0.25 - x); // h' = -cube_plus'(0.25 - x)
+      return {{2 * r[0] - 8 * x * h[0],
+               2 * r[1] - 8 * (h[0] - x * h[1]),
+               2 * r[2] - 8 * (-2 * h[1] + x * h[2])}};
     }
 
     Tensor<1, 2>
     exact_value(const Point<2> &p, const double t) const
     {
       const double phi = time_factor(t) * (1 + p[1]);
-      return Tensor<1, 2>({phi * a(p[0])[0], -phi * d(p[0])[0]});
+      return Tensor<1, 2>({phi * g_tau(p[0])[0], -phi * g_nu(p[0])[0]});
     }
 
     Tensor<2, 2>
     exact_gradient(const Point<2> &p, const double t) const
     {
       const double phi = time_factor(t) * (1 + p[1]);
-      const auto   A = a(p[0]), D = d(p[0]);
-      return Tensor<2, 2>({{phi * A[1], time_factor(t) * A[0]},
-                           {-phi * D[1], -time_factor(t) * D[0]}});
+      const auto   T = g_tau(p[0]), N = g_nu(p[0]);
+      return Tensor<2, 2>({{phi * T[1], time_factor(t) * T[0]},
+                           {-phi * N[1], -time_factor(t) * N[0]}});
     }
 
     // $\mu_C(t)$ and $\lambda_C(t)$, the Lam\'e constants of $C(t)$.
@@ -536,18 +535,18 @@ namespace Step3
     }
 
     // $f_0 = -\mu_C\Delta U - (\mu_C + \lambda_C)\nabla\,\mathrm{div}\,U$,
-    // with $\Delta U = (1+y)(a'', -d'')$ and $\nabla\,\mathrm{div}\,U =
-    // ((1+y) a'' - d',\; a')$: step-1's body force with $\mu_C$,
-    // $\lambda_C$.
+    // with $\Delta U = (1+y)(g_\tau'', -g_\nu'')$ and
+    // $\nabla\,\mathrm{div}\,U = ((1+y) g_\tau'' - g_\nu',\; g_\tau')$:
+    // step-1's body force with $\mu_C$, $\lambda_C$.
     Tensor<1, 2>
     body_force(const Point<2> &p, const double t) const override
     {
       const auto [mu_C, lambda_C] = effective_lame(t);
       const double y1             = 1 + p[1];
-      const auto   A = a(p[0]), D = d(p[0]);
+      const auto   T = g_tau(p[0]), N = g_nu(p[0]);
       return Tensor<1, 2>(
-        {-mu_C * y1 * A[2] - (mu_C + lambda_C) * (y1 * A[2] - D[1]),
-         mu_C * y1 * D[2] - (mu_C + lambda_C) * A[1]});
+        {-mu_C * y1 * T[2] - (mu_C + lambda_C) * (y1 * T[2] - N[1]),
+         mu_C * y1 * N[2] - (mu_C + lambda_C) * T[1]});
     }
 
     Tensor<1, 2>
@@ -574,14 +573,14 @@ namespace Step3
                             u_nu == 0 ? 0.5 * law.jump() :
                                         law.response(u_nu);
       const double xi_tau = u_tau == 0 ? 0.5 * friction_bound : friction_bound;
-      // $N = d_+ \sum_m b_m I_{\tau_m}(t)$: zero where the body never
-      // penetrated ($d \le 0$, separation and the contact without
+      // $N = (g_\nu)_+ \sum_m \kappa_m I_{\tau_m}(t)$: zero where the body
+      // never penetrated ($g_\nu \le 0$, separation and the contact without
       // penetration), as the discrete rule gives at nodes that stay out,
       // so that the exact solution's branches are those of step-1.
       double N = 0;
       for (const NormalMemoryTerm &term : normal_memory)
-        N += term.b * convolution(term.tau, t);
-      N *= std::max(d(p[0])[0], 0.);
+        N += term.kappa * convolution(term.tau, t);
+      N *= std::max(g_nu(p[0])[0], 0.);
       return sigma_nu + (xi_nu + N) * normal + Tensor<1, 2>({xi_tau, 0.});
     }
   };
@@ -592,21 +591,21 @@ namespace Step3
   // $\Gamma_3$), with the branches of step-1:
   enum class NormalBranch
   {
-    separating, // s + c u_nu < 0:       s = 0, u_nu free
-    stick,      // 0 <= s + c u_nu <= a: u_nu = 0
-    penetrating // s + c u_nu > a:       s = a, u_nu free
+    separating, // s_nu + c u_nu < 0:    s_nu = 0, u_nu free
+    stick,      // 0 <= s_nu + c u_nu <= a: u_nu = 0
+    penetrating // s_nu + c u_nu > a:    s_nu = a, u_nu free
   };
 
   enum class TangentialBranch
   {
-    stick, // |lambda + c u_tau| <= F_b: u_tau = 0
-    slip   // lambda = F_b q/|q|, q = lambda + c u_tau
+    stick, // |s_tau + c u_tau| <= F_b: u_tau = 0
+    slip   // s_tau = F_b q/|q|, q = s_tau + c u_tau
   };
 
   // Each node $x_i$ of $\Gamma_3$ keeps step-1's data (its degrees of
   // freedom, its weight $m_i = \int_{\Gamma_3}\varphi_i$, its normal
   // $\nu_i$, the constant $c_i$ and its branches) and, new, its memory:
-  // one history value $H_{m,i}$ per term of $b$ and the pressure $N_i$
+  // one history value $H_{m,i}$ per term of $\kappa$ and the pressure $N_i$
   // they add up to at the current load value (advance_memory()). The
   // foundation's memory lives at the nodes because, with nodal
   // quadrature, the normal displacement it integrates is a nodal value.
@@ -615,7 +614,7 @@ namespace Step3
   {
     // step-1's members (position for the output, the dofs, $m_i$, $\nu_i$,
     // $c_i$ and the branches) and the memory of the foundation at the node:
-    // memory_history holds the $H_{m,i}$, one per term of $b$, and
+    // memory_history holds the $H_{m,i}$, one per term of $\kappa$, and
     // memory_pressure their sum $N_i$ at the current load value.
     Point<dim>                               position;
     std::array<types::global_dof_index, dim> dofs;
@@ -717,7 +716,7 @@ namespace Step3
     assemble_memory_matrices();
     void
     // What each load value does before it solves: turn the solutions of the
-    // load values before into the known part $F_n - b_n$ of its right-hand
+    // load values before into the known part $F_n - \ell_n$ of its right-hand
     // side.
     advance_memory();
     void
@@ -769,10 +768,11 @@ namespace Step3
     SparseMatrix<double> newton_matrix;
 
     Vector<double> solution; // $u_n$, the last load value's until solved
-    // $b_n = F_n - m_n - \sum_i m_i N_{n,i}\nu_i$: the load minus the
-    // memory, the linear part of the energy of load value $n$
+    // $\ell_n = F_n - (M_n, \varepsilon(\cdot)) - \sum_i m_i N_{n,i}\nu_i$: the
+    // load minus the memory, the linear part of the energy of load value $n$
     Vector<double> load;
-    // $m_n + \sum_i m_i N_{n,i}\nu_i$, the memory's part of $F_n - b_n$
+    // $(M_n, \varepsilon(\cdot)) + \sum_i m_i N_{n,i}\nu_i$, the memory's part
+    // of $F_n - \ell_n$
     Vector<double> memory_load;
     Vector<double> newton_rhs;
 
@@ -863,7 +863,7 @@ namespace Step3
   // assembled like a right-hand side, the nodes of $\Gamma_1$ left out, and
   // $c_i$ the mean diagonal entry of $K$ at the node over $m_i$ with the
   // floor of twice the law's steepest rise (step-1 says why). Each node
-  // also gets its foundation history, one zero per term of $b$.
+  // also gets its foundation history, one zero per term of $\kappa$.
   template <int dim>
   void
   MemoryContactProblem<dim>::setup_contact_nodes()
@@ -904,7 +904,8 @@ namespace Step3
 
     // step-1's second pass: every vertex of $\Gamma_3$ once (the flags), the
     // clamped corner left out (a degree of freedom carries one constraint
-    // only), and the memory of each node sized by the number of terms of $b$.
+    // only), and the memory of each node sized by the number of terms of
+    // $\kappa$.
     contact_nodes.clear();
     std::vector<bool> seen(dof_handler.n_dofs(), false);
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -1028,7 +1029,7 @@ namespace Step3
   // @sect4{MemoryContactProblem::assemble_memory_matrices}
 
   // The memory term of the stress enters load value $n$ as the functional
-  // $m_n(v) = (M_n, \varepsilon(v))$ with the discrete memory stress
+  // $(M_n, \varepsilon(v))$ with the discrete memory stress
   // (the introduction, "The rule")
   // @f[
   //   M_n = k\sum_{j=0}^{n-1} R(t_n - t_j)\,\varepsilon(u_j).
@@ -1037,7 +1038,7 @@ namespace Step3
   // displacements instead of the strains: with $R(t)\varepsilon =
   // 2\mu_R(t)\varepsilon + \lambda_R(t)\,\mathrm{tr}(\varepsilon) I$,
   // @f[
-  //   m_n(v) = a_\mu(S_\mu, v) + a_\lambda(S_\lambda, v),\qquad
+  //   (M_n, \varepsilon(v)) = a_\mu(S_\mu, v) + a_\lambda(S_\lambda, v),\qquad
   //   a_\mu(u, v) = 2(\varepsilon(u), \varepsilon(v)),\quad
   //   a_\lambda(u, v) = (\mathrm{div}\,u, \mathrm{div}\,v),
   // @f]
@@ -1116,8 +1117,8 @@ namespace Step3
   //
   // The foundation's memory is the same rule at each contact node,
   // @f[
-  //   N_{n,i} = k\sum_{j<n} b(t_n - t_j)\,(u_{\nu,j}(x_i))_+
-  //           = \sum_m b_m H_{m,n,i},\qquad
+  //   N_{n,i} = k\sum_{j<n} \kappa(t_n - t_j)\,(u_{\nu,j}(x_i))_+
+  //           = \sum_m \kappa_m H_{m,n,i},\qquad
   //   H_{m,n,i} = e^{-k/\tau_m}\bigl(H_{m,n-1,i} + k\,(u_{\nu,n-1}(x_i))_+
   //   \bigr),
   // @f]
@@ -1128,7 +1129,7 @@ namespace Step3
   //
   // Both memories together give the right-hand side of load value $n$,
   // @f[
-  //   b_n = F_n - A_\mu S_\mu - A_\lambda S_\lambda
+  //   \ell_n = F_n - A_\mu S_\mu - A_\lambda S_\lambda
   //         - \sum_i m_i N_{n,i}\,\nu_i,
   // @f]
   // and nothing else changes: $K$, the laws, the branches, the Newton
@@ -1175,13 +1176,13 @@ namespace Step3
             double &H = node.memory_history[m];
             H         = (H + k * std::max(u_nu, 0.)) *
                 decay(data.normal_memory[m].tau, k);
-            node.memory_pressure += data.normal_memory[m].b * H;
+            node.memory_pressure += data.normal_memory[m].kappa * H;
           }
         for (unsigned int c = 0; c < dim; ++c)
           memory_load(node.dofs[c]) +=
             node.mass * node.memory_pressure * node.normal[c];
       }
-    // load held $F_n$ (run() assembled it just before); now it is $b_n$, the
+    // load held $F_n$ (run() assembled it just before); now it is $\ell_n$, the
     // only change the memory makes to the problem of load value $n$.
     load -= memory_load;
   }
@@ -1189,24 +1190,27 @@ namespace Step3
   // @sect3{The active-set Newton method}
 
   // This part is step-1's, line for line but for one addition in
-  // assemble_newton_system() (the memory's part of $b_n$ in the Newton
-  // right-hand side): the memory is inside the vector load $= b_n$, and
-  // so inside the residual $R = K u - b_n$ and the energy. What the solver
-  // calls the nodal contact force, $G_i = -R_i$, is therefore the force of the
+  // assemble_newton_system() (the memory's part of $\ell_n$ in the Newton
+  // right-hand side): the memory is inside the vector load $= \ell_n$, and
+  // so inside the residual $K u - \ell_n$ and the energy (step-1 calls the
+  // residual $R$; here $R$ is the memory kernel, and we write the residual
+  // out). What the solver calls the nodal contact force,
+  // $G_i = -(K u - \ell_n)_i$, is therefore the force of the
   // *laws*: the part of the contact traction that the foundation's memory does
   // not already supply.
 
   // @sect4{The state of a node}
 
-  // From $G_i = -R_i$ the multipliers of the convex parts of the laws,
+  // From $G_i = -(K u - \ell_n)_i$ the multipliers of the convex parts of the
+  // laws,
   // @f[
-  //   s = G_i\cdot\nu/m_i - p(u_\nu),\qquad
-  //   \lambda = G_{i,\tau}/m_i,
+  //   s_\nu = G_i\cdot\nu/m_i - p(u_\nu),\qquad
+  //   s_\tau = G_{i,\tau}/m_i,
   // @f]
   // and the complementarity functions
   // @f[
-  //   C_\nu = s - P_{[0,a]}(s + c\,u_\nu),\qquad
-  //   C_\tau = \lambda - P_{|\cdot|\le F_b}(\lambda + c\,u_\tau),
+  //   C_\nu = s_\nu - P_{[0,a]}(s_\nu + c\,u_\nu),\qquad
+  //   C_\tau = s_\tau - P_{|\cdot|\le F_b}(s_\tau + c\,u_\tau),
   // @f]
   // which vanish exactly at a solution of the nodal contact conditions
   // (step-1's introduction shows why).
@@ -1215,10 +1219,10 @@ namespace Step3
   {
     double         u_nu;
     Tensor<1, dim> u_tau;
-    double         s;
-    Tensor<1, dim> lambda;
-    double         q_nu;  // s + c u_nu
-    Tensor<1, dim> q_tau; // lambda + c u_tau
+    double         s_nu;
+    Tensor<1, dim> s_tau;
+    double         q_nu;  // s_nu + c u_nu
+    Tensor<1, dim> q_tau; // s_tau + c u_tau
   };
 
   template <int dim>
@@ -1235,19 +1239,19 @@ namespace Step3
     // The residual at a contact node is the force the laws do not yet
     // supply; divided by the weight $m_i$ it is a traction, comparable with
     // the law's response $\xi$ and the friction bound $F_b$. The memory
-    // pressure $N_i$ is not in it: $b_n$ holds $-m_i N_i\nu_i$, so the
+    // pressure $N_i$ is not in it: $\ell_n$ holds $-m_i N_i\nu_i$, so the
     // residual is what the laws must add to the memory's pressure.
     NodeState m;
-    m.u_nu   = u * node.normal;
-    m.u_tau  = u - m.u_nu * node.normal;
-    m.s      = traction * node.normal - data.law.remainder(m.u_nu);
-    m.lambda = traction - (traction * node.normal) * node.normal;
-    m.q_nu   = m.s + node.c * m.u_nu;
-    m.q_tau  = m.lambda + node.c * m.u_tau;
+    m.u_nu  = u * node.normal;
+    m.u_tau = u - m.u_nu * node.normal;
+    m.s_nu  = traction * node.normal - data.law.remainder(m.u_nu);
+    m.s_tau = traction - (traction * node.normal) * node.normal;
+    m.q_nu  = m.s_nu + node.c * m.u_nu;
+    m.q_tau = m.s_tau + node.c * m.u_tau;
     return m;
   }
 
-  // The projection onto the friction disk $|\lambda| \le F_b$.
+  // The projection onto the friction disk $|s_\tau| \le F_b$.
   template <int dim>
   Tensor<1, dim>
   project_on_disk(const Tensor<1, dim> &q, const double F_b)
@@ -1304,9 +1308,9 @@ namespace Step3
           free_part(node.dofs[c]) = 0;
         const NodeState m = node_state(node, residual);
         const double    C_nu =
-          m.s - std::min(std::max(m.q_nu, 0.), data.law.jump());
+          m.s_nu - std::min(std::max(m.q_nu, 0.), data.law.jump());
         const Tensor<1, dim> C_tau =
-          m.lambda - project_on_disk(m.q_tau, data.friction_bound);
+          m.s_tau - project_on_disk(m.q_tau, data.friction_bound);
         contact_part +=
           node.mass * node.mass * (C_nu * C_nu + C_tau.norm_square());
       }
@@ -1320,7 +1324,7 @@ namespace Step3
   // satisfy the held conditions ($x_i\cdot\nu_i = 0$ at normal stick,
   // $x_i - (x_i\cdot\nu_i)\nu_i = 0$ at tangential stick), eliminated by
   // AffineConstraints as in step-41. The free branches add the nodal force
-  // $f_i$ of the laws and its derivative $L_i$, $g_i = b_{n,i} + L_i u_i -
+  // $f_i$ of the laws and its derivative $L_i$, $g_i = \ell_{n,i} + L_i u_i -
   // f_i$: penetrating $f_i = m_i(a + p(u_\nu))\nu$, $L_i = m_i p'(u_\nu)
   // \nu\otimes\nu$; slip $f_i = m_i F_b d + T_i u_\tau$, $L_i = T_i = m_i
   // F_b c/(|q_\tau| - F_b)(I - \nu\otimes\nu - d\otimes d)$, $d =
@@ -1375,9 +1379,9 @@ namespace Step3
     newton_constraints.close();
 
     // The cell terms, $K$ and $F_n$, condensed with the Newton
-    // constraints; the memory part of $b_n$ is a vector, not a cell
+    // constraints; the memory part of $\ell_n$ is a vector, not a cell
     // integral, and is condensed by the same constraints, so that
-    // newton_rhs is the condensed $b_n$.
+    // newton_rhs is the condensed $\ell_n$.
     assemble_system(newton_constraints, newton_matrix, newton_rhs);
     Vector<double> memory_part(memory_load);
     newton_constraints.condense(memory_part);
@@ -1386,7 +1390,7 @@ namespace Step3
     // Then step-1's nodal terms of the free branches: the law's force at the
     // iterate and its derivative, added through the same constraints. The
     // memory pressure is not among them: it is a known force of this load
-    // value, already inside $b_n$.
+    // value, already inside $\ell_n$.
     FullMatrix<double>                   node_matrix(dim, dim);
     Vector<double>                       node_rhs(dim);
     std::vector<types::global_dof_index> node_dofs(dim);
@@ -1437,15 +1441,15 @@ namespace Step3
 
   // @sect4{The energy}
 
-  // $J_n(u) = \frac12 u\cdot K u - b_n\cdot u + \sum_i m_i
+  // $J_n(u) = \frac12 u\cdot K u - \ell_n\cdot u + \sum_i m_i
   // [j_\nu(u_{i,\nu}) + F_b |u_{i,\tau}|]$, the function the line search
-  // decreases: step-1's energy with $b_n$ for $F_n$. The memory adds a
+  // decreases: step-1's energy with $\ell_n$ for $F_n$. The memory adds a
   // linear term, so $J_n$ is convex exactly when step-1's is.
   template <int dim>
   double
   MemoryContactProblem<dim>::energy(const Vector<double> &u) const
   {
-    // matrix_norm_square() is $u\cdot Ku$, and load is $b_n$, the load minus
+    // matrix_norm_square() is $u\cdot Ku$, and load is $\ell_n$, the load minus
     // the memory: the memory enters the energy as a linear term. The clamped
     // rows of $K$ are decoupled and $u$ vanishes there, so they add nothing.
     double J = 0.5 * stiffness_matrix.matrix_norm_square(u) - load * u;
@@ -1465,7 +1469,7 @@ namespace Step3
   // @sect4{MemoryContactProblem::solve}
 
   // step-1's iteration: residual, branches, stop when no branch changed
-  // and the nonsmooth residual is below $10^{-11}|b_n|$ (or a hundredth
+  // and the nonsmooth residual is below $10^{-11}|\ell_n|$ (or a hundredth
   // of that whatever the branches do: a node within round-off of a switch
   // may flip without changing the solution), else the Newton step by
   // UMFPACK and the line search.
@@ -1551,7 +1555,7 @@ namespace Step3
     time      = n * time_step;
     // One function computes $K$ and $F_n$ (as in step-1): $K$ comes out
     // the same at every load value, the load is that of $t_n$, and
-    // advance_memory() then turns $F_n$ into $b_n$.
+    // advance_memory() then turns $F_n$ into $\ell_n$.
     assemble_system(clamped_constraints, stiffness_matrix, load);
     if (n > 0)
       advance_memory();
@@ -1561,10 +1565,10 @@ namespace Step3
   // @sect4{MemoryContactProblem::smallness_constant}
 
   // step-1's power iteration for $\lambda_1$, the smallest eigenvalue of
-  // $K x = \lambda N x$ with $N = \sum_i m_i\nu_i\otimes\nu_i$: the
+  // the pencil $(K, N)$ with $N = \sum_i m_i\nu_i\otimes\nu_i$: the
   // largest eigenvalue $1/\lambda_1$ of $K^{-1}N$, one UMFPACK solve per
   // iteration, until the Rayleigh quotient changes by less than
-  // $10^{-12}$ relative. The memory does not enter: it changes $b_n$, not
+  // $10^{-12}$ relative. The memory does not enter: it changes $\ell_n$, not
   // the quadratic part of $J_n$.
   template <int dim>
   double
@@ -1671,9 +1675,9 @@ namespace Step3
     data_out.write_vtu(vtu);
 
     // The contact quantities come from the residual at the solution, as in
-    // solve(); the residual is $Ku - b_n$ here, so the traction read from it is
-    // the laws' part, and we add the memory pressure $N$ for the whole normal
-    // traction.
+    // solve(); the residual is $Ku - \ell_n$ here, so the traction read from it
+    // is the laws' part, and we add the memory pressure $N$ for the whole
+    // normal traction.
     Vector<double> residual(dof_handler.n_dofs());
     stiffness_matrix.vmult(residual, solution);
     residual -= load;
@@ -1689,8 +1693,8 @@ namespace Step3
         const NodeState m = node_state(node, residual);
         csv << std::setprecision(10) << node.position[0] << ',' << m.u_nu << ','
             << m.u_tau[0] << ','
-            << m.s + data.law.remainder(m.u_nu) + node.memory_pressure << ','
-            << m.lambda[0] << ',' << node.memory_pressure << ','
+            << m.s_nu + data.law.remainder(m.u_nu) + node.memory_pressure << ','
+            << m.s_tau[0] << ',' << node.memory_pressure << ','
             << static_cast<int>(node.normal_branch) << ','
             << static_cast<int>(node.tangential_branch) << '\n';
         ++n_normal[static_cast<int>(node.normal_branch)];

@@ -343,15 +343,15 @@ namespace Step4
   // nodes; they are not contact nodes (setup_contact_nodes() says why).
   enum class NormalBranch
   {
-    separating, // s + c u_nu < 0:       s = 0, u_nu free
-    stick,      // 0 <= s + c u_nu <= a: u_nu = 0
-    penetrating // s + c u_nu > a:       s = a, u_nu free
+    separating, // s_nu + c u_nu < 0:    s_nu = 0, u_nu free
+    stick,      // 0 <= s_nu + c u_nu <= a: u_nu = 0
+    penetrating // s_nu + c u_nu > a:    s_nu = a, u_nu free
   };
 
   enum class TangentialBranch
   {
-    stick, // |lambda + c u_tau| <= F_b: u_tau = 0
-    slip   // lambda = F_b q/|q|, q = lambda + c u_tau
+    stick, // |s_tau + c u_tau| <= F_b: u_tau = 0
+    slip   // s_tau = F_b q/|q|, q = s_tau + c u_tau
   };
 
   template <int dim>
@@ -377,8 +377,8 @@ namespace Step4
   // residual estimator"), kept apart so that each can be reported alone:
   // the cell residual, the jumps of the traction across interior faces,
   // the traction residual on $\Gamma_2$ and on $\Gamma_3$. The factor
-  // $s = 1/(2\mu)$ puts $\eta$ in the energy norm $|||v||| = a(v,
-  // v)^{1/2}$ (since $2\mu\|\varepsilon(v)\|^2 \le a(v, v)$), so that it
+  // $s = 1/(2\mu)$ puts $\eta$ in the energy norm $|||v||| = a_B(v,
+  // v)^{1/2}$ (since $2\mu\|\varepsilon(v)\|^2 \le a_B(v, v)$), so that it
   // can be compared with the error, whatever the units of the moduli.
   struct ErrorEstimate
   {
@@ -841,13 +841,13 @@ namespace Step4
   // @sect4{The state of a node}
 
   // The traction $G_i/m_i = -R_i/m_i$ of a contact node, split into the
-  // multipliers $s = G_i\cdot\nu/m_i - p(u_\nu)$ and $\lambda =
+  // multipliers $s_\nu = G_i\cdot\nu/m_i - p(u_\nu)$ and $s_\tau =
   // G_{i,\tau}/m_i$ of the convex parts of the laws, and the arguments
-  // $q_\nu = s + c\,u_\nu$, $q_\tau = \lambda + c\,u_\tau$ of the
+  // $q_\nu = s_\nu + c\,u_\nu$, $q_\tau = s_\tau + c\,u_\tau$ of the
   // projections in the complementarity functions
   // @f[
-  //   C_\nu = s - P_{[0,a]}(s + c\,u_\nu),\qquad
-  //   C_\tau = \lambda - P_{|\cdot|\le F_b}(\lambda + c\,u_\tau).
+  //   C_\nu = s_\nu - P_{[0,a]}(s_\nu + c\,u_\nu),\qquad
+  //   C_\tau = s_\tau - P_{|\cdot|\le F_b}(s_\tau + c\,u_\tau).
   // @f]
   template <int dim>
   // The members, in the order of the formulas: the normal displacement and
@@ -858,10 +858,10 @@ namespace Step4
   {
     double         u_nu;
     Tensor<1, dim> u_tau;
-    double         s;
-    Tensor<1, dim> lambda;
-    double         q_nu;  // s + c u_nu
-    Tensor<1, dim> q_tau; // lambda + c u_tau
+    double         s_nu;
+    Tensor<1, dim> s_tau;
+    double         q_nu;  // s_nu + c u_nu
+    Tensor<1, dim> q_tau; // s_tau + c u_tau
   };
 
   template <int dim>
@@ -879,16 +879,16 @@ namespace Step4
     // supply; divided by the weight $m_i$ it is a traction, comparable with
     // the law's response $\xi$ and the friction bound $F_b$.
     NodeState m;
-    m.u_nu   = u * node.normal;
-    m.u_tau  = u - m.u_nu * node.normal;
-    m.s      = traction * node.normal - data.law.remainder(m.u_nu);
-    m.lambda = traction - (traction * node.normal) * node.normal;
-    m.q_nu   = m.s + node.c * m.u_nu;
-    m.q_tau  = m.lambda + node.c * m.u_tau;
+    m.u_nu  = u * node.normal;
+    m.u_tau = u - m.u_nu * node.normal;
+    m.s_nu  = traction * node.normal - data.law.remainder(m.u_nu);
+    m.s_tau = traction - (traction * node.normal) * node.normal;
+    m.q_nu  = m.s_nu + node.c * m.u_nu;
+    m.q_tau = m.s_tau + node.c * m.u_tau;
     return m;
   }
 
-  // The projection onto the friction disk $|\lambda| \le F_b$.
+  // The projection onto the friction disk $|s_\tau| \le F_b$.
   template <int dim>
   Tensor<1, dim>
   // (inside the disk $q$ itself, outside its radial projection)
@@ -964,9 +964,9 @@ namespace Step4
           free_part(node.dofs[c]) = 0;
         const NodeState m = node_state(node, residual);
         const double    C_nu =
-          m.s - std::min(std::max(m.q_nu, 0.), data.law.jump());
+          m.s_nu - std::min(std::max(m.q_nu, 0.), data.law.jump());
         const Tensor<1, dim> C_tau =
-          m.lambda - project_on_disk(m.q_tau, data.friction_bound);
+          m.s_tau - project_on_disk(m.q_tau, data.friction_bound);
         contact_part +=
           node.mass * node.mass * (C_nu * C_nu + C_tau.norm_square());
       }
