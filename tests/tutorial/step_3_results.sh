@@ -31,9 +31,9 @@ check() { # check PAGE TEXT
     { echo "FAIL: '$2' is not in $1"; exit 1; }
 }
 check "$intro" "λ₁ = $lambda on the block"
-check "$page" "λ₁ = $lambda > α_ν"
-check "$page" "(u_ν = $u075, the largest)"
-check "$page" "from $N075 at t = 0.75 to $N2 at t = 2"
+check "$page" "\$\\lambda_1 = $lambda > \\alpha_\\nu"
+check "$page" "(\$u_\\nu = $u075\$, the largest)"
+check "$page" "from $N075 at \$t = 0.75\$ to $N2 at \$t = 2\$"
 check "$page" "falls to $u2 under the same load"
 check "$page" "jumps to $elastic when"
 echo "step-3 block prints the $(wc -l < printed.txt) lines of its results page; lambda_1 = $lambda, max u_nu $u075 -> $u2, N $N075 -> $N2, without memory $elastic, as the pages quote"

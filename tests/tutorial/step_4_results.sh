@@ -32,7 +32,7 @@ awk '/^level cells/ {t = "u"; next} /^cycle cells/ {t = "a"; next}
 range() { awk -v t="$1" '$1 == t {v = $NF; if (min == "" || v < min) min = v; if (v > max) max = v}
                           END {printf "between %s and %s", min, max}' rows.txt; }
 rates=$(awk '$1 == "a" && $7 != "-" {v = $7; if (min == "" || v < min) min = v; if (v > max) max = v}
-             END {printf "between N^(−%s) and N^(−%s)", min, max}' rows.txt)
+             END {printf "between $N^{-%s}$ and $N^{-%s}$", min, max}' rows.txt)
 last_u=$(awk '$1 == "u" {r = $0} END {split(r, a, " "); print a[6], a[4], a[7]}' rows.txt)
 last_a=$(awk '$1 == "a" {r = $0} END {split(r, a, " "); print a[6], a[4]}' rows.txt)
 read -r u_E u_dofs u_rate <<< "$last_u"; read -r a_E a_dofs <<< "$last_a"
@@ -42,7 +42,7 @@ read -r aE aeta < <(sed -n 's/^rate from cycle 0 to 8: E_J \([0-9.]*\), eta \([0
 contact=$(/usr/bin/python3 -c "
 import csv
 rows = list(csv.DictReader(open('adaptive.csv')))
-print(f\"{float(rows[0]['estimate_contact']):.3f} of η = {float(rows[0]['estimate']):.3f} at cycle 0|\"
+print(f\"{float(rows[0]['estimate_contact']):.3f} of \$\\\\eta = {float(rows[0]['estimate']):.3f}\$ at cycle 0|\"
       f\"{float(rows[8]['estimate_contact']):.4f} of {float(rows[8]['estimate']):.3f} at cycle 8\")")
 # the reference's error against the last cycle's, from the two estimates
 bias=$(/usr/bin/python3 -c "
@@ -61,15 +61,15 @@ failures=0
 [ "$sep" = 0 ] || { echo "FAIL: $sep separating nodes, the pages say none"; failures=1; }
 alpha=$(sed -n 's/^alpha_nu = \([0-9.]*\),.*/\1/p' printed.txt)
 times=$(awk -v l="$lambda" -v a="$alpha" 'BEGIN {printf "%d", l / a}')
-for quote in "λ₁ = $lambda, $times times α_ν|$intro" "λ₁ = $lambda > α_ν = 0.769|$results" \
+for quote in "λ₁ = $lambda, $times times α_ν|$intro" "\$\\lambda_1 = $lambda > \\alpha_\\nu = 0.769\$|$results" \
              "$pen contact nodes penetrate, $stick are held|$intro" \
              "78 stick tangentially and $slip slip|$intro" \
              "$pen of the $((sep + stick + pen)) contact nodes penetrate|$results" \
-             "$stick are held at u_ν = 0, none separates; $slip slip|$results" \
+             "$stick are held at \$u_\\nu = 0\$, none separates; $slip slip|$results" \
              "cycle 14 of the same adaptive loop, $ref_dofs unknowns|$intro" \
-             "N^(−$uE) over the table|$results" "N^(−$u_rate) between its last two levels|$results" \
-             "N^(−$aE) from cycle 0 to cycle 8|$results" "$rates from one cycle|$results" \
-             "estimate falls at N^(−$aeta)|$results" \
+             "\$N^{-$uE}\$ over the table|$results" "\$N^{-$u_rate}\$ between its last two levels|$results" \
+             "\$N^{-$aE}\$ from cycle 0 to cycle 8|$results" "$rates from one cycle|$results" \
+             "estimate falls at \$N^{-$aeta}\$|$results" \
              "$(range a) on the adaptive meshes|$results" "$(range u) on the uniform ones|$results" \
              "At $(comma "$a_dofs") unknowns the adaptive error is $a_E, below the $u_E of the uniform mesh with $(comma "$u_dofs")|$results" \
              "${contact%%|*}|$results" "${contact##*|}|$results" \
