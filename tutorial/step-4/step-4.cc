@@ -1826,10 +1826,16 @@ namespace Step4
 
 // @sect3{The command line}
 
-// step-1's command-line idiom: one table of the modes, one check of the
-// number, every argument checked before anything is computed. A bad one
-// ends the program with a message that quotes it, the usage and the exit
-// code 2 (1 is kept for a computation that fails).
+// The program runs everything without arguments, or one part by its mode,
+// as the usage says. Its check is one table and one test in main(): the
+// table names each mode and how many arguments it takes, itself included
+// (the empty mode is the run without arguments); the test refuses an
+// unknown mode, a surplus argument and a number of cycles that is not one
+// to three decimal digits from 1 to max_cycles (std::stoul() alone would
+// read "3x" as 3 and "-1" as four billion). A bad command line ends the
+// program before anything is computed, with a message that quotes the
+// arguments, the usage and the exit code 2 (1 is kept for a computation
+// that fails).
 namespace CommandLine
 {
   const char *const usage =
@@ -1840,25 +1846,15 @@ namespace CommandLine
     "       step-4 --help             this text\n"
     "exit codes: 0 done, 1 the computation failed, 2 a bad argument";
 
-  // A number of cycles: one to three decimal digits and nothing else, from
-  // 1 to @p max, so that "-1", "+2", "abc", "3x" and " 3" are refused
-  // alike. Each cycle refines a fifth of the cells, about 1.6 times the
-  // unknowns of the cycle before and, with the direct solver, about twice
-  // the time: 16 cycles end at 121,872 unknowns after about 20 s, and the
-  // cap keeps a typo from running for an hour or exhausting the memory.
-  unsigned int
-  parse_cycles(const std::string &text, const unsigned int max)
-  {
-    const bool digits =
-      !text.empty() && text.size() <= 3 &&
-      text.find_first_not_of("0123456789") == std::string::npos;
-    const unsigned int cycles = digits ? std::stoul(text) : 0;
-    if (cycles < 1 || cycles > max)
-      throw std::invalid_argument(
-        "the number of cycles must be a whole number from 1 to " +
-        std::to_string(max) + ", not '" + text + "'");
-    return cycles;
-  }
+  const std::map<std::string, std::size_t> modes = {{"", 0},
+                                                    {"adaptive", 2},
+                                                    {"--help", 1}};
+
+  // Each cycle refines a fifth of the cells, about 1.6 times the unknowns of
+  // the cycle before and, with the direct solver, about twice the time: 16
+  // cycles end at 121,872 unknowns after about 20 s, and the cap keeps a typo
+  // from running for an hour or exhausting the memory.
+  const unsigned int max_cycles = 16;
 } // namespace CommandLine
 
 // @sect3{The main function}
@@ -1875,43 +1871,33 @@ main(int argc, char **argv)
   using namespace Step4;
   const std::vector<std::string> arguments(argv + 1, argv + argc);
   const std::string              mode = arguments.empty() ? "" : arguments[0];
-  unsigned int                   n_cycles = 0; // 0: the default run
-  try
+  // The number of cycles: the mode "adaptive" needs one (without it the
+  // test refuses the empty text), the other modes take none ("1" passes).
+  const std::string cycles = arguments.size() == 2 ? arguments[1] :
+                             mode == "adaptive"    ? "" :
+                                                     "1";
+  // A bad command line ends here, before any output file is opened, and
+  // so does --help.
+  if ((!arguments.empty() && mode.empty()) ||
+      CommandLine::modes.count(mode) == 0 ||
+      arguments.size() > CommandLine::modes.at(mode) || cycles.empty() ||
+      cycles.size() > 3 ||
+      cycles.find_first_not_of("0123456789") != std::string::npos ||
+      std::stoul(cycles) < 1 || std::stoul(cycles) > CommandLine::max_cycles)
     {
-      // Each mode and the number of arguments it takes, itself included;
-      // the empty mode is the run without arguments.
-      const std::map<std::string, std::size_t> modes = {{"", 0},
-                                                        {"adaptive", 2},
-                                                        {"--help", 1}};
-      if (arguments.size() > 0 && (mode.empty() || modes.count(mode) == 0))
-        throw std::invalid_argument("unknown mode '" + mode +
-                                    "' (the mode is adaptive)");
-      if (arguments.size() > modes.at(mode))
-        throw std::invalid_argument("too many arguments: '" +
-                                    arguments[modes.at(mode)] + "' after '" +
-                                    arguments[modes.at(mode) - 1] + "'");
-      // The mode "adaptive" needs its number: without one, the check
-      // refuses the empty text.
-      if (mode == "adaptive")
-        n_cycles =
-          CommandLine::parse_cycles(arguments.size() == 2 ? arguments[1] : "",
-                                    16);
-    }
-  // Every bad argument ends here: the message names it, the usage follows,
-  // and the exit code 2 tells a script that nothing was computed.
-  catch (const std::invalid_argument &error)
-    {
-      std::cerr << "step-4: " << error.what() << ".\n"
-                << CommandLine::usage << std::endl;
+      std::cerr << "step-4: cannot run";
+      for (const std::string &argument : arguments)
+        std::cerr << " '" << argument << "'";
+      std::cerr << ".\n" << CommandLine::usage << std::endl;
       return 2;
     }
-  // The arguments are valid. --help prints the usage and stops here, before
-  // any output file is opened.
   if (mode == "--help")
     {
       std::cout << CommandLine::usage << std::endl;
       return 0;
     }
+  // 0 cycles: the default run, the reference and the two tables.
+  const unsigned int n_cycles = mode == "adaptive" ? std::stoul(cycles) : 0;
 
   try
     {

@@ -1445,12 +1445,16 @@ namespace Step5
 
 // @sect3{The command line}
 
-// The program runs everything without arguments, or one part by its mode.
-// We check every argument before anything is computed, and a bad one ends
-// the program with a message that quotes it, the usage and the exit code 2
-// (1 is kept for a computation that fails). The check is ours, not
-// std::stoi()'s, because std::stoi() takes "3x" as 3, and a negative
-// number read into an unsigned int asks for four billion levels.
+// The program runs everything without arguments, or one part by its mode,
+// as the usage says. Its check is one table and one test in main(): the
+// table names each mode and how many arguments it takes, itself included
+// (the empty mode is the run without arguments); the test refuses an
+// unknown mode, a surplus argument and a number of levels that is not one
+// to three decimal digits from 1 to max_levels (std::stoul() alone would
+// read "3x" as 3 and "-1" as four billion). A bad command line ends the
+// program before anything is computed, with a message that quotes the
+// arguments, the usage and the exit code 2 (1 is kept for a computation
+// that fails).
 namespace CommandLine
 {
   const char *const usage =
@@ -1462,25 +1466,16 @@ namespace CommandLine
     "       step-5 --help                 this text\n"
     "exit codes: 0 done, 1 the computation failed, 2 a bad argument";
 
-  // A number of levels: one to three decimal digits and nothing else, from
-  // 1 to @p max. Each level has four times the unknowns of the one before
-  // and, with UMFPACK, about four times the memory: level 7 (132,098
-  // unknowns) took 96 s and 0.63 GB, an eighth would take ten minutes and
-  // 2.5 GB, so we refuse it rather than let a typo exhaust the machine.
-  unsigned int
-  parse_levels(const std::string &text, const unsigned int max)
-  {
-    const bool digits =
-      !text.empty() && text.size() <= 3 &&
-      text.find_first_not_of("0123456789") == std::string::npos;
-    const unsigned int levels = digits ? std::stoul(text) : 0;
-    if (levels < 1 || levels > max)
-      throw std::invalid_argument(
-        "the number of levels must be a whole number from 1 to " +
-        std::to_string(max) + ", not '" + text + "' (level 7 has 132,098 " +
-        "unknowns and takes 0.63 GB; each further level four times more)");
-    return levels;
-  }
+  const std::map<std::string, std::size_t> modes = {{"", 0},
+                                                    {"block", 1},
+                                                    {"convergence", 2},
+                                                    {"--help", 1}};
+
+  // Each level has four times the unknowns of the one before and, with
+  // UMFPACK, about four times the memory: level 7 (132,098 unknowns) took 96 s
+  // and 0.63 GB, an eighth would take ten minutes and 2.5 GB, so we refuse it
+  // rather than let a typo exhaust the machine.
+  const unsigned int max_levels = 7;
 } // namespace CommandLine
 
 // @sect3{The main function}
@@ -1500,43 +1495,28 @@ main(int argc, char **argv)
   const std::string              mode = arguments.empty() ? "" : arguments[0];
   // The default of the convergence study: five levels, $h = 1/4$ to $1/64$,
   // a few seconds in all.
-  unsigned int n_levels = 5;
-  try
+  const std::string levels = arguments.size() == 2 ? arguments[1] : "5";
+  // A bad command line ends here, before any output file is opened, and
+  // so does --help.
+  if ((!arguments.empty() && mode.empty()) ||
+      CommandLine::modes.count(mode) == 0 ||
+      arguments.size() > CommandLine::modes.at(mode) || levels.empty() ||
+      levels.size() > 3 ||
+      levels.find_first_not_of("0123456789") != std::string::npos ||
+      std::stoul(levels) < 1 || std::stoul(levels) > CommandLine::max_levels)
     {
-      // Each mode and the number of arguments it takes, itself included.
-      // One table says which modes exist and how many arguments each takes,
-      // the mode included; the empty mode is the run without arguments. Two
-      // checks against it, and the check of the number of levels, are the
-      // whole validation.
-      const std::map<std::string, std::size_t> modes = {{"", 0},
-                                                        {"block", 1},
-                                                        {"convergence", 2},
-                                                        {"--help", 1}};
-      if (arguments.size() > 0 && (mode.empty() || modes.count(mode) == 0))
-        throw std::invalid_argument("unknown mode '" + mode + "' (the modes " +
-                                    "are block and convergence)");
-      if (arguments.size() > modes.at(mode))
-        throw std::invalid_argument("too many arguments: '" +
-                                    arguments[modes.at(mode)] + "' after '" +
-                                    arguments[modes.at(mode) - 1] + "'");
-      if (arguments.size() == 2)
-        n_levels = CommandLine::parse_levels(arguments[1], 7);
-    }
-  // Every bad argument ends here: the message names it, the usage follows,
-  // and the exit code 2 tells a script that nothing was computed.
-  catch (const std::invalid_argument &error)
-    {
-      std::cerr << "step-5: " << error.what() << ".\n"
-                << CommandLine::usage << std::endl;
+      std::cerr << "step-5: cannot run";
+      for (const std::string &argument : arguments)
+        std::cerr << " '" << argument << "'";
+      std::cerr << ".\n" << CommandLine::usage << std::endl;
       return 2;
     }
-  // The arguments are valid. --help prints the usage and stops here, before
-  // any output file is opened.
   if (mode == "--help")
     {
       std::cout << CommandLine::usage << std::endl;
       return 0;
     }
+  const unsigned int n_levels = std::stoul(levels);
 
   try
     {
