@@ -32,7 +32,7 @@ awk '/^level cells/ {t = "u"; next} /^cycle cells/ {t = "a"; next}
 range() { awk -v t="$1" '$1 == t {v = $NF; if (min == "" || v < min) min = v; if (v > max) max = v}
                           END {printf "between %s and %s", min, max}' rows.txt; }
 rates=$(awk '$1 == "a" && $7 != "-" {v = $7; if (min == "" || v < min) min = v; if (v > max) max = v}
-             END {printf "between $N^{-%s}$ and $N^{-%s}$", min, max}' rows.txt)
+             END {printf "between $n_\\text{dofs}^{-%s}$ and $n_\\text{dofs}^{-%s}$", min, max}' rows.txt)
 last_u=$(awk '$1 == "u" {r = $0} END {split(r, a, " "); print a[6], a[4], a[7]}' rows.txt)
 last_a=$(awk '$1 == "a" {r = $0} END {split(r, a, " "); print a[6], a[4]}' rows.txt)
 read -r u_E u_dofs u_rate <<< "$last_u"; read -r a_E a_dofs <<< "$last_a"
@@ -67,9 +67,9 @@ for quote in "λ₁ = $lambda, $times times α_ν|$intro" "\$\\lambda_1 = $lambd
              "$pen of the $((sep + stick + pen)) contact nodes penetrate|$results" \
              "$stick are held at \$u_\\nu = 0\$, none separates; $slip slip|$results" \
              "cycle 14 of the same adaptive loop, $ref_dofs unknowns|$intro" \
-             "\$N^{-$uE}\$ over the table|$results" "\$N^{-$u_rate}\$ between its last two levels|$results" \
-             "\$N^{-$aE}\$ from cycle 0 to cycle 8|$results" "$rates from one cycle|$results" \
-             "estimate falls at \$N^{-$aeta}\$|$results" \
+             "\$n_\\text{dofs}^{-$uE}\$ over the table|$results" "\$n_\\text{dofs}^{-$u_rate}\$ between its last two levels|$results" \
+             "\$n_\\text{dofs}^{-$aE}\$ from cycle 0 to cycle 8|$results" "$rates from one cycle|$results" \
+             "estimate falls at \$n_\\text{dofs}^{-$aeta}\$|$results" \
              "$(range a) on the adaptive meshes|$results" "$(range u) on the uniform ones|$results" \
              "At $(comma "$a_dofs") unknowns the adaptive error is $a_E, below the $u_E of the uniform mesh with $(comma "$u_dofs")|$results" \
              "${contact%%|*}|$results" "${contact##*|}|$results" \

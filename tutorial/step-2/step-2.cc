@@ -1426,14 +1426,14 @@ namespace Step2
   // introduction). This is why a short enough time step makes every step
   // uniquely solvable, where step-1 needed a stiff enough body.
   //
-  // $\lambda_1$ is the smallest eigenvalue of the pencil $(K_0, N)$ with the
-  // normal boundary mass $N = \sum_i m_i \nu_i\otimes\nu_i$ (nodal
-  // quadrature of $\int_{\Gamma_3} v_\nu^2$). $N$ is singular (it sees only
+  // $\lambda_1$ is the smallest eigenvalue of the pencil $(K_0, M_\nu)$ with
+  // the normal boundary mass $M_\nu = \sum_i m_i \nu_i\otimes\nu_i$ (nodal
+  // quadrature of $\int_{\Gamma_3} v_\nu^2$). $M_\nu$ is singular (it sees only
   // the normal components on $\Gamma_3$), so we compute the largest
-  // eigenvalue $1/\lambda_1$ of $K_0^{-1}N$ instead, by the power iteration
-  // $x \leftarrow K_0^{-1} N x$: each step is one solve with the UMFPACK
+  // eigenvalue $1/\lambda_1$ of $K_0^{-1}M_\nu$ instead, by the power iteration
+  // $x \leftarrow K_0^{-1} M_\nu x$: each step is one solve with the UMFPACK
   // factorisation of $K_0$, computed once. The Rayleigh quotient
-  // $x\cdot K_0x / x\cdot Nx$ of the iterate approaches $\lambda_1$ from
+  // $x\cdot K_0x / x\cdot M_\nu x$ of the iterate approaches $\lambda_1$ from
   // above, with an error of the square of the iterate's; we stop when it
   // changes by less than $10^{-12}$ relative. The start is the normal
   // field on $\Gamma_3$, which the lowest mode resembles. The full program
@@ -1443,45 +1443,45 @@ namespace Step2
   double
   DynamicContactProblem<dim>::smallness_constant() const
   {
-    // We never assemble $N$ as a matrix: it is diagonal in the nodes, and
+    // We never assemble $M_\nu$ as a matrix: it is diagonal in the nodes, and
     // applying it is one loop over the contact nodes, which project $v$ onto
     // their normals and weight it with $m_i$.
-    const auto apply_N = [&](const Vector<double> &v, Vector<double> &Nv) {
-      Nv = 0;
+    const auto apply_M_nu = [&](const Vector<double> &v, Vector<double> &Mv) {
+      Mv = 0;
       for (const ContactNode<dim> &node : contact_nodes)
         {
           double v_nu = 0;
           for (unsigned int c = 0; c < dim; ++c)
             v_nu += v(node.dofs[c]) * node.normal[c];
           for (unsigned int c = 0; c < dim; ++c)
-            Nv(node.dofs[c]) = node.mass * v_nu * node.normal[c];
+            Mv(node.dofs[c]) = node.mass * v_nu * node.normal[c];
         }
     };
 
     // The clamped degrees of freedom have a nonzero diagonal entry in the
     // condensed $K_0$ (deal.II puts one there when it condenses), so $K_0$
-    // is invertible, and the power iteration never sees them: $N$ vanishes
+    // is invertible, and the power iteration never sees them: $M_\nu$ vanishes
     // there.
     SparseDirectUMFPACK K_inverse;
     K_inverse.initialize(stiffness_matrix);
-    Vector<double> x(dof_handler.n_dofs()), Nx(x), Kx(x);
+    Vector<double> x(dof_handler.n_dofs()), Mx(x), Kx(x);
     for (const ContactNode<dim> &node : contact_nodes)
       for (unsigned int c = 0; c < dim; ++c)
         x(node.dofs[c]) = node.normal[c];
 
-    // The power iteration. Each step applies $K_0^{-1}N$ and normalises; the
-    // iterate approaches the eigenvector of the largest eigenvalue of
-    // $K_0^{-1}N$ at the rate of the ratio of the two largest, and the cap of
-    // 1000 steps guards against a pair too close to separate.
+    // The power iteration. Each step applies $K_0^{-1}M_\nu$ and normalises;
+    // the iterate approaches the eigenvector of the largest eigenvalue of
+    // $K_0^{-1}M_\nu$ at the rate of the ratio of the two largest, and the cap
+    // of 1000 steps guards against a pair too close to separate.
     double lambda = std::numeric_limits<double>::max();
     for (unsigned int iteration = 0; iteration < 1000; ++iteration)
       {
-        apply_N(x, Nx);
-        K_inverse.vmult(x, Nx);
+        apply_M_nu(x, Mx);
+        K_inverse.vmult(x, Mx);
         x /= x.l2_norm();
         stiffness_matrix.vmult(Kx, x);
-        apply_N(x, Nx);
-        const double quotient = (x * Kx) / (x * Nx);
+        apply_M_nu(x, Mx);
+        const double quotient = (x * Kx) / (x * Mx);
         if (std::abs(quotient - lambda) <= 1e-12 * quotient)
           return quotient;
         lambda = quotient;

@@ -272,7 +272,7 @@ namespace Step3
   // virtual functions of $x$ and the load parameter $t$) plus the two
   // kernels and the end $T$ of the load history. In step-1 the load
   // values were independent problems and main() chose them; here they are
-  // a history, $t_n = n k$ for $n = 0, \dots, N = T/k$, and the problem
+  // a history, $t_n = n k$ for $n = 0, \dots, n_T = T/k$, and the problem
   // says how long it lasts.
   template <int dim>
   class ProblemData
@@ -516,9 +516,9 @@ namespace Step3
     exact_gradient(const Point<2> &p, const double t) const
     {
       const double phi = time_factor(t) * (1 + p[1]);
-      const auto   T = g_tau(p[0]), N = g_nu(p[0]);
-      return Tensor<2, 2>({{phi * T[1], time_factor(t) * T[0]},
-                           {-phi * N[1], -time_factor(t) * N[0]}});
+      const auto   gt = g_tau(p[0]), gn = g_nu(p[0]);
+      return Tensor<2, 2>({{phi * gt[1], time_factor(t) * gt[0]},
+                           {-phi * gn[1], -time_factor(t) * gn[0]}});
     }
 
     // $\mu_C(t)$ and $\lambda_C(t)$, the Lam\'e constants of $C(t)$.
@@ -543,10 +543,10 @@ namespace Step3
     {
       const auto [mu_C, lambda_C] = effective_lame(t);
       const double y1             = 1 + p[1];
-      const auto   T = g_tau(p[0]), N = g_nu(p[0]);
+      const auto   gt = g_tau(p[0]), gn = g_nu(p[0]);
       return Tensor<1, 2>(
-        {-mu_C * y1 * T[2] - (mu_C + lambda_C) * (y1 * T[2] - N[1]),
-         mu_C * y1 * N[2] - (mu_C + lambda_C) * T[1]});
+        {-mu_C * y1 * gt[2] - (mu_C + lambda_C) * (y1 * gt[2] - gn[1]),
+         mu_C * y1 * gn[2] - (mu_C + lambda_C) * gt[1]});
     }
 
     Tensor<1, 2>
@@ -1100,8 +1100,8 @@ namespace Step3
   // Called before load value $n \ge 1$ is solved, while the solution still
   // holds $u_{n-1}$. A direct evaluation of the sums above would keep every
   // past $u_j$ and cost $n$ vector operations at load value $n$: a run of
-  // $N$ load values would cost $O(N^2)$ and store $N$ vectors. For a Prony
-  // series each exponential has a history of one vector,
+  // $n_T$ load values would cost $O(n_T^2)$ and store $n_T$ vectors. For a
+  // Prony series each exponential has a history of one vector,
   // @f[
   //   h_{m,n} = k\sum_{j<n} e^{-(t_n - t_j)/\tau_m}\,u_j,
   // @f]
@@ -1565,8 +1565,8 @@ namespace Step3
   // @sect4{MemoryContactProblem::smallness_constant}
 
   // step-1's power iteration for $\lambda_1$, the smallest eigenvalue of
-  // the pencil $(K, N)$ with $N = \sum_i m_i\nu_i\otimes\nu_i$: the
-  // largest eigenvalue $1/\lambda_1$ of $K^{-1}N$, one UMFPACK solve per
+  // the pencil $(K, M_\nu)$ with $M_\nu = \sum_i m_i\nu_i\otimes\nu_i$: the
+  // largest eigenvalue $1/\lambda_1$ of $K^{-1}M_\nu$, one UMFPACK solve per
   // iteration, until the Rayleigh quotient changes by less than
   // $10^{-12}$ relative. The memory does not enter: it changes $\ell_n$, not
   // the quadratic part of $J_n$.
@@ -1574,44 +1574,45 @@ namespace Step3
   double
   MemoryContactProblem<dim>::smallness_constant() const
   {
-    // We never assemble $N$ as a matrix: it is diagonal in the nodes, and
+    // We never assemble $M_\nu$ as a matrix: it is diagonal in the nodes, and
     // applying it is one loop over the contact nodes, which project $v$ onto
     // their normals and weight it with $m_i$.
-    const auto apply_N = [&](const Vector<double> &v, Vector<double> &Nv) {
-      Nv = 0;
+    const auto apply_M_nu = [&](const Vector<double> &v, Vector<double> &Mv) {
+      Mv = 0;
       for (const ContactNode<dim> &node : contact_nodes)
         {
           double v_nu = 0;
           for (unsigned int c = 0; c < dim; ++c)
             v_nu += v(node.dofs[c]) * node.normal[c];
           for (unsigned int c = 0; c < dim; ++c)
-            Nv(node.dofs[c]) = node.mass * v_nu * node.normal[c];
+            Mv(node.dofs[c]) = node.mass * v_nu * node.normal[c];
         }
     };
 
     // The clamped degrees of freedom have a nonzero diagonal entry in the
     // condensed $K$ (deal.II puts one there when it condenses), so $K$ is
-    // invertible, and the power iteration never sees them: $N$ vanishes there.
+    // invertible, and the power iteration never sees them: $M_\nu$ vanishes
+    // there.
     SparseDirectUMFPACK K_inverse;
     K_inverse.initialize(stiffness_matrix);
-    Vector<double> x(dof_handler.n_dofs()), Nx(x), Kx(x);
+    Vector<double> x(dof_handler.n_dofs()), Mx(x), Kx(x);
     for (const ContactNode<dim> &node : contact_nodes)
       for (unsigned int c = 0; c < dim; ++c)
         x(node.dofs[c]) = node.normal[c];
 
-    // The power iteration. Each step applies $K^{-1}N$ and normalises; the
-    // iterate approaches the eigenvector of the largest eigenvalue of $K^{-1}N$
-    // at the rate of the ratio of the two largest, and the cap of 1000 steps
-    // guards against a pair too close to separate.
+    // The power iteration. Each step applies $K^{-1}M_\nu$ and normalises; the
+    // iterate approaches the eigenvector of the largest eigenvalue of
+    // $K^{-1}M_\nu$ at the rate of the ratio of the two largest, and the cap of
+    // 1000 steps guards against a pair too close to separate.
     double lambda = std::numeric_limits<double>::max();
     for (unsigned int iteration = 0; iteration < 1000; ++iteration)
       {
-        apply_N(x, Nx);
-        K_inverse.vmult(x, Nx);
+        apply_M_nu(x, Mx);
+        K_inverse.vmult(x, Mx);
         x /= x.l2_norm();
         stiffness_matrix.vmult(Kx, x);
-        apply_N(x, Nx);
-        const double quotient = (x * Kx) / (x * Nx);
+        apply_M_nu(x, Mx);
+        const double quotient = (x * Kx) / (x * Mx);
         if (std::abs(quotient - lambda) <= 1e-12 * quotient)
           return quotient;
         lambda = quotient;

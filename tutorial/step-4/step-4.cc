@@ -1392,9 +1392,10 @@ namespace Step4
   // @sect4{AdaptiveContactProblem::refine_mesh}
 
   // step-6's four steps. Mark:
-  // GridRefinement::refine_and_coarsen_fixed_number() flags the $\lfloor\theta
-  // N\rfloor$ cells with the largest indicators
-  // ($N$ cells, $\theta$ = @p fraction; a cell tied with the last one is
+  // GridRefinement::refine_and_coarsen_fixed_number() flags the $\lfloor\zeta
+  // n_K\rfloor$ cells with the largest indicators
+  // ($n_K$ cells, $\zeta$ = @p fraction; $\theta$ stays the step length of
+  // the line search; a cell tied with the last one is
   // flagged too) and coarsens none. Refine: the triangulation refines the
   // flagged cells, and then more where the smoothing asks (no two cells
   // at a vertex two levels apart). Move the solution: SolutionTransfer
@@ -1441,29 +1442,29 @@ namespace Step4
 
   // @sect4{AdaptiveContactProblem::smallness_constant}
 
-  // step-1's power iteration $x \leftarrow K^{-1}Nx$ for the largest
-  // eigenvalue $1/\lambda_1$ of $K^{-1}N$, $N = \sum_i m_i\nu_i\otimes
+  // step-1's power iteration $x \leftarrow K^{-1}M_\nu x$ for the largest
+  // eigenvalue $1/\lambda_1$ of $K^{-1}M_\nu$, $M_\nu = \sum_i m_i\nu_i\otimes
   // \nu_i$; its Rayleigh quotient approaches $\lambda_1$ from above, and
   // the iteration stops when it changes by less than $10^{-12}$ relative.
   // The iterate vanishes on the constrained degrees of freedom (their rows
-  // of the condensed $K$ are diagonal, and $Nx$ is zero there), so the
+  // of the condensed $K$ are diagonal, and $M_\nu x$ is zero there), so the
   // quotient is that of the field in $V^h$.
   template <int dim>
   double
   AdaptiveContactProblem<dim>::smallness_constant() const
   {
-    // We never assemble $N$ as a matrix: it is diagonal in the nodes, and
+    // We never assemble $M_\nu$ as a matrix: it is diagonal in the nodes, and
     // applying it is one loop over the contact nodes, which project $x$ onto
     // their normals and weight it with $m_i$.
-    const auto apply_N = [&](const Vector<double> &x, Vector<double> &Nx) {
-      Nx = 0;
+    const auto apply_M_nu = [&](const Vector<double> &x, Vector<double> &Mx) {
+      Mx = 0;
       for (const ContactNode<dim> &node : contact_nodes)
         {
           double x_nu = 0;
           for (unsigned int c = 0; c < dim; ++c)
             x_nu += x(node.dofs[c]) * node.normal[c];
           for (unsigned int c = 0; c < dim; ++c)
-            Nx(node.dofs[c]) = node.mass * x_nu * node.normal[c];
+            Mx(node.dofs[c]) = node.mass * x_nu * node.normal[c];
         }
     };
 
@@ -1472,26 +1473,26 @@ namespace Step4
     // resembles.
     SparseDirectUMFPACK K_inverse;
     K_inverse.initialize(stiffness_matrix);
-    Vector<double> x(dof_handler.n_dofs()), Nx(x), Kx(x);
+    Vector<double> x(dof_handler.n_dofs()), Mx(x), Kx(x);
     for (const ContactNode<dim> &node : contact_nodes)
       for (unsigned int c = 0; c < dim; ++c)
         x(node.dofs[c]) = node.normal[c];
 
-    // The power iteration. Each step applies $K^{-1}N$ and normalises; the
-    // iterate approaches the eigenvector of the largest eigenvalue of $K^{-1}N$
-    // at the rate of the ratio of the two largest, and the cap of 1000 steps
-    // guards against a pair too close to separate.
+    // The power iteration. Each step applies $K^{-1}M_\nu$ and normalises; the
+    // iterate approaches the eigenvector of the largest eigenvalue of
+    // $K^{-1}M_\nu$ at the rate of the ratio of the two largest, and the cap of
+    // 1000 steps guards against a pair too close to separate.
     double lambda = std::numeric_limits<double>::max();
     for (unsigned int iteration = 0; iteration < 1000; ++iteration)
       {
-        apply_N(x, Nx);
-        K_inverse.vmult(x, Nx);
+        apply_M_nu(x, Mx);
+        K_inverse.vmult(x, Mx);
         x /= x.l2_norm();
         stiffness_matrix.vmult(Kx, x);
-        apply_N(x, Nx);
+        apply_M_nu(x, Mx);
         // The Rayleigh quotient of the current iterate, which approaches
         // $\lambda_1$ from above.
-        const double quotient = (x * Kx) / (x * Nx);
+        const double quotient = (x * Kx) / (x * Mx);
         if (std::abs(quotient - lambda) <= 1e-12 * quotient)
           return quotient;
         lambda = quotient;
@@ -1740,9 +1741,10 @@ namespace Step4
   }
 
   // One table on the terminal: per row the mesh, the Newton iterations,
-  // $E_J$ and its rate against the number of unknowns $N$, $p =
-  // \log(E_{J,k-1}/E_{J,k}) / \log(N_k/N_{k-1})$ (so that $E_J \sim
-  // N^{-p}$; $p = 1/2$ is the rate of $Q_1$ for a smooth solution in 2D),
+  // $E_J$ and its rate against the number of unknowns $n_\text{dofs}$,
+  // $p = \log(E_{J,j-1}/E_{J,j}) / \log(n_{\text{dofs},j}/n_{\text{dofs},j-1})$
+  // between rows $j - 1$ and $j$ (so that $E_J \sim n_\text{dofs}^{-p}$;
+  // $p = 1/2$ is the rate of $Q_1$ for a smooth solution in 2D),
   // the estimate $\eta$ with its rate, and the effectivity index
   // $\eta/E_J$; then the rate over the whole table. A row whose $E_J$ is
   // undefined (energy_error()) shows "undefined", and "-" for the numbers

@@ -30,11 +30,11 @@ for name, color in (("uniform", "C0"), ("adaptive", "C1")):
               label=f"η, {name}")
     if name == "adaptive":
         ax.loglog(N, 0.5 * E[0] * np.sqrt(N[0] / N), "k:",
-                  label="N^(-1/2)")
+                  label="n_dofs^(-1/2)")
     else:
         ax.loglog(N, 0.5 * E[0] * (N[0] / N) ** 0.272, "k-.",
-                  label="N^(-0.272)")
-ax.set_xlabel("unknowns N")
+                  label="n_dofs^(-0.272)")
+ax.set_xlabel("unknowns n_dofs")
 ax.set_ylabel("error and estimate (energy norm)")
 ax.set_title("step-4: the L-shaped body")
 ax.legend(fontsize=8)
