@@ -6,8 +6,8 @@
  * normal compliance and Tresca friction, solved by the primal-dual active
  * set method) for a material and a foundation that remember: the stress
  * of the history-dependent elastic model
- *   sigma(t) = B eps(u(t)) + int_0^t R(t - s) eps(u(s)) ds
- * with a Prony-series relaxation kernel R, and a normal response that
+ *   sigma(t) = B eps(u(t)) + int_0^t ℛ(t - s) eps(u(s)) ds
+ * with a Prony-series relaxation kernel ℛ, and a normal response that
  * grows with the time the foundation was penetrated,
  *   -sigma_nu in d j_nu(u_nu) + int_0^t kappa(t - s) (u_nu(s))_+ ds.
  * Each load value is still one static problem, the memory a known term
@@ -208,11 +208,11 @@ namespace Step3
   // @sect3{The memory kernels}
 
   // Two kernels, both Prony series (sums of decaying exponentials). The
-  // kernel of the stress, the relaxation tensor $R$ of the literature
+  // kernel of the stress, the relaxation tensor $\mathcal R$ of the literature
   // (positive amplitudes stiffen the body, negative ones soften it), is
   // isotropic,
   // @f[
-  //   R(t)\varepsilon = \sum_m e^{-t/\tau_m}\bigl(2\mu_m\varepsilon +
+  //   \mathcal R(t)\varepsilon = \sum_m e^{-t/\tau_m}\bigl(2\mu_m\varepsilon +
   //   \lambda_m\,\mathrm{tr}(\varepsilon) I\bigr),
   // @f]
   // one RelaxationTerm $(\mu_m, \lambda_m, \tau_m)$ per exponential; the
@@ -221,15 +221,15 @@ namespace Step3
   //   \kappa(t) = \sum_m \kappa_m e^{-t/\tau_m},
   // @f]
   // one NormalMemoryTerm $(\kappa_m, \tau_m)$ per exponential. The program
-  // never evaluates $R(t)$ or $\kappa(t)$ themselves: the recursion of the
-  // memory (advance_memory()) needs only the amplitudes and the decay
+  // never evaluates $\mathcal R(t)$ or $\kappa(t)$ themselves: the recursion of
+  // the memory (advance_memory()) needs only the amplitudes and the decay
   // factor $e^{-k/\tau_m}$ of one step, and the manufactured solution the
   // convolution of one exponential with its time factor. That is the
   // whole interface of a kernel, and all a new one (more terms, other
   // times) has to supply. An empty list is no memory.
   struct RelaxationTerm
   {
-    // The Lam\'e constants of one term of $R$ and its decay time.
+    // The Lam\'e constants of one term of $\mathcal R$ and its decay time.
     double mu, lambda, tau;
   };
 
@@ -1032,10 +1032,10 @@ namespace Step3
   // $(M_n, \varepsilon(v))$ with the discrete memory stress
   // (the introduction, "The rule")
   // @f[
-  //   M_n = k\sum_{j=0}^{n-1} R(t_n - t_j)\,\varepsilon(u_j).
+  //   M_n = k\sum_{j=0}^{n-1} \mathcal R(t_n - t_j)\,\varepsilon(u_j).
   // @f]
-  // $R$ does not depend on $x$, so the sum can be taken of the
-  // displacements instead of the strains: with $R(t)\varepsilon =
+  // $\mathcal R$ does not depend on $x$, so the sum can be taken of the
+  // displacements instead of the strains: with $\mathcal R(t)\varepsilon =
   // 2\mu_R(t)\varepsilon + \lambda_R(t)\,\mathrm{tr}(\varepsilon) I$,
   // @f[
   //   (M_n, \varepsilon(v)) = a_\mu(S_\mu, v) + a_\lambda(S_\lambda, v),\qquad
@@ -1192,17 +1192,14 @@ namespace Step3
   // This part is step-1's, line for line but for one addition in
   // assemble_newton_system() (the memory's part of $\ell_n$ in the Newton
   // right-hand side): the memory is inside the vector load $= \ell_n$, and
-  // so inside the residual $K u - \ell_n$ and the energy (step-1 calls the
-  // residual $R$; here $R$ is the memory kernel, and we write the residual
-  // out). What the solver calls the nodal contact force,
-  // $G_i = -(K u - \ell_n)_i$, is therefore the force of the
+  // so inside the residual $R = K u - \ell_n$ and the energy. What the solver
+  // calls the nodal contact force, $G_i = -R_i$, is therefore the force of the
   // *laws*: the part of the contact traction that the foundation's memory does
   // not already supply.
 
   // @sect4{The state of a node}
 
-  // From $G_i = -(K u - \ell_n)_i$ the multipliers of the convex parts of the
-  // laws,
+  // From $G_i = -R_i$ the multipliers of the convex parts of the laws,
   // @f[
   //   s_\nu = G_i\cdot\nu/m_i - p(u_\nu),\qquad
   //   s_\tau = G_{i,\tau}/m_i,

@@ -377,13 +377,14 @@ namespace Step4
   // residual estimator"), kept apart so that each can be reported alone:
   // the cell residual, the jumps of the traction across interior faces,
   // the traction residual on $\Gamma_2$ and on $\Gamma_3$. The factor
-  // $s = 1/(2\mu)$ puts $\eta$ in the energy norm $|||v||| = a_B(v,
+  // $1/(2\mu)$ puts $\eta$ in the energy norm $|||v||| = a_B(v,
   // v)^{1/2}$ (since $2\mu\|\varepsilon(v)\|^2 \le a_B(v, v)$), so that it
   // can be compared with the error, whatever the units of the moduli.
   struct ErrorEstimate
   {
-    // One vector per part, one entry per active cell, and the factor $s$;
-    // the parts are kept squared, so that adding them cell by cell gives
+    // One vector per part, one entry per active cell, and the factor
+    // $1/(2\mu)$; the parts are kept squared, so that adding them cell by cell
+    // gives
     // $\eta_K^2$ and adding a part over the cells its share of $\eta^2$.
     Vector<double> interior, jumps, neumann, contact;
     double         scale = 1;
@@ -1205,16 +1206,16 @@ namespace Step4
   // $\Gamma_3$ of the nodal contact tractions $\xi_i = -R_i/m_i$, for every
   // cell $K$
   // @f{align*}{
-  //   \eta_K^2 = s\Bigl(& h_K^2\|f_0 + \mathrm{div}\,\sigma_h\|_K^2
+  //   \eta_K^2 = \frac1{2\mu}\Bigl(& h_K^2\|f_0 + \mathrm{div}\,\sigma_h\|_K^2
   //     + \tfrac12\sum_{E\subset\partial K\cap\Omega}
-  //       h_E\|[\sigma_h n]\|_E^2
-  //     \\ &+ \sum_{E\subset\partial K\cap\Gamma_2} h_E\|f_2 - \sigma_h n\|_E^2
+  //       h_E\|[\sigma_h\nu_E]\|_E^2
+  //     \\ &+ \sum_{E\subset\partial K\cap\Gamma_2} h_E\|f_2 -
+  //     \sigma_h\nu\|_E^2
   //     + \sum_{E\subset\partial K\cap\Gamma_3}
-  //       h_E\|f_3 - \sigma_h n - \xi_h\|_E^2\Bigr),\qquad
-  //   s = \frac1{2\mu},
+  //       h_E\|f_3 - \sigma_h\nu - \xi_h\|_E^2\Bigr),
   // @f}
   // $h_K$ and $h_E$ the diameters, nothing on $\Gamma_1$. The last term is
-  // the contact term: $-\sigma n = \xi$ is the law on $\Gamma_3$, and
+  // the contact term: $-\sigma\nu = \xi$ is the law on $\Gamma_3$, and
   // $\xi_h$ is what the discrete solution says the foundation supplies.
   //
   // The integrals use Gauss rules of 2 points per direction, enough for
@@ -1223,7 +1224,7 @@ namespace Step4
   // is finer (each child face with FESubfaceValues on the coarse cell and
   // FEFaceValues on the child, and $h_E$ the child face's diameter),
   // between cells of one level from the cell of lower index, and half of
-  // $h_E\|[\sigma_h n]\|^2_E$ goes to each side. This is the order in which
+  // $h_E\|[\sigma_h\nu_E]\|^2_E$ goes to each side. This is the order in which
   // the full program's ErrorEstimator visits a serial mesh, so that the
   // two give the same numbers to round-off.
   template <int dim>
@@ -1277,11 +1278,11 @@ namespace Step4
     ErrorEstimate e;
     for (Vector<double> *part : {&e.interior, &e.jumps, &e.neumann, &e.contact})
       part->reinit(triangulation.n_active_cells());
-    // The factor $s = 1/(2\mu)$ of the introduction, which puts $\eta$ in the
+    // The factor $1/(2\mu)$ of the introduction, which puts $\eta$ in the
     // energy norm; it multiplies the parts only when they are summed.
     e.scale = 1. / (2 * data.mu);
 
-    // $\int_E |[\sigma_h n]|^2$ from the gradients on the two sides, with
+    // $\int_E |[\sigma_h\nu_E]|^2$ from the gradients on the two sides, with
     // the normal of the cell at hand.
     const auto jump = [&](const FEFaceValuesBase<dim> &here,
                           const FEFaceValuesBase<dim> &there) {
@@ -1321,7 +1322,7 @@ namespace Step4
             const auto face = cell->face(f);
             if (face->at_boundary())
               {
-                // The traction residual $h_E\|f - \sigma_h n - \xi_h\|^2_E$
+                // The traction residual $h_E\|f - \sigma_h\nu - \xi_h\|^2_E$
                 // on $\Gamma_2$ and $\Gamma_3$, $\xi_h$ on $\Gamma_3$ only.
                 if (face->boundary_id() == BoundaryIds::clamped)
                   continue;
