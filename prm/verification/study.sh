@@ -11,10 +11,12 @@
 # (*_static.prm) set their class themselves and write to
 # results/CASE-TYPE/. ESTIMATE=true sets 'output/error estimate' (the
 # estimate and effectivity index per level, doc/theory.md section 11) and
-# appends -estimate to the directory. REFERENCE=K (a 'k' study) takes the
-# errors against the run with time step K on the same mesh instead of the
-# manufactured solution ('convergence study/reference time step',
-# doc/verification.md) and appends -reference to the directory.
+# appends -estimate to the directory; ESTIMATE=equilibrated the
+# equilibrated bound (section 12.5) and -equilibrated. REFERENCE=K (a 'k'
+# study) takes the errors against the run with time step K on the same
+# mesh instead of the manufactured solution ('convergence study/reference
+# time step', doc/verification.md) and appends -reference to the
+# directory.
 # COUPLING=iterated sets 'temperature/coupling' (doc/theory.md 13.2) and
 # appends -iterated to the directory.
 # HEMICONTACT=PATH runs that program instead of build/hemicontact.
@@ -29,7 +31,10 @@ if [ -n "$class$scheme" ]; then
   out="$out-${class:-dynamic}-${scheme:-left point}"
   out="${out// /-}"
 fi
-[ "$estimate" != true ] || out="$out-estimate"
+case "$estimate" in
+  true) out="$out-estimate" ;;
+  equilibrated) out="$out-equilibrated" ;;
+esac
 [ -z "$reference" ] || out="$out-reference"
 [ -z "$coupling" ] || out="$out-$coupling"
 mkdir -p "$out"
@@ -41,7 +46,7 @@ mkdir -p "$out"
   printf 'subsection output\n  set directory = %s\nend\n' "$out"
   [ -z "$class" ] || printf 'subsection problem\n  set class = %s\nend\n' "$class"
   [ -z "$scheme" ] || printf 'subsection problem\n  set time scheme = %s\nend\n' "$scheme"
-  [ "$estimate" != true ] || printf 'subsection output\n  set error estimate = true\nend\n'
+  [ "$estimate" = false ] || printf 'subsection output\n  set error estimate = %s\nend\n' "$estimate"
   [ -z "$reference" ] || printf 'subsection convergence study\n  set reference time step = %s\nend\n' "$reference"
   [ -z "$coupling" ] || printf 'subsection temperature\n  set coupling = %s\nend\n' "$coupling"
 } > "$out/study.prm"

@@ -512,14 +512,17 @@ namespace hemicontact
     prm.declare_entry(
       "error estimate",
       "false",
-      Patterns::Bool(),
+      Patterns::Selection("false|true|equilibrated"),
       "After every step, evaluate the residual a posteriori error estimate "
       "eta_n in the energy norm of the step (doc/theory.md, section 12): "
       "its terms in steps.csv, eta_K per cell ('error_estimate') in the "
       "solution files, the run's estimate in the summary line, and the "
       "estimate and effectivity index of each level of a convergence "
       "study; in the velocity classes also the time indicator "
-      "(the energy norm of w_n - w_{n-1}, section 12.4).");
+      "(the energy norm of w_n - w_{n-1}, section 12.4). 'equilibrated': "
+      "in its place the bound of an equilibrated stress (section 12.5: "
+      "guaranteed under its assumptions; static class, 2D quadrilaterals "
+      "without hanging nodes, one MPI rank).");
     prm.leave_subsection();
   }
 
@@ -536,7 +539,8 @@ namespace hemicontact
     compression         = get_selection(prm, "compression", compression_levels);
     timing_summary      = prm.get_bool("timing summary");
     performance_summary = prm.get_bool("performance summary");
-    error_estimate      = prm.get_bool("error estimate");
+    error_estimate      = prm.get("error estimate") != "false";
+    error_estimate_equilibrated = prm.get("error estimate") == "equilibrated";
     prm.leave_subsection();
     require(!directory.empty(), "output: 'directory' must not be empty.");
   }

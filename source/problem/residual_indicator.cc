@@ -1,3 +1,4 @@
+#include <hemicontact/problem/equilibrated_estimate.h>
 #include <hemicontact/problem/error_indicators.h>
 
 namespace hemicontact
@@ -19,6 +20,15 @@ namespace hemicontact
     };
     TrilinosWrappers::MPI::Vector xi_owned(contact_traction);
     base_constraints.distribute(xi_owned);
+    if (parameters.output.error_estimate_equilibrated)
+      {
+        cached_estimate   = equilibrated_estimate(state(),
+                                                data,
+                                                ghosted(displacement),
+                                                ghosted(xi_owned));
+        estimate_revision = state_revision;
+        return cached_estimate;
+      }
     const ErrorEstimator<dim> estimator(
       discretization, dof_handler, material, scheme, data, parameters.boundary);
     cached_estimate   = estimator.estimate(ghosted(velocity),

@@ -10,6 +10,7 @@
 #include <hemicontact/laws/contact_laws.h>
 #include <hemicontact/model/step_scheme.h>
 #include <hemicontact/problem/contact_problem.h>
+#include <hemicontact/problem/equilibrated_estimate.h>
 #include <hemicontact/simulation/command_line.h>
 #include <hemicontact/simulation/simulation.h>
 #include <hemicontact/verification/convergence_study.h>
@@ -91,6 +92,7 @@ namespace hemicontact
                           file,
                           "subsection checkpoint\n  set resume = true\nend\n") :
           read_parameters(prm, file);
+      require_equilibrated_usable(parameters);
       if (const std::string note =
             StepScheme(parameters.problem).ignored_parameters(parameters);
           !note.empty() &&

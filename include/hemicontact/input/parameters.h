@@ -424,8 +424,16 @@ namespace hemicontact
     bool           timing_summary;
     /** Write performance.csv (and time one step-matrix solve) at the end. */
     bool performance_summary;
-    /** Evaluate the residual error estimate after every step. */
+    /**
+     * Evaluate an error estimate after every step ('error estimate' =
+     * true or equilibrated).
+     */
     bool error_estimate;
+    /**
+     * The estimate is the equilibrated bound of doc/theory.md 12.5
+     * ('equilibrated'), not the residual estimate of 12.1 ('true').
+     */
+    bool error_estimate_equilibrated = false;
 
     static void
     declare(ParameterHandler &prm);

@@ -166,9 +166,10 @@ namespace hemicontact
     }
 
     /**
-     * The residual error estimate of the current state (doc/theory.md
-     * section 12, ErrorEstimator), computed once per state: every
-     * indicator and output derived from it reads the same one.
+     * The error estimate of the current state (doc/theory.md section 12:
+     * the residual estimate of ErrorEstimator, or with 'output/error
+     * estimate = equilibrated' equilibrated_estimate()), computed once per
+     * state: every indicator and output derived from it reads the same one.
      */
     const ErrorEstimate &
     error_estimate() const;

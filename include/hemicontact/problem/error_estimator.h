@@ -48,10 +48,22 @@ namespace hemicontact
      */
     double energy_scale = 1;
 
-    /** eta = (energy_scale sum of all terms)^{1/2}, the step's estimate. */
+    /**
+     * The equilibrated estimate's bound of the step's error, its terms
+     * added as norms (doc/theory.md 12.5); negative for the residual
+     * estimate.
+     */
+    double bound = -1;
+
+    /**
+     * The step's estimate: the bound of the equilibrated estimate, else
+     * eta = (energy_scale sum of all terms)^{1/2}.
+     */
     double
     total() const
     {
+      if (bound >= 0)
+        return bound;
       return std::sqrt(energy_scale *
                        (interior_sum + jumps_sum + neumann_sum + contact_sum));
     }
