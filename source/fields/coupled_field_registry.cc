@@ -5,6 +5,7 @@
  * EnergyBalance::coupled, the checkpoint and steps.csv: a kind is added at
  * the end.
  */
+#include <hemicontact/electric/electric_field.h>
 #include <hemicontact/fields/coupled_field_registry.h>
 #include <hemicontact/thermal/heat_field.h>
 
@@ -42,11 +43,26 @@ namespace hemicontact
     }
 
     template <int dim>
+    std::unique_ptr<CoupledField<dim>>
+    piezoelectricity(const CoupledFieldContext<dim> &c)
+    {
+      if (!c.parameters.piezoelectricity.enabled)
+        return nullptr;
+      return std::make_unique<ElectricField<dim>>(
+        c.parameters.piezoelectricity,
+        c.parameters.data.constants,
+        c.static_class,
+        c.parameters.problem.time_scheme == TimeScheme::left_point,
+        c.comm);
+    }
+
+    template <int dim>
     const std::vector<Kind<dim>> &
     kinds()
     {
       static const std::vector<Kind<dim>> list{
-        {&HeatField<dim>::terms, &temperature<dim>}};
+        {&HeatField<dim>::terms, &temperature<dim>},
+        {&ElectricField<dim>::terms, &piezoelectricity<dim>}};
       return list;
     }
   } // namespace

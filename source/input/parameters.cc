@@ -607,6 +607,7 @@ namespace hemicontact
     NormalMemoryParameters::declare(prm);
     WearParameters::declare(prm);
     TemperatureParameters::declare(prm);
+    PiezoelectricParameters::declare(prm);
     NonlinearSolverParameters::declare(prm);
     LinearSolverParameters::declare(prm);
     OutputParameters::declare(prm);
@@ -630,6 +631,7 @@ namespace hemicontact
     normal_memory.parse(prm);
     wear.parse(prm, dimension);
     temperature.parse(prm, dimension);
+    piezoelectricity.parse(prm, dimension);
     nonlinear_solver.parse(prm);
     linear_solver.parse(prm);
     output.parse(prm);

@@ -2,6 +2,8 @@
  * The checks of a parameter file that span subsections
  * (require_consistent(), include/hemicontact/input/parameters.h).
  */
+#include <deal.II/base/utilities.h>
+
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/expressions/expression.h>
 #include <hemicontact/input/parameters.h>
@@ -124,6 +126,44 @@ namespace hemicontact
                   " is in 'heat flux boundary ids' and in 'contact "
                   "boundary ids'; on Gamma_3 the contact heat law holds "
                   "('exchange coefficient', 'frictional heat fraction').");
+    }
+
+    /**
+     * What 'piezoelectricity' works with (doc/theory.md, section 14): phi
+     * unique (an electrode, or a conductance on Gamma_3), and the
+     * combinations the electric step does not do yet refused.
+     */
+    void
+    require_piezoelectricity_usable(const Parameters &parameters)
+    {
+      const PiezoelectricParameters &piezo = parameters.piezoelectricity;
+      if (!piezo.enabled)
+        return;
+      const std::string conductance = Utilities::trim(piezo.conductance);
+      require(!piezo.electrode_ids.empty() ||
+                (conductance != "0" && conductance != "0.0" &&
+                 conductance != "0."),
+              "piezoelectricity: no 'electrode boundary ids' and 'conductance "
+              "= 0': the potential phi is then fixed only up to a constant "
+              "(the electric step is singular). Give an electrode (phi = "
+              "'electrode potential' on its ids) or a conductance > 0 of the "
+              "foundation on Gamma_3.");
+      for (const unsigned int id : piezo.surface_charge_ids)
+        require(parameters.boundary.part(id) != BoundaryPart::contact,
+                "piezoelectricity: boundary id " + std::to_string(id) +
+                  " is in 'surface charge boundary ids' and in 'contact "
+                  "boundary ids'; on Gamma_3 the electric contact law holds "
+                  "('conductance', 'foundation potential').");
+      require(!parameters.manufactured.enabled,
+              "piezoelectricity: 'piezoelectricity/enabled = true' does not "
+              "work with 'manufactured solution/enabled = true' (no "
+              "manufactured potential is derived). Set one of them to "
+              "false.");
+      require(!parameters.output.error_estimate,
+              "piezoelectricity: 'piezoelectricity/enabled = true' does not "
+              "work with 'output/error estimate = true': the estimate "
+              "(doc/theory.md, section 12) has no electric term. Set "
+              "'output/error estimate = false'.");
     }
   } // namespace
 
@@ -319,5 +359,6 @@ namespace hemicontact
           .require_finite(parameters.time.end_time / n_steps, n_steps);
       }
     require_temperature_usable(parameters);
+    require_piezoelectricity_usable(parameters);
   }
 } // namespace hemicontact

@@ -12,15 +12,6 @@
 namespace hemicontact
 {
   template <int dim>
-  double
-  staggered_coupling_ratio(const ProblemState<dim> &state)
-  {
-    // each field decides: the static class has no heat step, an iterated
-    // coupling solves the monolithic step (doc/theory.md 13.2)
-    return state.coupled_fields.staggered_coupling().ratio;
-  }
-
-  template <int dim>
   void
   check_coupling_stability(const ProblemState<dim> &state, TimerOutput &timer)
   {
@@ -73,10 +64,9 @@ namespace hemicontact
       std::cerr << "hemicontact: warning: " << message.str() << std::endl;
   }
 
-#define HEMICONTACT_INSTANTIATE(dim)                                   \
-  template double staggered_coupling_ratio(const ProblemState<dim> &); \
-  template void   check_coupling_stability(const ProblemState<dim> &,  \
-                                           TimerOutput &);
+#define HEMICONTACT_INSTANTIATE(dim)                                \
+  template void check_coupling_stability(const ProblemState<dim> &, \
+                                         TimerOutput &);
 
   HEMICONTACT_INSTANTIATE(2)
   HEMICONTACT_INSTANTIATE(3)

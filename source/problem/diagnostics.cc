@@ -126,7 +126,9 @@ namespace hemicontact
     StoredEnergy stored;
     stored.kinetic = kinetic;
     stored.elastic = 0.5 * (u_next * tmp);
-    state.coupled_fields.stored_energies(state.added_fields, stored.coupled);
+    state.coupled_fields.stored_energies(mechanical_view(state),
+                                         state.added_fields,
+                                         stored.coupled);
     return stored;
   }
 

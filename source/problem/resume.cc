@@ -56,7 +56,10 @@ namespace hemicontact
     memory_rule_unstable =
       check_time_step_limits(state(), preconditioner, timer);
     check_convexity();
-    coupled_fields.start(added_fields);
+    coupled_fields.start(mechanical_view(state()),
+                         linear_solver,
+                         added_fields,
+                         true);
 
     // the preconditioner as the interrupted run left it (after the checks
     // above, which build AMGs of their own, as at the run's start)

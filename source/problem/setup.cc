@@ -303,6 +303,12 @@ namespace hemicontact
     contact_traction = 0;
     update_friction_bounds(0.);
     memory.clear();
+    // the coupled fields at t = 0, before the initial solves read their
+    // loads (the electric potential phi_0 from u_0)
+    coupled_fields.start(mechanical_view(state()),
+                         linear_solver,
+                         added_fields,
+                         false);
     // the step problem at t = 0 with the right-hand side b that @p set_rhs
     // sets from the load F_0, solved from w = 0 by the step solver
     const auto solve_initial_problem = [&](const auto        &set_rhs,
@@ -358,7 +364,6 @@ namespace hemicontact
       }
     energy = EnergyBalance();
     update_energy_balance(/*initial=*/true);
-    coupled_fields.start(added_fields);
   }
 
 #define HEMICONTACT_INSTANTIATE(dim)                               \

@@ -121,10 +121,12 @@ namespace hemicontact
       const KelvinVoigtMaterial<dim> &material   = state.material;
       const double                    time_step  = state.time_step;
       const Parameters               &parameters = state.parameters;
-      // the staggered thermal coupling adds c (tr eps)^2 to the explicit
-      // elastic term (doc/theory.md 13.2): lambda + c on every mesh, and
-      // at most the factor 1 + c/kappa_B on B's modes
-      const double coupling = staggered_coupling_ratio(state);
+      // a staggered coupling (the temperature's) adds c (tr eps)^2 to the
+      // explicit elastic term (doc/theory.md 13.2): lambda + c on every
+      // mesh, and at most the factor 1 + c/kappa_B on B's modes
+      const StaggeredCoupling staggered =
+        state.coupled_fields.staggered_coupling();
+      const double coupling = staggered.ratio;
       const double kappa =
         2 * material.mu_elastic() / dim + material.lambda_elastic();
       const double elastic_scale =
@@ -155,8 +157,8 @@ namespace hemicontact
               << limit << " (estimated: " << scheme.stability_condition()
               << "): the elastic term is explicit, ";
       if (coupling > 0)
-        message << "and with it the staggered thermal coupling's term, c = "
-                   "max c_e^2/c_theta = "
+        message << "and with it the staggered " << staggered.coupling_name
+                << "'s term, c = " << staggered.ratio_formula << " = "
                 << coupling << " added to B's lambda (doc/theory.md 13.2), ";
       message << "and the energy of the run would grow without bound. Choose "
                  "a time step that divides the end time and is at most "

@@ -89,7 +89,10 @@ namespace hemicontact
 
   template <int dim>
   void
-  HeatField<dim>::start(const TrilinosWrappers::MPI::Vector &value)
+  HeatField<dim>::start(const MechanicalView<dim> &,
+                        LinearSolver &,
+                        TrilinosWrappers::MPI::Vector &value,
+                        const bool)
   {
     heat.start(value);
   }
@@ -132,11 +135,13 @@ namespace hemicontact
   }
 
   template <int dim>
-  double
-  HeatField<dim>::stored_energy(
+  std::vector<double>
+  HeatField<dim>::stored_energies(
+    const MechanicalView<dim> &,
     const TrilinosWrappers::MPI::Vector &value) const
   {
-    return heat.stored_heat(value);
+    // the first of terms(), 1/2 c_theta |theta_n|^2
+    return {heat.stored_heat(value)};
   }
 
   template <int dim>

@@ -124,11 +124,21 @@ namespace hemicontact
     virtual void
     reinit(const FieldSpace<dim> &space, const MechanicalView<dim> &view) = 0;
 
-    /** The start of a run or a resume with the field's @p value. */
+    /**
+     * The start of a run (before the initial solves, @p resumed false:
+     * the field may solve its @p value at t = 0 from u_0) or a resume
+     * (@p resumed true: @p value is the checkpoint's).
+     */
     virtual void
-    start(const TrilinosWrappers::MPI::Vector &value)
+    start(const MechanicalView<dim>     &view,
+          LinearSolver                  &solver,
+          TrilinosWrappers::MPI::Vector &value,
+          const bool                     resumed)
     {
+      (void)view;
+      (void)solver;
       (void)value;
+      (void)resumed;
     }
 
     /** Add the field's load on the mechanical step at time @p t to
@@ -149,17 +159,43 @@ namespace hemicontact
          LinearSolver                  &solver,
          TrilinosWrappers::MPI::Vector &value) = 0;
 
+    /**
+     * After the coupled step has converged: add to @p terms (sized to
+     * energy_terms()) what needs the step's final state, from the value
+     * @p before at t_{n-1} to @p value at t_n = @p t, with step length
+     * @p k.
+     */
+    virtual void
+    complete_step(const double                         t,
+                  const double                         k,
+                  const MechanicalView<dim>           &view,
+                  const TrilinosWrappers::MPI::Vector &before,
+                  const TrilinosWrappers::MPI::Vector &value,
+                  FieldStepEnergy                     &terms)
+    {
+      (void)t;
+      (void)k;
+      (void)view;
+      (void)before;
+      (void)value;
+      (void)terms;
+    }
+
     /** Its energy terms (a static list: coupled_energy_terms() is made of
      *  them). */
     virtual const std::vector<EnergyTermSpec> &
     energy_terms() const = 0;
 
-    /** The energy the field stores in @p value (its stored term). */
-    virtual double
-    stored_energy(const TrilinosWrappers::MPI::Vector &value) const
+    /** The energies the field stores with @p value and the state of
+     *  @p view, one per entry of energy_terms() (only the stored ones are
+     *  read; empty: none). */
+    virtual std::vector<double>
+    stored_energies(const MechanicalView<dim>           &view,
+                    const TrilinosWrappers::MPI::Vector &value) const
     {
+      (void)view;
       (void)value;
-      return 0;
+      return {};
     }
 
     /** Cell data for the solution files. */

@@ -75,12 +75,15 @@ namespace hemicontact
         e.field->reinit(fields.space(e.name), view);
     }
 
-    /** The start of a run or a resume. */
+    /** The start of a run (@p resumed false) or a resume. */
     void
-    start(const AddedFields<dim> &fields)
+    start(const MechanicalView<dim> &view,
+          LinearSolver              &solver,
+          AddedFields<dim>          &fields,
+          const bool                 resumed)
     {
       for (const Entry &e : entries)
-        e.field->start(fields.vector(e.name));
+        e.field->start(view, solver, fields.vector(e.name), resumed);
     }
 
     /** Every field's load on the mechanical step at @p t. */
@@ -97,17 +100,19 @@ namespace hemicontact
     /** The stored energies into @p coupled (EnergyBalance::coupled's
      *  layout), in the velocity classes' steps. */
     void
-    stored_energies(const AddedFields<dim> &fields,
-                    std::vector<double>    &coupled) const
+    stored_energies(const MechanicalView<dim> &view,
+                    const AddedFields<dim>    &fields,
+                    std::vector<double>       &coupled) const
     {
       for (const Entry &e : entries)
         if (e.field->has_step())
           {
             const std::vector<EnergyTermSpec> &terms = e.field->energy_terms();
-            for (std::size_t j = 0; j < terms.size(); ++j)
+            const std::vector<double>          stored =
+              e.field->stored_energies(view, fields.vector(e.name));
+            for (std::size_t j = 0; j < stored.size(); ++j)
               if (terms[j].role == EnergyRole::stored)
-                coupled[e.energy_offset + j] =
-                  e.field->stored_energy(fields.vector(e.name));
+                coupled[e.energy_offset + j] = stored[j];
           }
     }
 

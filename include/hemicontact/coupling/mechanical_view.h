@@ -37,6 +37,9 @@ namespace hemicontact
     const TrilinosWrappers::MPI::Vector &contact_traction;
     const std::vector<ContactNode<dim>> &contact_nodes;
     double                               time; ///< t_n
+    /** The displacement held after the step is u + held_offset w
+     *  (StepScheme::held_displacement_offset()). */
+    double held_offset;
     /** Whether the run is of the static class (no velocity, no steps of
      *  the fields' own). */
     bool static_class;

@@ -124,8 +124,23 @@ namespace hemicontact
           first      = first == nullptr ? e.field.get() : first;
           symbols += ", " + e.field->symbol();
         }
-    if (first == nullptr)
+    // what a field books from the step's final state
+    const auto complete = [&]() {
+      for (std::size_t f = 0; f < entries.size(); ++f)
+        if (entries[f].field->has_step())
+          {
+            terms[f].terms.resize(entries[f].field->energy_terms().size(), 0.);
+            entries[f].field->complete_step(t,
+                                            k,
+                                            view(),
+                                            before[f],
+                                            fields.vector(entries[f].name),
+                                            terms[f]);
+          }
       return terms;
+    };
+    if (first == nullptr)
+      return complete();
 
     // |a - b| / |a|, 0 where both vanish
     const auto change = [](const TrilinosWrappers::MPI::Vector &a,
@@ -144,9 +159,10 @@ namespace hemicontact
               entries[f].field->coupling().iterated)
             last[f] = fields.vector(entries[f].name);
         guarded([&]() {
+          // the fields before the mechanical step read its last iterate
+          steps_of(Field::Order::before_mechanical_step, true);
           mechanical_solved = false;
           undo_mechanical_step();
-          steps_of(Field::Order::before_mechanical_step, true);
           mechanical_step();
           mechanical_solved = true;
           steps_of(Field::Order::after_mechanical_step, true);
@@ -159,7 +175,7 @@ namespace hemicontact
               std::max(last_change,
                        change(fields.vector(entries[f].name), last[f]));
         if (last_change <= tolerance)
-          return terms;
+          return complete();
       }
     restore();
     undo_mechanical_step();

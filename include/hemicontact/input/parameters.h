@@ -319,6 +319,40 @@ namespace hemicontact
     parse(ParameterHandler &prm, const unsigned int dimension);
   };
 
+  /**
+   * The subsection 'piezoelectricity' (doc/theory.md, section 14): the
+   * electric potential phi of the body, sigma = A eps(w) + B eps(u) +
+   * E^T grad phi and D = E eps(u) - beta grad phi with div D = q_0, phi =
+   * phi_D on the electrodes, D.nu = q_b on the surface charge ids and the
+   * electric contact law D.nu = p_e(u_nu) (phi - phi_F) on Gamma_3.
+   */
+  struct PiezoelectricParameters
+  {
+    bool enabled = false;
+    /** e_31, e_33, e_15, or the dim^3 entries E_kij (k, i, j in order) */
+    std::vector<double> piezoelectric_constants;
+    /** beta: one number, or the dim^2 entries of an SPD tensor */
+    std::vector<double>       permittivity;
+    std::string               volume_charge;       ///< q_0(x, t)
+    std::vector<unsigned int> electrode_ids;       ///< phi = phi_D there
+    std::string               electrode_potential; ///< phi_D(x, t)
+    std::vector<unsigned int> surface_charge_ids;  ///< D.nu = q_b there
+    std::string               surface_charge;      ///< q_b(x, t)
+    /** p_e(x, t, u_nu) >= 0, the conductance of the foundation */
+    std::string conductance;
+    std::string foundation_potential; ///< phi_F(x, t)
+    /** The relative change of (u_n, phi_n) that ends the alternation of
+     *  the implicit rule and the static class. */
+    double coupling_tolerance = 1e-11;
+    /** The most passes of that alternation. */
+    unsigned int coupling_iterations = 100;
+
+    static void
+    declare(ParameterHandler &prm);
+    void
+    parse(ParameterHandler &prm, const unsigned int dimension);
+  };
+
   /** Where Newton starts in a step. */
   enum class InitialGuess
   {
@@ -570,6 +604,7 @@ namespace hemicontact
     NormalMemoryParameters    normal_memory;
     WearParameters            wear;
     TemperatureParameters     temperature;
+    PiezoelectricParameters   piezoelectricity;
     NonlinearSolverParameters nonlinear_solver;
     LinearSolverParameters    linear_solver;
     /** Set from C++ only (tests, benchmarks): see SolverTuning. */

@@ -117,6 +117,7 @@ namespace hemicontact
             state.contact_traction,
             state.contact_nodes,
             state.time,
+            state.scheme.held_displacement_offset(state.time_step),
             state.scheme.is_static(),
             state.added_fields};
   }

@@ -35,16 +35,8 @@ namespace hemicontact
                          TimerOutput             &timer);
 
   /**
-   * The largest c_e^2/c_theta of a staggered thermal coupling (doc/theory.md
-   * 13.2), 0 without one (no temperature, the static class, or
-   * 'temperature/coupling = iterated').
-   */
-  template <int dim>
-  double
-  staggered_coupling_ratio(const ProblemState<dim> &state);
-
-  /**
-   * The staggered thermal coupling's limit with the implicit rule
+   * The limit of a staggered coupling (the temperature's,
+   * CoupledFields::staggered_coupling()) with the implicit rule
    * (coupling_stability_check.cc); with the left-point rule it is part of
    * that rule's check.
    */

@@ -49,7 +49,10 @@ namespace hemicontact
     reinit(const FieldSpace<dim>     &space,
            const MechanicalView<dim> &view) override;
     void
-    start(const TrilinosWrappers::MPI::Vector &value) override;
+    start(const MechanicalView<dim>     &view,
+          LinearSolver                  &solver,
+          TrilinosWrappers::MPI::Vector &value,
+          const bool                     resumed) override;
     void
     add_mechanical_load(const double                   t,
                         const MechanicalView<dim>     &view,
@@ -63,8 +66,9 @@ namespace hemicontact
          TrilinosWrappers::MPI::Vector &value) override;
     const std::vector<EnergyTermSpec> &
     energy_terms() const override;
-    double
-    stored_energy(const TrilinosWrappers::MPI::Vector &value) const override;
+    std::vector<double>
+    stored_energies(const MechanicalView<dim>           &view,
+                    const TrilinosWrappers::MPI::Vector &value) const override;
     std::vector<std::pair<std::string, Vector<float>>>
     cell_output(const TrilinosWrappers::MPI::Vector &value) const override;
     std::vector<std::string>
