@@ -253,41 +253,81 @@ namespace hemicontact
         s[d][d] += lambda * trace(eps);
       return s;
     };
-    // the data traction g of a face off Gamma_1 at the face's points: f2 on
-    // Gamma_2, 0 on an unlisted boundary, f3 - xi~ on Gamma_3 with xi~ =
-    // 3 xi_h - 2 mean(xi_h) (the face's linear function whose moments
-    // against the two hat functions are |E|/2 xi_i, the nodal quadrature's)
-    std::vector<Vector<double>> g_values(n_f, Vector<double>(dim));
-    std::vector<Tensor<1, dim>> xi_h(n_f), xi_tilde(n_f), u_at(n_f);
-    const auto                  traction = [&](const BoundaryPart           part,
-                              std::vector<Tensor<1, dim>> &g) {
-      g.assign(n_f, Tensor<1, dim>());
-      if (part == BoundaryPart::free)
-        return;
-      data.boundary_traction(part == BoundaryPart::traction,
-                             sigma_face.get_quadrature_points(),
-                             sigma_face.get_normal_vectors(),
-                             g_values);
-      for (unsigned int q = 0; q < n_f; ++q)
+    // xi~ on Gamma_3: the continuous piecewise-linear traction whose
+    // moments against the hat functions are the nodal contact forces,
+    // int_Gamma3 phi_i xi~ = m_i xi_i: M_C xi~ = M_L xi with the consistent
+    // and the lumped mass of Gamma_3 (m_i = sum |E|/2, doc/theory.md 12.5)
+    std::map<unsigned int, unsigned int> gamma3_index;
+    for (const auto &cell : state.dof_handler.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() &&
+            boundary.part(cell->face(f)->boundary_id()) ==
+              BoundaryPart::contact)
+          for (const unsigned int v : cell->face(f)->vertex_indices())
+            gamma3_index.emplace(cell->face(f)->vertex_index(v),
+                                 gamma3_index.size());
+    const unsigned int          n_gamma3 = gamma3_index.size();
+    LAPACKFullMatrix<double>    consistent(n_gamma3, n_gamma3);
+    std::vector<Vector<double>> forces(dim, Vector<double>(n_gamma3));
+    for (const auto &cell : state.dof_handler.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (const auto face = cell->face(f);
+            face->at_boundary() &&
+            boundary.part(face->boundary_id()) == BoundaryPart::contact)
+          {
+            const double length = face->measure();
+            for (unsigned int v = 0; v < 2; ++v)
+              {
+                const unsigned int i = gamma3_index[face->vertex_index(v)];
+                for (unsigned int w = 0; w < 2; ++w)
+                  consistent(i, gamma3_index[face->vertex_index(w)]) +=
+                    length / (v == w ? 3. : 6.);
+                for (unsigned int d = 0; d < dim; ++d)
+                  forces[d][i] += length / 2 * xi(face->vertex_dof_index(v, d));
+              }
+          }
+    std::vector<Tensor<1, dim>> xi_nodal(n_gamma3);
+    if (n_gamma3 > 0)
+      {
+        consistent.compute_cholesky_factorization();
         for (unsigned int d = 0; d < dim; ++d)
-          g[q][d] = g_values[q](d);
-      if (part != BoundaryPart::contact)
-        return;
-      u_face[displacement].get_function_values(xi, xi_h);
-      Tensor<1, dim> mean;
-      double         length = 0;
-      for (unsigned int q = 0; q < n_f; ++q)
-        {
-          mean += xi_h[q] * sigma_face.JxW(q);
-          length += sigma_face.JxW(q);
-        }
-      mean /= length;
-      for (unsigned int q = 0; q < n_f; ++q)
-        {
-          xi_tilde[q] = 3 * xi_h[q] - 2 * mean;
+          {
+            consistent.solve(forces[d]);
+            for (unsigned int i = 0; i < n_gamma3; ++i)
+              xi_nodal[i][d] = forces[d][i];
+          }
+      }
+
+    // the data traction g of a face off Gamma_1 at the face's points: f2 on
+    // Gamma_2, 0 on an unlisted boundary, f3 - xi~ on Gamma_3 (psi_face on
+    // the cell's face for xi~)
+    std::vector<Vector<double>> g_values(n_f, Vector<double>(dim));
+    std::vector<Tensor<1, dim>> xi_tilde(n_f), u_at(n_f);
+    const auto                  traction =
+      [&](const typename DoFHandler<dim>::active_cell_iterator &cell,
+          const BoundaryPart                                    part,
+          std::vector<Tensor<1, dim>>                          &g) {
+        g.assign(n_f, Tensor<1, dim>());
+        if (part == BoundaryPart::free)
+          return;
+        data.boundary_traction(part == BoundaryPart::traction,
+                               sigma_face.get_quadrature_points(),
+                               sigma_face.get_normal_vectors(),
+                               g_values);
+        for (unsigned int q = 0; q < n_f; ++q)
+          for (unsigned int d = 0; d < dim; ++d)
+            g[q][d] = g_values[q](d);
+        if (part != BoundaryPart::contact)
+          return;
+        xi_tilde.assign(n_f, Tensor<1, dim>());
+        for (const unsigned int v : cell->vertex_indices())
+          if (const auto i = gamma3_index.find(cell->vertex_index(v));
+              i != gamma3_index.end())
+            for (unsigned int q = 0; q < n_f; ++q)
+              xi_tilde[q] += psi_face.shape_value(v, q) * xi_nodal[i->second];
+        for (unsigned int q = 0; q < n_f; ++q)
           g[q] -= xi_tilde[q];
-        }
-    };
+      };
     // the face's linear coordinate (x - x_E).t / |E|
     const auto face_coordinate = [](const auto &face, const Point<dim> &x) {
       const Tensor<1, dim> t = face->vertex(1) - face->vertex(0);
@@ -407,7 +447,7 @@ namespace hemicontact
                   {
                     psi_face.reinit(plain, f);
                     u_face.reinit(cell, f);
-                    traction(boundary.part(face->boundary_id()), g);
+                    traction(cell, boundary.part(face->boundary_id()), g);
                   }
                 else
                   g.assign(n_f, Tensor<1, dim>());
@@ -557,7 +597,7 @@ namespace hemicontact
             sigma_face.reinit(plain, f);
             psi_face.reinit(plain, f);
             u_face.reinit(cell, f);
-            traction(part, g);
+            traction(cell, part, g);
             double mismatch = 0;
             for (unsigned int q = 0; q < n_f; ++q)
               {

@@ -18,10 +18,10 @@ namespace hemicontact
    * FE_RaviartThomas(1) (no symmetry constraint: the skew part is
    * minimised with the rest and bounded apart), div sigma^eq = -f0 up to its
    * Q1 projection on each cell, sigma^eq nu = f2 on Gamma_2 and f3 - xi~ on
-   * Gamma_3 up to their P1 projections on each face, xi~ the face-wise
-   * linear traction whose moments against the hat functions are the nodal
-   * contact forces m_i xi_i of the solve. The terms per cell, in the
-   * fields of ErrorEstimate:
+   * Gamma_3 up to their P1 projections on each face, xi~ the continuous
+   * piecewise-linear traction on Gamma_3 whose moments against the hat
+   * functions are the nodal contact forces m_i xi_i of the solve. The terms per
+   * cell, in the fields of ErrorEstimate:
    *
    * - @p jumps: |A^{-1/2}(sym sigma^eq - sigma_h)|^2_K +
    *   |skew sigma^eq|^2_K / (2 mu),
