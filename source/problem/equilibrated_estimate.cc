@@ -30,6 +30,13 @@ namespace hemicontact
     const std::string entry = "output: 'error estimate = equilibrated'";
 
     /**
+     * The Korn constants assumed (doc/theory.md 12.5, (A2)): |grad v|^2 <=
+     * korn_squared |eps(v)|^2 and |skew grad v|^2 <= (korn_squared - 1)
+     * |eps(v)|^2, the values for a v that vanishes on the whole boundary.
+     */
+    constexpr double korn_squared = 2;
+
+    /**
      * One patch problem: minimise (1/2) x.M x - b.x subject to G x = g, by
      * the Schur complement of the block-diagonal M (Cholesky) and the
      * pseudo-inverse of G M^{-1} G^T (SVD; the constraints of a patch are
@@ -578,7 +585,8 @@ namespace hemicontact
           oscillation += (r[q] - r_mean).norm_square() * sigma_values.JxW(q);
         const double h = cell->diameter();
         e.jumps[i]     = stress + skew;
-        e.interior[i]  = (std::pow(h / numbers::PI, 2) * oscillation +
+        e.interior[i]  = korn_squared *
+                        (std::pow(h / numbers::PI, 2) * oscillation +
                          std::pow(domain_diameter / numbers::PI, 2) *
                            r_mean.norm_square() * volume) /
                         (2 * mu);
@@ -608,7 +616,8 @@ namespace hemicontact
                                         sigma_face.normal_vector(q));
                 mismatch += (g[q] - sn).norm_square() * sigma_face.JxW(q);
               }
-            e.neumann[i] += face->diameter() * mismatch / (2 * mu);
+            e.neumann[i] +=
+              korn_squared * face->diameter() * mismatch / (2 * mu);
             if (part != BoundaryPart::contact)
               continue;
             // xi~ against the element xi^ of the laws' subdifferential at
@@ -660,14 +669,14 @@ namespace hemicontact
       }
 
     // doc/theory.md 12.5: (1 - theta) |||e||| <= eta_stress + eta_skew +
-    // eta_osc + eta_contact
+    // eta_osc + eta_faces + eta_contact
     double oscillation_sum = 0, faces_sum = 0;
     for (unsigned int i = 0; i < n_cells; ++i)
       faces_sum += e.neumann[i];
     for (unsigned int i = 0; i < n_cells; ++i)
       oscillation_sum += e.interior[i];
-    const double mean_part =
-      domain_diameter / numbers::PI * std::sqrt(mean_sum / (2 * mu));
+    const double mean_part = domain_diameter / numbers::PI *
+                             std::sqrt(korn_squared * mean_sum / (2 * mu));
     const double cell_part =
       std::sqrt(std::max(0., oscillation_sum - mean_part * mean_part));
     const double eta = std::sqrt(stress_sum) + std::sqrt(skew_sum) + cell_part +

@@ -25,9 +25,10 @@ namespace hemicontact
    *
    * - @p jumps: |A^{-1/2}(sym sigma^eq - sigma_h)|^2_K +
    *   |skew sigma^eq|^2_K / (2 mu),
-   * - @p interior: (h_K/pi)^2 |r - r_K|^2_K / (2 mu), r = f0 + div sigma^eq,
-   * - @p neumann: h_E |g - sigma^eq nu|^2_E / (2 mu) on the faces off
-   *   Gamma_1,
+   * - @p interior: C_K^2 ((h_K/pi)^2 |r - r_K|^2_K + (diam/pi)^2
+   *   |r_K|^2_K) / (2 mu), r = f0 + div sigma^eq, r_K its mean on K,
+   * - @p neumann: C_K^2 h_E |g - sigma^eq nu|^2_E / (2 mu) on the faces off
+   *   Gamma_1 (C_K^2 = 2 assumed),
    * - @p contact: |xi~ - xi^|^2_E / lambda_tr on Gamma_3, xi^ the element of
    *   the laws' subdifferential at u_h nearest to xi~,
    *
