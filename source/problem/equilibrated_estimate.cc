@@ -11,6 +11,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/lapack_templates.h>
 
 #include <hemicontact/base/exceptions.h>
 #include <hemicontact/problem/equilibrated_estimate.h>
@@ -37,75 +38,120 @@ namespace hemicontact
     constexpr double korn_squared = 2;
 
     /**
-     * One patch problem: minimise (1/2) x.M x - b.x subject to G x = g, by
-     * the Schur complement of the block-diagonal M (Cholesky) and the
-     * pseudo-inverse of G M^{-1} G^T (SVD; the constraints of a patch are
-     * linearly dependent). Returns the largest constraint violation relative
-     * to the largest right-hand side.
+     * One patch problem: minimise (1/2) x.M x - b.x subject to G x = g, M
+     * block diagonal with the square @p blocks (one per cell of the patch),
+     * by the Schur complement G M^{-1} G^T, whose pseudo-inverse is taken
+     * from its eigenpairs (the constraints of a patch are linearly
+     * dependent). Returns
+     * the largest constraint violation relative to the largest right-hand
+     * side.
      */
     double
-    solve_patch(const FullMatrix<double> &M,
-                const Vector<double>     &b,
-                const FullMatrix<double> &G,
-                const Vector<double>     &g,
-                Vector<double>           &x)
+    solve_patch(std::vector<FullMatrix<double>> &blocks,
+                const Vector<double>            &b,
+                const FullMatrix<double>        &G,
+                const Vector<double>            &g,
+                Vector<double>                  &x)
     {
-      const unsigned int       n = M.m(), n_c = G.m();
-      LAPACKFullMatrix<double> m_factor(n, n);
-      m_factor = M;
-      m_factor.compute_cholesky_factorization();
-      // Y = M^{-1} G^T, z = M^{-1} b
-      LAPACKFullMatrix<double> y(n, n_c);
-      for (unsigned int i = 0; i < n; ++i)
-        for (unsigned int c = 0; c < n_c; ++c)
-          y(i, c) = G(c, i);
-      m_factor.solve(y);
-      Vector<double> z(b);
-      m_factor.solve(z);
-      // S = G Y, s = G z - g
-      LAPACKFullMatrix<double> s(n_c, n_c);
-      Vector<double>           rhs(n_c);
+      const unsigned int n_b = blocks[0].m(), n = b.size(), n_c = G.m();
+      // the blocks each row touches
+      std::vector<std::vector<unsigned int>> touched(n_c);
+      for (unsigned int c = 0; c < n_c; ++c)
+        for (unsigned int k = 0; k < blocks.size(); ++k)
+          for (unsigned int i = k * n_b; i < (k + 1) * n_b; ++i)
+            if (G(c, i) != 0)
+              {
+                touched[c].push_back(k);
+                break;
+              }
+      // Y = M^{-1} G^T, z = M^{-1} b, block by block
+      FullMatrix<double> y(n, n_c);
+      Vector<double>     z(n);
+      for (unsigned int k = 0; k < blocks.size(); ++k)
+        {
+          FullMatrix<double> &inverse = blocks[k];
+          inverse.gauss_jordan();
+          const unsigned int off = k * n_b;
+          for (unsigned int i = 0; i < n_b; ++i)
+            for (unsigned int j = 0; j < n_b; ++j)
+              z[off + i] += inverse(i, j) * b[off + j];
+        }
+      for (unsigned int c = 0; c < n_c; ++c)
+        for (const unsigned int k : touched[c])
+          {
+            const unsigned int off = k * n_b;
+            for (unsigned int i = 0; i < n_b; ++i)
+              {
+                double sum = 0;
+                for (unsigned int j = 0; j < n_b; ++j)
+                  sum += blocks[k](i, j) * G(c, off + j);
+                y(off + i, c) = sum;
+              }
+          }
+      // S = G Y (over the blocks two rows share), s = G z - g
+      FullMatrix<double> s(n_c, n_c);
+      Vector<double>     rhs(n_c);
       for (unsigned int c = 0; c < n_c; ++c)
         {
           for (unsigned int d = 0; d < n_c; ++d)
             {
               double sum = 0;
-              for (unsigned int i = 0; i < n; ++i)
-                sum += G(c, i) * y(i, d);
+              for (const unsigned int k : touched[c])
+                if (std::find(touched[d].begin(), touched[d].end(), k) !=
+                    touched[d].end())
+                  for (unsigned int i = k * n_b; i < (k + 1) * n_b; ++i)
+                    sum += G(c, i) * y(i, d);
               s(c, d) = sum;
             }
           double sum = 0;
-          for (unsigned int i = 0; i < n; ++i)
-            sum += G(c, i) * z[i];
+          for (const unsigned int k : touched[c])
+            for (unsigned int i = k * n_b; i < (k + 1) * n_b; ++i)
+              sum += G(c, i) * z[i];
           rhs[c] = sum - g[c];
         }
-      s.compute_svd();
-      const LAPACKFullMatrix<double> &left  = s.get_svd_u();
-      const LAPACKFullMatrix<double> &right = s.get_svd_vt();
-      const double                    cut   = 1e-11 * s.singular_value(0);
-      Vector<double>                  lambda(n_c), t(n_c);
+      // S is symmetric positive semidefinite: its pseudo-inverse from the
+      // eigenpairs (LAPACK syev; the columns of a the eigenvectors)
+      std::vector<double> a(n_c * n_c), eigenvalues(n_c), work(4 * n_c);
+      for (unsigned int c = 0; c < n_c; ++c)
+        for (unsigned int d = 0; d < n_c; ++d)
+          a[d * n_c + c] = s(c, d);
+      const types::blas_int size = n_c, work_size = work.size();
+      types::blas_int       info = 0;
+      syev("V",
+           "U",
+           &size,
+           a.data(),
+           &size,
+           eigenvalues.data(),
+           work.data(),
+           &work_size,
+           &info);
+      AssertThrow(info == 0, ExcMessage("LAPACK syev failed"));
+      const double cut =
+        1e-11 * *std::max_element(eigenvalues.begin(), eigenvalues.end());
+      Vector<double> lambda(n_c);
       for (unsigned int k = 0; k < n_c; ++k)
-        if (s.singular_value(k) > cut)
+        if (eigenvalues[k] > cut)
           {
             double dot = 0;
             for (unsigned int c = 0; c < n_c; ++c)
-              dot += left(c, k) * rhs[c];
-            t[k] = dot / s.singular_value(k);
+              dot += a[k * n_c + c] * rhs[c];
+            for (unsigned int c = 0; c < n_c; ++c)
+              lambda[c] += a[k * n_c + c] * dot / eigenvalues[k];
           }
-      for (unsigned int c = 0; c < n_c; ++c)
-        for (unsigned int k = 0; k < n_c; ++k)
-          lambda[c] += right(k, c) * t[k];
       // x = z - Y lambda
       x = z;
-      for (unsigned int i = 0; i < n; ++i)
-        for (unsigned int c = 0; c < n_c; ++c)
-          x[i] -= y(i, c) * lambda[c];
+      for (unsigned int c = 0; c < n_c; ++c)
+        for (const unsigned int k : touched[c])
+          for (unsigned int i = k * n_b; i < (k + 1) * n_b; ++i)
+            x[i] -= y(i, c) * lambda[c];
       double violation = 0, scale = 1e-300;
       for (unsigned int c = 0; c < n_c; ++c)
         {
           double sum = 0;
-          for (unsigned int i = 0; i < n; ++i)
-            sum += G(c, i) * x[i];
+          for (const unsigned int k : touched[c])
+            for (unsigned int i = k * n_b; i < (k + 1) * n_b; ++i)
+              sum += G(c, i) * x[i];
           violation = std::max(violation, std::abs(sum - g[c]));
           scale     = std::max(scale, std::abs(g[c]));
         }
@@ -359,9 +405,9 @@ namespace hemicontact
         const auto &cells = patches[a];
         if (cells.empty())
           continue;
-        const unsigned int m = cells.size(), n = m * n_rt;
-        FullMatrix<double> M(n, n);
-        Vector<double>     b(n);
+        const unsigned int              m = cells.size(), n = m * n_rt;
+        std::vector<FullMatrix<double>> M(m, FullMatrix<double>(n_rt, n_rt));
+        Vector<double>                  b(n);
         // the constraints, one row each
         std::vector<Vector<double>> g_rows;
         std::vector<double>         g_rhs;
@@ -412,8 +458,7 @@ namespace hemicontact
                   {
                     b[off + j] += psi * scalar_product(tau[j], eps) * dx;
                     for (unsigned int k = 0; k < n_rt; ++k)
-                      M(off + j, off + k) +=
-                        scalar_product(c_tau[j], tau[k]) * dx;
+                      M[c](j, k) += scalar_product(c_tau[j], tau[k]) * dx;
                   }
                 for (unsigned int s = 0; s < n_psi; ++s)
                   {
