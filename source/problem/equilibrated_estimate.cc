@@ -235,8 +235,9 @@ namespace hemicontact
     require(check.bound > 0 && std::isfinite(check.bound) &&
               (!check.with_friction || alpha_nu > 0),
             what + "its contact term needs the trace eigenvalue of the "
-                   "convexity check, which is computed for nonmonotone laws "
-                   "(alpha_nu > 0) alone. Use 'output/error estimate = "
+                   "convexity check, which the check gives for a normal law "
+                   "with a finite alpha_nu > 0 alone (not for a monotone law "
+                   "nor for a downward jump). Use 'output/error estimate = "
                    "true'.");
     const double theta =
       check.with_friction ? 1. / check.bound : alpha_nu / check.bound;
