@@ -8,6 +8,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/coupling/field_support.h>
 #include <hemicontact/electric/electric_field.h>
 #include <hemicontact/electric/piezoelectric_tensor.h>
 #include <hemicontact/expressions/constants.h>
@@ -21,15 +22,6 @@ namespace hemicontact
 {
   namespace
   {
-    /** The first error of any rank, thrown on every rank. */
-    void
-    throw_first_error(const std::string &error, MPI_Comm comm)
-    {
-      for (const std::string &message : Utilities::MPI::all_gather(comm, error))
-        if (!message.empty())
-          throw InputError(message);
-    }
-
     /** Into @p error (if still empty): @p entry is @p value at @p p and
      *  time @p t, not a finite number (or negative where @p non_negative). */
     template <int dim>
@@ -172,17 +164,6 @@ namespace hemicontact
   }
 
   template <int dim>
-  TrilinosWrappers::MPI::Vector
-  ElectricField<dim>::ghosted(const TrilinosWrappers::MPI::Vector &v,
-                              const IndexSet                      &owned,
-                              const IndexSet &relevant) const
-  {
-    TrilinosWrappers::MPI::Vector g(owned, relevant, mpi_communicator);
-    g = v;
-    return g;
-  }
-
-  template <int dim>
   void
   ElectricField<dim>::make_constraints(const double t)
   {
@@ -282,9 +263,11 @@ namespace hemicontact
     volume_charge->set_time(t);
     surface_charge->set_time(t);
     foundation_potential->set_time(t);
-    const TrilinosWrappers::MPI::Vector u =
-      ghosted(u_owned, view.locally_owned_dofs, view.locally_relevant_dofs);
-    const Quadrature<dim>     quadrature = discretization->cell_quadrature(2);
+    const TrilinosWrappers::MPI::Vector u = ghosted(u_owned,
+                                                    view.locally_owned_dofs,
+                                                    view.locally_relevant_dofs,
+                                                    mpi_communicator);
+    const Quadrature<dim>     quadrature  = discretization->cell_quadrature(2);
     const Quadrature<dim - 1> face_quadrature =
       discretization->face_quadrature(2);
     const FiniteElement<dim>            &fe = space->dof_handler->get_fe();
@@ -419,7 +402,7 @@ namespace hemicontact
     // the electrodes' charge: the residual of their rows (doc/theory.md
     // 14.3), added to the data functional
     const TrilinosWrappers::MPI::Vector phi =
-      ghosted(value, *space->owned, *space->relevant);
+      ghosted(value, *space->owned, *space->relevant, mpi_communicator);
     TrilinosWrappers::MPI::Vector residual(*space->owned, mpi_communicator);
     std::vector<Tensor<1, dim>>   grad_phi(quadrature.size());
     for (const auto &cell : space->dof_handler->active_cell_iterators())
@@ -495,7 +478,7 @@ namespace hemicontact
                                           TrilinosWrappers::MPI::Vector &load)
   {
     const TrilinosWrappers::MPI::Vector phi =
-      ghosted(value, *space->owned, *space->relevant);
+      ghosted(value, *space->owned, *space->relevant, mpi_communicator);
     const Quadrature<dim> quadrature = discretization->cell_quadrature(2);
     FEValues<dim>         fe_u(*discretization->mapping,
                        *discretization->fe,
@@ -557,9 +540,11 @@ namespace hemicontact
     const TrilinosWrappers::MPI::Vector &u_owned) const
   {
     const TrilinosWrappers::MPI::Vector phi =
-      ghosted(phi_owned, *space->owned, *space->relevant);
-    const TrilinosWrappers::MPI::Vector u =
-      ghosted(u_owned, view.locally_owned_dofs, view.locally_relevant_dofs);
+      ghosted(phi_owned, *space->owned, *space->relevant, mpi_communicator);
+    const TrilinosWrappers::MPI::Vector u  = ghosted(u_owned,
+                                                    view.locally_owned_dofs,
+                                                    view.locally_relevant_dofs,
+                                                    mpi_communicator);
     const Quadrature<dim>       quadrature = discretization->cell_quadrature(2);
     FEValues<dim>               fe_phi(*discretization->mapping,
                          space->dof_handler->get_fe(),
@@ -657,7 +642,7 @@ namespace hemicontact
     const TrilinosWrappers::MPI::Vector &value) const
   {
     const TrilinosWrappers::MPI::Vector phi =
-      ghosted(value, *space->owned, *space->relevant);
+      ghosted(value, *space->owned, *space->relevant, mpi_communicator);
     const unsigned int n_cells =
       space->dof_handler->get_triangulation().n_active_cells();
     std::vector<std::pair<std::string, Vector<float>>> fields;
@@ -703,10 +688,11 @@ namespace hemicontact
     const TrilinosWrappers::MPI::Vector &value) const
   {
     const TrilinosWrappers::MPI::Vector phi =
-      ghosted(value, *space->owned, *space->relevant);
+      ghosted(value, *space->owned, *space->relevant, mpi_communicator);
     const TrilinosWrappers::MPI::Vector u = ghosted(view.displacement,
                                                     view.locally_owned_dofs,
-                                                    view.locally_relevant_dofs);
+                                                    view.locally_relevant_dofs,
+                                                    mpi_communicator);
     foundation_potential->set_time(view.time);
     std::vector<std::vector<double>> rows(view.contact_nodes.size(),
                                           std::vector<double>(3, 0.));

@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <hemicontact/base/exceptions.h>
+#include <hemicontact/coupling/field_support.h>
 
 #include <cmath>
 #include <optional>
@@ -22,15 +23,6 @@ namespace hemicontact
   namespace heat_data_check
   {
     using namespace dealii;
-
-    /** The first error of any rank, thrown on every rank. */
-    inline void
-    throw_first_error(const std::string &error, MPI_Comm comm)
-    {
-      for (const std::string &message : Utilities::MPI::all_gather(comm, error))
-        if (!message.empty())
-          throw InputError(message);
-    }
 
     /** "(x, y[, z])" of @p p. */
     template <int dim>

@@ -28,19 +28,6 @@ namespace hemicontact
 
   namespace
   {
-    /** A ghosted copy of @p v on the index sets of @p space. */
-    template <int dim>
-    TrilinosWrappers::MPI::Vector
-    ghosted(const TrilinosWrappers::MPI::Vector &v,
-            const IndexSet                      &owned,
-            const IndexSet                      &relevant,
-            MPI_Comm                             comm)
-    {
-      TrilinosWrappers::MPI::Vector g(owned, relevant, comm);
-      g = v;
-      return g;
-    }
-
     /** "'temperature/ENTRY' = 'TEXT'" refused for reading t. */
     template <int dim>
     void
@@ -384,7 +371,7 @@ namespace hemicontact
                        static_class ? t : 0.);
     throw_first_error(error, mpi_communicator);
     const TrilinosWrappers::MPI::Vector theta_g =
-      ghosted<dim>(theta, *space->owned, *space->relevant, mpi_communicator);
+      ghosted(theta, *space->owned, *space->relevant, mpi_communicator);
     const Quadrature<dim> quadrature = discretization->cell_quadrature(2);
     FEValues<dim>         fe_u(*discretization->mapping,
                        *discretization->fe,
@@ -440,23 +427,21 @@ namespace hemicontact
                                const MechanicalView<dim>           &state,
                                const TrilinosWrappers::MPI::Vector &theta) const
   {
-    const TrilinosWrappers::MPI::Vector w =
-      ghosted<dim>(state.velocity,
-                   state.locally_owned_dofs,
-                   state.locally_relevant_dofs,
-                   mpi_communicator);
-    const TrilinosWrappers::MPI::Vector u =
-      ghosted<dim>(state.displacement,
-                   state.locally_owned_dofs,
-                   state.locally_relevant_dofs,
-                   mpi_communicator);
+    const TrilinosWrappers::MPI::Vector w = ghosted(state.velocity,
+                                                    state.locally_owned_dofs,
+                                                    state.locally_relevant_dofs,
+                                                    mpi_communicator);
+    const TrilinosWrappers::MPI::Vector u = ghosted(state.displacement,
+                                                    state.locally_owned_dofs,
+                                                    state.locally_relevant_dofs,
+                                                    mpi_communicator);
     const TrilinosWrappers::MPI::Vector traction =
-      ghosted<dim>(state.contact_traction,
-                   state.locally_owned_dofs,
-                   state.locally_relevant_dofs,
-                   mpi_communicator);
+      ghosted(state.contact_traction,
+              state.locally_owned_dofs,
+              state.locally_relevant_dofs,
+              mpi_communicator);
     const TrilinosWrappers::MPI::Vector theta_g =
-      ghosted<dim>(theta, *space->owned, *space->relevant, mpi_communicator);
+      ghosted(theta, *space->owned, *space->relevant, mpi_communicator);
     foundation_temperature->set_time(t);
     std::vector<NodeHeat> nodes(state.contact_nodes.size());
     for (unsigned int i = 0; i < nodes.size(); ++i)
@@ -493,7 +478,7 @@ namespace hemicontact
   HeatModel<dim>::cell_output(const TrilinosWrappers::MPI::Vector &theta) const
   {
     const TrilinosWrappers::MPI::Vector theta_g =
-      ghosted<dim>(theta, *space->owned, *space->relevant, mpi_communicator);
+      ghosted(theta, *space->owned, *space->relevant, mpi_communicator);
     const unsigned int n_cells =
       space->dof_handler->get_triangulation().n_active_cells();
     std::vector<std::pair<std::string, Vector<float>>> fields;
@@ -565,9 +550,9 @@ namespace hemicontact
     const IndexSet                     &owned    = state.locally_owned_dofs;
     const IndexSet                     &relevant = state.locally_relevant_dofs;
     const TrilinosWrappers::MPI::Vector theta_old =
-      ghosted<dim>(theta, *space->owned, *space->relevant, mpi_communicator);
+      ghosted(theta, *space->owned, *space->relevant, mpi_communicator);
     const TrilinosWrappers::MPI::Vector w =
-      ghosted<dim>(state.velocity, owned, relevant, mpi_communicator);
+      ghosted(state.velocity, owned, relevant, mpi_communicator);
 
     // the operator c_theta/k M + K and its AMG: once per mesh and step
     // length (the contact's k_e term is added to a copy each step)

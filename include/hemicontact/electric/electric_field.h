@@ -150,12 +150,6 @@ namespace hemicontact
                            const TrilinosWrappers::MPI::Vector &phi,
                            const TrilinosWrappers::MPI::Vector &u) const;
 
-    /** @p v with ghost entries on @p owned / @p relevant. */
-    TrilinosWrappers::MPI::Vector
-    ghosted(const TrilinosWrappers::MPI::Vector &v,
-            const IndexSet                      &owned,
-            const IndexSet                      &relevant) const;
-
     PiezoelectricParameters        parameters;
     bool                           static_class, left_point;
     MPI_Comm                       mpi_communicator;
